@@ -1,0 +1,1 @@
+"""Data sets the thesis uses: triangulations, samplers and small example filtrations."""

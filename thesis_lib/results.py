@@ -1,0 +1,83 @@
+"""Results of experiments: flat ``name -> number`` tables and figures written beside the run.
+
+Every experiment and book chapter records what it measures through :class:`Recorder`; the book and
+the reproduction report read the stored numbers back with :func:`load`.  Nothing is typed by hand.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import numbers
+from pathlib import Path
+
+from .paths import repo_root
+
+__all__ = ["Recorder", "load", "results_dir", "RESULTS_FILE"]
+
+RESULTS_FILE = "results.json"
+
+
+def results_dir(name: str) -> Path:
+    """Folder of the stored default run of experiment ``name`` (committed with the repository)."""
+    return repo_root() / "experiments" / "results" / name
+
+
+def _as_number(key: str, value) -> float | int:
+    if isinstance(value, bool):
+        return int(value)
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        return float(value)
+    raise ValueError(f"result {key!r} must be a number, got {type(value).__name__}: {value!r}")
+
+
+class Recorder:
+    """Write an experiment's numbers (``results.json``) and figures into its output folder.
+
+    Parameters
+    ----------
+    name : experiment name (``two-circles-landmarks``, ...).
+    output_dir : folder to write into; ``""`` or ``None`` means the stored default run
+        ``experiments/results/<name>/``.  Starting a recorder clears the previous ``results.json``.
+    """
+
+    def __init__(self, name: str, output_dir: str | Path | None = ""):
+        if not name or "/" in name:
+            raise ValueError(f"invalid experiment name {name!r}")
+        self.name = name
+        self.path = Path(output_dir) if output_dir else results_dir(name)
+        self.path.mkdir(parents=True, exist_ok=True)
+        self.results: dict[str, float | int] = {}
+        self._write()
+
+    def record(self, **values) -> dict[str, float | int]:
+        """Add flat ``name=number`` results and rewrite ``results.json``; returns what was recorded."""
+        for key, value in values.items():
+            if not key.replace("_", "").isalnum():
+                raise ValueError(f"result names are identifiers, got {key!r}")
+            self.results[key] = _as_number(key, value)
+        self._write()
+        return {k: self.results[k] for k in values}
+
+    def savefig(self, fig, stem: str, dpi: int = 110) -> Path:
+        """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs)."""
+        out = self.path / f"{stem}.png"
+        fig.savefig(out, dpi=dpi, bbox_inches="tight", metadata={"Software": None})
+        return out
+
+    def _write(self) -> None:
+        text = json.dumps(self.results, indent=1, sort_keys=True, allow_nan=True)
+        (self.path / RESULTS_FILE).write_text(text + "\n")
+
+
+def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | int]:
+    """Read the results of experiment ``name`` (default: its stored default run)."""
+    path = (Path(output_dir) if output_dir else results_dir(name)) / RESULTS_FILE
+    if not path.exists():
+        raise FileNotFoundError(
+            f"no stored results for {name!r} at {path}; run `thesis-lab run {name}` or `make experiments`"
+        )
+    data = json.loads(path.read_text())
+    return {k: (v if not isinstance(v, float) or not math.isnan(v) else math.nan) for k, v in data.items()}

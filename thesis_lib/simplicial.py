@@ -1,0 +1,202 @@
+"""Simplices as integer arrays: validation, closure, facet lookup and signed boundary matrices.
+
+A set of ``k``-simplices is stored as an ``(m, k + 1)`` array of vertex indices, each row in
+ascending order (the convention of DESIGN.md).  Everything in :mod:`thesis_lib` that needs faces,
+boundaries or orientations goes through this module.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+import numpy as np
+import scipy.sparse as sp
+
+__all__ = [
+    "as_simplex_array",
+    "group_by_dimension",
+    "closure",
+    "facets",
+    "row_keys",
+    "find_rows",
+    "boundary_matrix",
+    "check_coefficients",
+]
+
+
+def as_simplex_array(rows: np.ndarray | Sequence[Sequence[int]], dim: int | None = None) -> np.ndarray:
+    """Return ``rows`` as an ``(m, dim + 1)`` int64 array with every row sorted ascending.
+
+    Thesis: Definition 2.1 (a p-simplex has p + 1 distinct vertices).
+
+    Raises
+    ------
+    ValueError
+        If the rows are ragged, negative, not integral or have a repeated vertex.
+    """
+    arr = np.asarray(rows)
+    if arr.ndim == 1 and arr.size == 0:
+        width = 0 if dim is None else dim + 1
+        return np.empty((0, width), dtype=np.int64)
+    if arr.ndim != 2:
+        raise ValueError(f"simplices must form a 2-D array of vertex indices, got shape {arr.shape}")
+    if dim is not None and arr.shape[1] != dim + 1:
+        raise ValueError(f"{dim}-simplices need {dim + 1} vertices each, got rows of length {arr.shape[1]}")
+    if arr.size and not np.issubdtype(arr.dtype, np.integer):
+        if not np.all(np.isfinite(arr)) or not np.all(arr == np.round(arr)):
+            raise ValueError("vertex indices must be integers")
+    arr = np.sort(arr.astype(np.int64, copy=False), axis=1)
+    if arr.size and arr.min() < 0:
+        raise ValueError("vertex indices must be non-negative")
+    if arr.shape[1] > 1 and arr.shape[0]:
+        repeated = np.any(arr[:, 1:] == arr[:, :-1], axis=1)
+        if repeated.any():
+            bad = tuple(int(v) for v in arr[np.argmax(repeated)])
+            raise ValueError(f"simplex {bad} has a repeated vertex")
+    return arr
+
+
+def group_by_dimension(simplices: Iterable[Sequence[int]]) -> list[np.ndarray]:
+    """Split an iterable of simplices of mixed dimension into one sorted-row array per dimension.
+
+    Thesis: Definition 2.4 (abstract simplicial complex as a collection of vertex sets).
+    Duplicates are kept; see :func:`closure` for the complex they generate.
+    """
+    by_dim: dict[int, list[tuple[int, ...]]] = {}
+    for s in simplices:
+        t = tuple(int(v) for v in s)
+        if not t:
+            raise ValueError("the empty simplex is not allowed")
+        by_dim.setdefault(len(t) - 1, []).append(t)
+    if not by_dim:
+        return []
+    top = max(by_dim)
+    return [as_simplex_array(by_dim.get(d, np.empty((0, d + 1), np.int64)), d) for d in range(top + 1)]
+
+
+def facets(arr: np.ndarray) -> np.ndarray:
+    """Facets of each ``k``-simplex: array ``(m, k + 1, k)``; facet ``i`` omits vertex ``i``.
+
+    Thesis: Definition 2.18 (the i-th term of the boundary omits x_i).
+    """
+    k1 = arr.shape[1]
+    idx = np.array([[j for j in range(k1) if j != i] for i in range(k1)], dtype=np.int64).reshape(k1, k1 - 1)
+    return arr[:, idx]
+
+
+def row_keys(arr: np.ndarray, base: int) -> np.ndarray | None:
+    """Encode sorted rows as int64 keys ``sum v_j base^(k-j)``; ``None`` if that could overflow."""
+    width = arr.shape[1]
+    if width == 0 or base ** width >= 2**62:
+        return None
+    keys = np.zeros(arr.shape[0], dtype=np.int64)
+    for j in range(width):
+        keys = keys * base + arr[:, j]
+    return keys
+
+
+def _void_view(arr: np.ndarray) -> np.ndarray:
+    arr = np.ascontiguousarray(arr, dtype=np.int64)
+    return arr.view(np.dtype((np.void, arr.dtype.itemsize * arr.shape[1]))).ravel()
+
+
+def find_rows(haystack: np.ndarray, needles: np.ndarray, *, missing: str = "raise") -> np.ndarray:
+    """Index in ``haystack`` of every row of ``needles`` (rows are sorted simplices).
+
+    Thesis: Definition 2.3 (every face of a simplex of K is in K).
+
+    Parameters
+    ----------
+    haystack : (m, k) int array, no duplicate rows.
+    needles : (n, k) int array.
+    missing : ``"raise"`` (ValueError naming the first missing row) or ``"mark"`` (index -1).
+    """
+    if needles.shape[0] == 0:
+        return np.empty(0, dtype=np.int64)
+    if haystack.shape[0] == 0:
+        if missing == "raise":
+            raise ValueError(f"face {tuple(int(v) for v in needles[0])} is missing from the complex")
+        return np.full(needles.shape[0], -1, dtype=np.int64)
+    base = int(max(haystack.max(), needles.max())) + 1
+    hk = row_keys(haystack, base)
+    if hk is not None:
+        nk = row_keys(needles, base)
+    else:
+        hk, nk = _void_view(haystack), _void_view(needles)
+    order = np.argsort(hk, kind="stable")
+    sorted_keys = hk[order]
+    pos = np.searchsorted(sorted_keys, nk)
+    pos_clipped = np.minimum(pos, len(sorted_keys) - 1)
+    found = sorted_keys[pos_clipped] == nk
+    out = np.where(found, order[pos_clipped], -1)
+    if missing == "raise" and not found.all():
+        bad = tuple(int(v) for v in needles[np.argmin(found)])
+        raise ValueError(f"face {bad} is missing from the complex")
+    return out
+
+
+def _unique_rows(arr: np.ndarray) -> np.ndarray:
+    if arr.shape[0] == 0:
+        return arr
+    return np.unique(arr, axis=0)
+
+
+def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.ndarray]:
+    """All faces of the given simplices: one lexicographically sorted, duplicate-free array per dimension.
+
+    Thesis: Definition 2.3 / 2.4 (a complex contains every face of its simplices).
+
+    ``simplices`` is either an iterable of vertex tuples of any dimensions or a list of per-dimension
+    arrays (as produced by :func:`group_by_dimension`).
+    """
+    if isinstance(simplices, list) and all(isinstance(a, np.ndarray) for a in simplices):
+        groups = [as_simplex_array(a, d) for d, a in enumerate(simplices)]
+    else:
+        groups = group_by_dimension(simplices)
+    if not groups:
+        raise ValueError("the complex is empty")
+    out: list[np.ndarray] = [None] * len(groups)  # type: ignore[list-item]
+    carry = np.empty((0, len(groups)), dtype=np.int64)
+    for d in range(len(groups) - 1, -1, -1):
+        rows = np.vstack([groups[d], carry]) if carry.shape[0] else groups[d]
+        out[d] = _unique_rows(rows)
+        if d > 0:
+            carry = facets(out[d]).reshape(-1, d)
+    return out
+
+
+def check_coefficients(coefficients: int) -> int:
+    """Validate a coefficient choice: ``0`` for Z or a prime p for Z/p (DESIGN.md conventions).
+
+    Thesis: §2.2.1 (homology with coefficients in Z and Z_p).
+    """
+    if isinstance(coefficients, bool) or not isinstance(coefficients, (int, np.integer)):
+        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {coefficients!r}")
+    c = int(coefficients)
+    if c == 0:
+        return 0
+    if c < 2 or any(c % q == 0 for q in range(2, int(c**0.5) + 1)):
+        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {c}")
+    return c
+
+
+def boundary_matrix(lower: np.ndarray, upper: np.ndarray, coefficients: int = 0) -> sp.csc_matrix:
+    """Signed boundary matrix of ``upper`` (k-simplices) in the basis ``lower`` ((k-1)-simplices).
+
+    Thesis: Definition 2.18, ∂[x_0, ..., x_p] = Σ_i (-1)^i [x_0, ..., x̂_i, ..., x_p].
+
+    Rows follow the order of ``lower``, columns that of ``upper``; entries are int64 (reduced mod p
+    when ``coefficients`` is a prime p).  Every facet must be present in ``lower``.
+    """
+    m, width = upper.shape
+    if width < 2:
+        return sp.csc_matrix((lower.shape[0], m), dtype=np.int64)
+    f = facets(upper)  # (m, k+1, k)
+    rows = find_rows(lower, f.reshape(-1, width - 1)).reshape(m, width)
+    signs = np.tile((-1) ** np.arange(width, dtype=np.int64), (m, 1))
+    if coefficients:
+        signs %= coefficients
+    cols = np.repeat(np.arange(m, dtype=np.int64), width)
+    mat = sp.csc_matrix((signs.ravel(), (rows.ravel(), cols)), shape=(lower.shape[0], m), dtype=np.int64)
+    mat.sort_indices()
+    return mat
