@@ -1,0 +1,196 @@
+"""Tests of thesis_lib.proteins: PDB parsing traps (SOURCES.md), radii and weights (thesis §2.2.2, §2.4.2)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from thesis_lib.paths import shared_dir
+from thesis_lib.proteins import Atoms, read_pdb, resolve_structure, vdw_radii, weighted_points
+
+PDB = shared_dir() / "data" / "pdb"
+pytestmark = pytest.mark.skipif(not (PDB / "1eca.pdb").is_file(), reason="shared PDB files not present")
+
+
+def _counts(atoms: Atoms) -> tuple[int, int]:
+    return int((~atoms.hetero).sum()), int(atoms.hetero.sum())
+
+
+# ----------------------------------------------------------------------------- counts of SOURCES.md
+def test_1eca_all_records_match_master_count():
+    atoms = read_pdb(PDB / "1eca.pdb", waters=True, altloc="all")
+    assert _counts(atoms) == (1049, 138)
+
+
+def test_1eca_first_altloc_drops_the_five_b_atoms():
+    atoms = read_pdb(PDB / "1eca.pdb", waters=True)
+    assert len(atoms) == 1187 - 5
+    no_water = read_pdb(PDB / "1eca.pdb")
+    assert _counts(no_water) == (1044, 44)  # HEM stays, 94 waters go
+    assert not np.any(no_water.res_names == "HOH")
+
+
+def test_1eca_elements_have_no_digits_and_come_from_names():
+    atoms = read_pdb(PDB / "1eca.pdb", waters=True, altloc="all")
+    assert all(e.isalpha() for e in atoms.elements)
+    els, counts = np.unique(atoms.elements, return_counts=True)
+    assert dict(zip(els.tolist(), counts.tolist())) == {"C": 709, "FE": 1, "N": 177, "O": 295, "S": 5}
+    assert atoms.elements[(atoms.res_names == "HEM") & (atoms.atom_names == "FE")].tolist() == ["FE"]
+    # The alpha carbons are carbon, not calcium.
+    assert set(atoms.elements[atoms.atom_names == "CA"]) == {"C"}
+
+
+def test_1eca_old_amide_names_renamed():
+    atoms = read_pdb(PDB / "1eca.pdb")
+    names = set(atoms.atom_names.tolist())
+    assert not names & {"AD1", "AD2", "AE1", "AE2"}
+    asn = atoms.res_names == "ASN"
+    gln = atoms.res_names == "GLN"
+    assert int(np.sum(asn & (atoms.atom_names == "OD1"))) == 5
+    assert int(np.sum(asn & (atoms.atom_names == "ND2"))) == 5
+    assert int(np.sum(gln & (atoms.atom_names == "OE1"))) == 4
+    assert int(np.sum(gln & (atoms.atom_names == "NE2"))) == 4
+    assert set(atoms.elements[asn & (atoms.atom_names == "OD1")]) == {"O"}
+    assert set(atoms.elements[asn & (atoms.atom_names == "ND2")]) == {"N"}
+    # Old HEM names with a blank inside ("N A") become the dictionary names.
+    hem = atoms.atom_names[atoms.res_names == "HEM"]
+    assert {"NA", "NB", "NC", "ND"} <= set(hem.tolist())
+
+
+def test_1eca_altloc_occupancy_and_coordinates():
+    first = read_pdb(PDB / "1eca.pdb")
+    # ATOM 1 N LEU 1 -15.159 11.595 27.068
+    np.testing.assert_allclose(first.coords[0], [-15.159, 11.595, 27.068])
+    # SER 106 OG altloc A at (-.276, 22.689, 10.437) is kept with altloc="first".
+    og = (first.res_ids == 106) & (first.atom_names == "OG")
+    np.testing.assert_allclose(first.coords[og][0], [-0.276, 22.689, 10.437])
+
+
+def test_1grm_five_models_of_272_heavy_atoms_with_d_amino_acids():
+    counts = [len(read_pdb(PDB / "1grm.pdb", model=m)) for m in range(1, 6)]
+    assert counts == [272] * 5
+    atoms = read_pdb(PDB / "1grm.pdb")
+    assert set(atoms.elements.tolist()) == {"C", "N", "O"}
+    res = set(atoms.res_names.tolist())
+    assert {"DLE", "DVA", "FVA", "ETA"} <= res
+    # hetero=False keeps the amino-acid HETATM residues (the whole peptide).
+    assert len(read_pdb(PDB / "1grm.pdb", hetero=False)) == 272
+    # Models differ in coordinates only.
+    m2 = read_pdb(PDB / "1grm.pdb", model=2)
+    assert np.array_equal(m2.atom_names, atoms.atom_names)
+    assert not np.allclose(m2.coords, atoms.coords)
+
+
+def test_hetero_false_drops_ligands():
+    het = read_pdb(PDB / "5mbn.pdb", waters=True)
+    assert _counts(het) == (1217, 164)
+    nohet = read_pdb(PDB / "5mbn.pdb", hetero=False)
+    assert _counts(nohet) == (1217, 0)
+    rn = read_pdb(PDB / "3rn3.pdb", waters=True, altloc="all")
+    assert _counts(rn) == (957, 112)
+    assert len(read_pdb(PDB / "3rn3.pdb", waters=True)) == 1069 - 6
+
+
+def test_name_resolution():
+    path = resolve_structure("1grm")
+    assert path.name.lower().endswith("1grm.pdb")
+    assert len(read_pdb("1grm")) == 272
+
+
+# ----------------------------------------------------------------------------- corrupt input
+def _write(tmp_path, text: str):
+    p = tmp_path / "bad.pdb"
+    p.write_text(text)
+    return p
+
+
+def test_truncated_file_raises(tmp_path):
+    text = (PDB / "1grm.pdb").read_text()
+    cut = text[: text.index("HETATM    5") + 40]
+    with pytest.raises(ValueError, match="truncated"):
+        read_pdb(_write(tmp_path, cut))
+
+
+def test_garbled_coordinates_raise(tmp_path):
+    lines = (PDB / "1eca.pdb").read_text().splitlines()
+    i = next(k for k, l in enumerate(lines) if l.startswith("ATOM"))
+    lines[i] = lines[i][:30] + "  12.x4#" + lines[i][38:]
+    with pytest.raises(ValueError, match="not numbers"):
+        read_pdb(_write(tmp_path, "\n".join(lines)))
+
+
+def test_no_atoms_binary_missing_and_bad_arguments(tmp_path):
+    with pytest.raises(ValueError, match="no ATOM/HETATM"):
+        read_pdb(_write(tmp_path, "HEADER    NOTHING HERE\nEND\n"))
+    p = tmp_path / "bin.pdb"
+    p.write_bytes(bytes(range(256)) * 4)
+    with pytest.raises(ValueError, match="not a text PDB"):
+        read_pdb(p)
+    with pytest.raises(ValueError, match="no PDB file"):
+        read_pdb(tmp_path / "missing.pdb")
+    with pytest.raises(ValueError, match="unknown structure"):
+        read_pdb("9zzz")
+    with pytest.raises(ValueError, match="model"):
+        read_pdb(PDB / "1grm.pdb", model=6)
+    with pytest.raises(ValueError, match="model"):
+        read_pdb(PDB / "1grm.pdb", model=0)
+    with pytest.raises(ValueError, match="altloc"):
+        read_pdb(PDB / "1grm.pdb", altloc="last")
+
+
+# ----------------------------------------------------------------------------- radii and weights
+def test_protor_radii_cover_nearly_all_protein_atoms():
+    for name, max_fallback in [("1grm", 2), ("1eca", 4), ("3rn3", 1), ("5mbn", 4)]:
+        atoms = read_pdb(PDB / f"{name}.pdb")
+        radii, fallback = vdw_radii(atoms, return_fallback=True)
+        assert radii.shape == (len(atoms),)
+        assert np.all(np.isfinite(radii)) and np.all((radii > 1.0) & (radii < 2.5))
+        assert int(fallback.sum()) <= max_fallback, name
+        assert not np.any(fallback & ~atoms.hetero), name  # every standard residue atom has ProtOr
+    atoms = read_pdb(PDB / "1grm.pdb")
+    r = vdw_radii(atoms)
+    # ProtOr (Tsai et al. 1999): backbone N 1.64, carbonyl O 1.42, CH3 1.88, C 1.61.
+    ile = atoms.res_names == "DLE"
+    assert set(r[ile & (atoms.atom_names == "N")]) == {1.64}
+    assert set(r[ile & (atoms.atom_names == "O")]) == {1.42}
+    assert set(r[ile & (atoms.atom_names == "CD1")]) == {1.88}
+    assert set(r[ile & (atoms.atom_names == "C")]) == {1.61}
+
+
+def test_single_radii_and_water_fallback():
+    atoms = read_pdb(PDB / "3rn3.pdb", waters=True)
+    single = vdw_radii(atoms, set="single")
+    expected = {"C": 1.70, "N": 1.55, "O": 1.52, "S": 1.80}
+    for el, r in expected.items():
+        np.testing.assert_allclose(single[atoms.elements == el], r)
+    protor, fallback = vdw_radii(atoms, return_fallback=True)
+    water = atoms.res_names == "HOH"
+    assert np.all(fallback[water]) and np.allclose(protor[water], 1.52)
+    with pytest.raises(ValueError, match="radius set"):
+        vdw_radii(atoms, set="bondi")
+    with pytest.raises(ValueError, match="Atoms"):
+        vdw_radii(atoms.coords)
+
+
+def test_weighted_points():
+    atoms = read_pdb(PDB / "1grm.pdb")
+    r = vdw_radii(atoms)
+    pts, w = weighted_points(atoms, r)
+    np.testing.assert_allclose(w, r**2)
+    assert pts.shape == (272, 3)
+    pts, w = weighted_points(atoms, r, r_c=0.5)
+    np.testing.assert_allclose(w, r**2 - 0.25)
+    np.testing.assert_allclose(pts, atoms.coords)
+    # An array of centres is accepted too.
+    _, w2 = weighted_points(np.zeros((2, 3)), [1.0, 2.0], r_c=1.0)
+    np.testing.assert_allclose(w2, [0.0, 3.0])
+    with pytest.raises(ValueError, match="one radius per atom"):
+        weighted_points(atoms, r[:-1])
+    with pytest.raises(ValueError, match="positive"):
+        weighted_points(np.zeros((1, 3)), [-1.0])
+    with pytest.raises(ValueError, match="r_c"):
+        weighted_points(np.zeros((1, 3)), [1.0], r_c=-0.1)
+    with pytest.raises(ValueError, match="finite"):
+        weighted_points(np.zeros((1, 3)), [np.nan])
+    with pytest.raises(ValueError, match=r"\(n, 3\)"):
+        weighted_points(np.zeros((2, 2)), [1.0, 1.0])

@@ -1,0 +1,328 @@
+"""Proteins as weighted point sets: PDB atoms, van der Waals radii and alpha-complex weights.
+
+Thesis §2.2.2 (space-filling diagrams) and §2.4.2 (weights w = r² − r_c²).
+
+The PDB files of the thesis's proteins come in two formats (see ``../shared/data/pdb/SOURCES.md``):
+the old pre-remediation format of 1ECA, where columns 73–80 hold the entry id and a line number
+(so the element columns 77–78 contain digits) and the ASN/GLN amide atoms carry the ambiguous names
+AD1/AD2 and AE1/AE2, and the remediated format of 1GRM, 3RN3 and 5MBN.  :func:`read_pdb` normalises
+every coordinate record before biotite parses it:
+
+* ATOM/HETATM lines are cut to 72 columns; the element is kept from columns 77–78 only when they hold
+  a real element symbol, otherwise it is worked out from the atom-name columns 13–14 (PDB rule:
+  the element symbol is right-justified in columns 13–14);
+* ASN AD1/AD2 → OD1/ND2 and GLN AE1/AE2 → OE1/NE2 (the reading fixed by SOURCES.md);
+* spaces inside atom names of the old format (HEM ``N A``) are removed (``NA``, the CCD name);
+* HETATM residues that are amino acids in the Chemical Component Dictionary (1GRM's DLE, DVA, FVA,
+  ETA) are kept even when ``hetero=False``, which drops only the other hetero groups.
+"""
+
+from __future__ import annotations
+
+import io
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from .paths import shared_dir
+
+__all__ = ["Atoms", "read_pdb", "vdw_radii", "weighted_points", "resolve_structure", "WATER_NAMES"]
+
+WATER_NAMES = frozenset({"HOH", "WAT", "DOD", "H2O", "SOL"})
+
+# Element symbols (Z = 1..103), upper case as in PDB files.
+_ELEMENTS = frozenset(
+    """H HE LI BE B C N O F NE NA MG AL SI P S CL AR K CA SC TI V CR MN FE CO NI CU ZN GA GE AS SE BR
+    KR RB SR Y ZR NB MO TC RU RH PD AG CD IN SN SB TE I XE CS BA LA CE PR ND PM SM EU GD TB DY HO ER
+    TM YB LU HF TA W RE OS IR PT AU HG TL PB BI PO AT RN FR RA AC TH PA U NP PU AM CM BK CF ES FM MD
+    NO LR D""".split()
+)
+
+# Old ambiguous amide names -> remediated names (SOURCES.md).
+_OLD_NAMES = {
+    ("ASN", "AD1"): "OD1",
+    ("ASN", "AD2"): "ND2",
+    ("GLN", "AE1"): "OE1",
+    ("GLN", "AE2"): "NE2",
+}
+
+_PDB_ID = re.compile(r"^[0-9][A-Za-z0-9]{3}$")
+
+
+@dataclass(frozen=True)
+class Atoms:
+    """The atoms of one model of a PDB entry, one row per atom.
+
+    ``coords`` (n, 3) in Å; ``elements``, ``res_names``, ``atom_names``, ``chain_ids`` string arrays
+    (upper case); ``res_ids`` int array; ``hetero`` bool array (HETATM record).
+    """
+
+    coords: np.ndarray
+    elements: np.ndarray
+    res_names: np.ndarray
+    atom_names: np.ndarray
+    res_ids: np.ndarray
+    chain_ids: np.ndarray
+    hetero: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.coords.shape[0])
+
+    def select(self, mask: np.ndarray) -> Atoms:
+        """The atoms where boolean ``mask`` is true."""
+        mask = np.asarray(mask, dtype=bool)
+        if mask.shape != (len(self),):
+            raise ValueError(f"mask must have shape ({len(self)},), got {mask.shape}")
+        return Atoms(*(getattr(self, f)[mask] for f in self.__dataclass_fields__))
+
+
+# --------------------------------------------------------------------------- reading
+def resolve_structure(path_or_name: str | Path) -> Path:
+    """Path of a PDB file given as a path or as a 4-character PDB id (``"1grm"``).
+
+    Thesis: §2.2.2 (the coordinates come from the Protein Data Bank).
+
+    An id is looked up through the data layer :func:`thesis_lib.data.path` (checked by sha256); when
+    the manifest has no entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
+    """
+    if isinstance(path_or_name, Path) or not _PDB_ID.match(str(path_or_name)):
+        path = Path(path_or_name)
+        if not path.is_file():
+            raise ValueError(f"no PDB file at {path}")
+        return path
+    name = str(path_or_name).lower()
+    from . import data
+
+    for key in (name, f"pdb-{name}", f"{name}.pdb"):
+        try:
+            return data.path(key)
+        except (data.DataError, FileNotFoundError) as exc:
+            if "does not match its sha256" in str(exc):
+                raise ValueError(str(exc)) from None
+    fallback = shared_dir() / "data" / "pdb" / f"{name}.pdb"
+    if fallback.is_file():
+        return fallback
+    raise ValueError(f"unknown structure {path_or_name!r}: not in data/manifest.toml and no {fallback}")
+
+
+def _element_from_name(field: str) -> str:
+    """Element of an atom from its 4-column name field (PDB columns 13–16)."""
+    c13, c14 = field[0], field[1]
+    if c13 in " 0123456789":
+        return c14.upper()
+    two = (c13 + c14).upper()
+    if c13.upper() == "H" and len(field.strip()) == 4:  # 4-character hydrogen names (HD11, HG12)
+        return "H"
+    if two in _ELEMENTS and c14.isalpha():
+        return two
+    return c13.upper()
+
+
+def _normalise(text: str, source: str) -> tuple[str, int]:
+    """Coordinate records rewritten as clean 80-column lines; also the number of MODEL records."""
+    out: list[str] = []
+    n_atoms = 0
+    n_models = 0
+    for number, raw in enumerate(text.splitlines(), start=1):
+        record = raw[:6]
+        if record in ("ATOM  ", "HETATM"):
+            line = raw.rstrip("\n\r")
+            if len(line.rstrip()) < 54:
+                raise ValueError(f"{source}, line {number}: truncated {record.strip()} record ({len(line)} columns)")
+            try:
+                xyz = [float(line[30:38]), float(line[38:46]), float(line[46:54])]
+            except ValueError:
+                raise ValueError(
+                    f"{source}, line {number}: coordinates {line[30:54]!r} are not numbers"
+                ) from None
+            if not np.all(np.isfinite(xyz)):
+                raise ValueError(f"{source}, line {number}: coordinates are not finite")
+            core = line[:72].ljust(72)
+            name_field = core[12:16]
+            res_name = core[17:20].strip().upper()
+            new_name = _OLD_NAMES.get((res_name, name_field.strip().upper()))
+            if new_name is not None:
+                name_field = " " + new_name
+            elif " " in name_field.strip():  # old HEM names "N A" -> "NA"
+                name_field = (" " + name_field.strip().replace(" ", "")).ljust(4)[:4]
+            column_element = line[76:78].strip().upper() if len(line) >= 78 else ""
+            if column_element.isalpha() and column_element in _ELEMENTS:
+                element = column_element
+            else:
+                element = _element_from_name(core[12:16] if new_name is None else name_field)
+            if element not in _ELEMENTS:
+                element = "X"
+            core = core[:12] + name_field + core[16:]
+            out.append(core + "    " + element.rjust(2) + "  ")
+            n_atoms += 1
+        elif record == "MODEL ":
+            out.append("MODEL     " + raw[10:14].rjust(4))
+            n_models += 1
+        elif record in ("ENDMDL", "TER   ", "TER"):
+            out.append(record.strip())
+    if n_atoms == 0:
+        raise ValueError(f"{source}: no ATOM/HETATM records; not a PDB coordinate file")
+    return "\n".join(out) + "\nEND\n", n_models
+
+
+def read_pdb(
+    path_or_name: str | Path,
+    model: int = 1,
+    hetero: bool = True,
+    waters: bool = False,
+    altloc: str = "first",
+    hydrogens: bool = False,
+) -> Atoms:
+    """Read the atoms of one model of a PDB file, with the traps of old PDB formats handled.
+
+    Thesis: §2.2.2 (atoms of a protein from the Protein Data Bank, space-filling model).
+
+    Parameters
+    ----------
+    path_or_name : a file path or a PDB id such as ``"1grm"`` (see :func:`resolve_structure`).
+    model : 1-based model number (NMR entries such as 1GRM hold several).
+    hetero : keep HETATM groups (ligands such as HEM, SO4).  HETATM residues that are amino acids
+        (D-amino acids, formyl-Val, ethanolamine of 1GRM) are kept either way.
+    waters : keep water molecules (HOH, WAT, DOD, ...).
+    altloc : ``"first"``, ``"occupancy"`` or ``"all"`` alternate locations (as biotite).
+    hydrogens : keep hydrogen/deuterium atoms (none of the thesis's entries has any).
+
+    Raises
+    ------
+    ValueError
+        Missing file, no coordinate records, truncated or garbled records, unknown model.
+    """
+    import biotite.structure.info as info
+    from biotite.structure.io.pdb import PDBFile
+
+    if isinstance(model, bool) or not isinstance(model, (int, np.integer)) or model < 1:
+        raise ValueError(f"model must be a positive integer, got {model!r}")
+    if altloc not in ("first", "occupancy", "all"):
+        raise ValueError(f"altloc must be 'first', 'occupancy' or 'all', got {altloc!r}")
+    path = resolve_structure(path_or_name)
+    try:
+        text = path.read_text(encoding="ascii", errors="strict")
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{path}: not a text PDB file ({exc.reason} at byte {exc.start})") from None
+    clean, n_model_records = _normalise(text, str(path))
+    try:
+        pdb_file = PDBFile.read(io.StringIO(clean))
+        n_models = pdb_file.get_model_count()
+        if model > n_models:
+            raise ValueError(f"{path} has {n_models} model(s), asked for model {model}")
+        array = pdb_file.get_structure(model=int(model), altloc=altloc)
+    except ValueError as exc:
+        if "model(s), asked for" in str(exc):
+            raise
+        raise ValueError(f"{path}: cannot parse coordinate records ({exc})") from None
+    except Exception as exc:  # biotite's InvalidFileError and friends
+        raise ValueError(f"{path}: cannot parse coordinate records ({type(exc).__name__}: {exc})") from None
+    if array.array_length() == 0:
+        raise ValueError(f"{path}: model {model} has no atoms")
+
+    res_names = np.char.upper(array.res_name.astype(str))
+    elements = np.char.upper(array.element.astype(str))
+    is_het = np.asarray(array.hetero, dtype=bool)
+    keep = np.ones(array.array_length(), dtype=bool)
+    is_water = np.isin(res_names, list(WATER_NAMES))
+    if not waters:
+        keep &= ~is_water
+    if not hetero:
+        amino = np.isin(res_names, list(info.amino_acid_names()))
+        keep &= ~is_het | amino | (is_water & waters)
+    if not hydrogens:
+        keep &= ~np.isin(elements, ["H", "D"])
+    return Atoms(
+        coords=np.asarray(array.coord[keep], dtype=np.float64),
+        elements=elements[keep],
+        res_names=res_names[keep],
+        atom_names=np.char.upper(array.atom_name.astype(str))[keep],
+        res_ids=np.asarray(array.res_id[keep], dtype=np.int64),
+        chain_ids=array.chain_id.astype(str)[keep],
+        hetero=is_het[keep],
+    )
+
+
+# --------------------------------------------------------------------------- radii and weights
+def _single_radius(element: str) -> float | None:
+    import biotite.structure.info as info
+
+    return info.vdw_radius_single(element)
+
+
+def vdw_radii(atoms: Atoms, set: str = "protor", return_fallback: bool = False):
+    """Van der Waals radius (Å) of every atom.
+
+    Thesis: §2.2.2 (the radius of an atom depends on its chemical environment; the thesis used
+    ESBTL's radii, here the ProtOr united-atom radii of Tsai et al. 1999).
+
+    ``set="protor"`` uses :func:`biotite.structure.info.vdw_radius_protor` (heavy atom plus its
+    bonded hydrogens, from the residue's entry in the Chemical Component Dictionary).  When ProtOr has
+    no radius for an atom (waters, metal ions, sulfate, atom names unknown to the dictionary) the
+    single-element radius :func:`biotite.structure.info.vdw_radius_single` is used instead;
+    ``return_fallback=True`` also returns the boolean mask of those atoms.  ``set="single"`` uses the
+    single-element radii for all atoms.
+
+    Raises
+    ------
+    ValueError
+        Unknown radius set, or an element without any tabulated radius.
+    """
+    import biotite.structure.info as info
+
+    if set not in ("protor", "single"):
+        raise ValueError(f"radius set must be 'protor' or 'single', got {set!r}")
+    if not isinstance(atoms, Atoms):
+        raise ValueError(f"atoms must be an Atoms record from read_pdb, got {type(atoms).__name__}")
+    n = len(atoms)
+    radii = np.full(n, np.nan)
+    fallback = np.zeros(n, dtype=bool)
+    if set == "protor":
+        pairs, inverse = np.unique(
+            np.stack([atoms.res_names, atoms.atom_names], axis=1), axis=0, return_inverse=True
+        )
+        table = np.full(len(pairs), np.nan)
+        for i, (res, name) in enumerate(pairs):
+            try:
+                r = info.vdw_radius_protor(str(res), str(name))
+            except (KeyError, ValueError):
+                r = None
+            if r is not None:
+                table[i] = r
+        radii = table[np.asarray(inverse).reshape(-1)]
+        fallback = np.isnan(radii)
+    else:
+        fallback[:] = True
+    elements, inverse = np.unique(atoms.elements, return_inverse=True)
+    single = np.array([_single_radius(e) if _single_radius(e) is not None else np.nan for e in elements])
+    missing = fallback & np.isnan(single[np.asarray(inverse).reshape(-1)])
+    if np.any(missing):
+        bad = sorted({str(e) for e in atoms.elements[missing]})
+        raise ValueError(f"no van der Waals radius for element(s) {', '.join(bad)}")
+    radii = np.where(fallback, single[np.asarray(inverse).reshape(-1)], radii)
+    return (radii, fallback) if return_fallback else radii
+
+
+def weighted_points(atoms, radii, r_c: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+    """Centres and alpha-complex weights w = r² − r_c² of the atoms' balls.
+
+    Thesis: §2.4.2 (w = r² − r_c², so the filtration value ε² = r_c² gives every atom its radius r;
+    r_c = 0 gives the weights of §2.2.2, the squared van der Waals radii).
+
+    ``atoms`` is an :class:`Atoms` record or an ``(n, 3)`` array of centres.
+    """
+    coords = atoms.coords if isinstance(atoms, Atoms) else np.asarray(atoms, dtype=np.float64)
+    if coords.ndim != 2 or coords.shape[1] != 3:
+        raise ValueError(f"atom centres must be an (n, 3) array, got shape {coords.shape}")
+    r = np.asarray(radii, dtype=np.float64)
+    if r.shape != (coords.shape[0],):
+        raise ValueError(f"need one radius per atom: {coords.shape[0]} atoms, radii of shape {r.shape}")
+    if not (np.all(np.isfinite(r)) and np.all(np.isfinite(coords))):
+        raise ValueError("radii and centres must be finite")
+    if np.any(r <= 0):
+        raise ValueError("radii must be positive")
+    if not np.isfinite(r_c) or r_c < 0:
+        raise ValueError(f"r_c must be a finite non-negative number, got {r_c!r}")
+    return coords.copy(), r**2 - float(r_c) ** 2
