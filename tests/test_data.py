@@ -1,0 +1,88 @@
+"""The data layer: manifest, resolution order, sha256 checks, errors that say what to do, fetch."""
+
+from __future__ import annotations
+
+import hashlib
+
+import pytest
+
+from thesis_lib import cli, data
+from thesis_lib.data import DataError
+
+
+def test_every_manifest_entry_verifies():
+    rows = data.verify()
+    assert {name for name, _, _ in rows} == {"1eca", "1grm", "3rn3", "5mbn"}
+    assert all(status == "ok" for _, status, _ in rows), rows
+
+
+def test_manifest_sizes_match_the_files():
+    for name, entry in data.manifest().items():
+        assert data.path(name).stat().st_size == entry.size
+
+
+def test_cli_data_verify(capsys):
+    assert cli.main(["data", "verify"]) == 0
+    assert capsys.readouterr().out.count("ok ") == 4
+
+
+@pytest.fixture
+def tiny(tmp_path, monkeypatch):
+    """A compendium root with a one-entry manifest and a shared folder beside it."""
+    root, shared = tmp_path / "repo", tmp_path / "shared"
+    (root / "data").mkdir(parents=True)
+    (shared / "data" / "x").mkdir(parents=True)
+    payload = b"ATOM      1  N   GLY A   1\n"
+    source = tmp_path / "source.txt"
+    source.write_bytes(payload)
+    digest = hashlib.sha256(payload).hexdigest()
+    (root / "data" / "manifest.toml").write_text(
+        f'[[file]]\nname = "toy"\nfile = "x/toy.pdb"\nsha256 = "{digest}"\nsize = {len(payload)}\n'
+        f'url = "{source.as_uri()}"\norigin = "test"\nlicence = "CC0"\n'
+    )
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(root))
+    monkeypatch.setenv("THESIS_LAB_SHARED", str(shared))
+    return root, shared, payload
+
+
+def test_missing_file_names_it_and_what_to_do(tiny):
+    with pytest.raises(DataError, match=r"'toy' \(x/toy.pdb\) is missing.*thesis-lab data fetch toy"):
+        data.path("toy")
+
+
+def test_wrong_hash_names_the_file_and_what_to_do(tiny):
+    root, shared, payload = tiny
+    (shared / "data" / "x" / "toy.pdb").write_bytes(payload + b"corrupt")
+    with pytest.raises(DataError, match=r"toy.pdb does not match its sha256.*delete it and run `thesis-lab data fetch toy`"):
+        data.path("toy")
+    assert cli.main(["data", "verify"]) == 1
+
+
+def test_local_cache_comes_before_shared(tiny):
+    root, shared, payload = tiny
+    (shared / "data" / "x" / "toy.pdb").write_bytes(payload)
+    assert data.path("toy") == shared / "data" / "x" / "toy.pdb"
+    (root / "data" / "x").mkdir()
+    (root / "data" / "x" / "toy.pdb").write_bytes(payload)
+    assert data.path("toy") == root / "data" / "x" / "toy.pdb"
+
+
+def test_unknown_name_lists_the_known_ones(tiny):
+    with pytest.raises(DataError, match="unknown data set 'nope'; the manifest lists: toy"):
+        data.path("nope")
+
+
+def test_fetch_downloads_checks_and_caches(tiny):
+    root, _, payload = tiny
+    target = data.fetch("toy")
+    assert target == root / "data" / "x" / "toy.pdb" and target.read_bytes() == payload
+    assert data.path("toy") == target
+
+
+def test_fetch_refuses_a_download_with_the_wrong_hash(tiny, tmp_path):
+    root, _, _ = tiny
+    (tmp_path / "source.txt").write_bytes(b"something else")
+    with pytest.raises(DataError, match="does not match its sha256"):
+        data.fetch("toy")
+    assert not (root / "data" / "x" / "toy.pdb").exists()
+    assert not list((root / "data" / "x").iterdir())

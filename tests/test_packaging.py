@@ -1,0 +1,62 @@
+"""README, CI, pyproject and environment.yml stay consistent with each other."""
+
+from __future__ import annotations
+
+import re
+import tomllib
+
+import yaml
+
+from thesis_lib.paths import repo_root
+
+ROOT = repo_root()
+
+
+def _readme_commands() -> list[str]:
+    text = (ROOT / "README.md").read_text()
+    section = text.split("## The two commands", 1)[1].split("\n## ", 1)[0]
+    block = re.search(r"```bash\n(.*?)```", section, re.S).group(1)
+    return [line.split("#", 1)[0].strip() for line in block.strip().splitlines()]
+
+
+def test_readme_has_exactly_two_setup_commands():
+    assert _readme_commands() == ["make book", "make test"]
+
+
+def test_ci_runs_exactly_the_readme_test_command():
+    lines = [l for l in (ROOT / ".ci" / "run").read_text().splitlines() if l.strip() and not l.startswith("#")]
+    assert lines[-1].strip() == _readme_commands()[1]
+    assert all(l.startswith(("set ", "cd ")) for l in lines[:-1])
+
+
+def test_makefile_targets_exist():
+    text = (ROOT / "Makefile").read_text()
+    for target in ["book", "test", "experiments", "sweep", "bench", "clean"]:
+        assert re.search(rf"^{target}:", text, re.M), target
+
+
+def _requirement(spec: str) -> tuple[str, str]:
+    m = re.match(r"\s*([A-Za-z0-9_.\-]+)\s*(.*)", spec)
+    return m.group(1).lower().replace("_", "-"), m.group(2).replace(" ", "")
+
+
+def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    wanted = dict(_requirement(s) for s in project["dependencies"] + project["optional-dependencies"]["dev"])
+    env = yaml.safe_load((ROOT / "environment.yml").read_text())
+    have: dict[str, str] = {}
+    for dep in env["dependencies"]:
+        if isinstance(dep, dict):
+            have.update(_requirement(s) for s in dep["pip"] if not s.startswith("-e"))
+        elif not dep.startswith(("python", "pip")):
+            name, floor = _requirement(dep)
+            have[name] = floor
+    assert have == wanted
+
+
+def test_console_script_and_citation():
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert project["scripts"]["thesis-lab"] == "thesis_lib.cli:main"
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    assert cff["preferred-citation"]["authors"][0]["family-names"] == "Botnan"
+    assert cff["preferred-citation"]["year"] == 2011
