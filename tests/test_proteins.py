@@ -194,3 +194,49 @@ def test_weighted_points():
         weighted_points(np.zeros((1, 3)), [np.nan])
     with pytest.raises(ValueError, match=r"\(n, 3\)"):
         weighted_points(np.zeros((2, 2)), [1.0, 1.0])
+
+
+# ----------------------------------------------------------------------------- filtrations and bars
+def test_discretise_intervals_on_a_grid():
+    from thesis_lib.proteins import discretise_intervals
+
+    iv = np.array([[0.01, 0.015], [0.01, 0.05], [-0.3, 0.07], [0.12, np.inf], [0.6, 0.9], [0.2, 0.61]])
+    out = discretise_intervals(iv, 0.02, window=(0.0, 0.5))
+    # [0.01, 0.015) falls between samples 0.00 and 0.02: gone.  [-0.3, 0.07) is clipped to [0, 0.08).
+    np.testing.assert_allclose(out, [[0.02, 0.06], [0.0, 0.08], [0.12, 0.5], [0.2, 0.5]])
+    unbounded = discretise_intervals(iv, 0.05)
+    assert np.isinf(unbounded).sum() == 1
+    np.testing.assert_allclose(unbounded, [[0.0, 0.1], [0.15, np.inf], [0.6, 0.9], [0.2, 0.65]])
+    with pytest.raises(ValueError, match="increment"):
+        discretise_intervals(iv, 0.0)
+    with pytest.raises(ValueError, match="window"):
+        discretise_intervals(iv, 0.1, window=(1.0, 0.5))
+    with pytest.raises(ValueError, match="birth <= death"):
+        discretise_intervals([[1.0, 0.5]], 0.1)
+
+
+def test_count_bars():
+    from thesis_lib.proteins import count_bars
+
+    iv = np.array([[0.0, 0.02], [0.0, 0.03], [0.1, 0.5], [0.2, np.inf]])
+    assert count_bars(iv) == 4
+    assert count_bars(iv, 0.03) == 3
+    assert count_bars(iv, 1.0) == 1
+    with pytest.raises(ValueError, match="min_length"):
+        count_bars(iv, -1)
+
+
+def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():
+    from thesis_lib.persistence import persistence
+    from thesis_lib.proteins import protein_filtration
+
+    atoms = read_pdb(PDB / "1grm.pdb")
+    r = vdw_radii(atoms)
+    f = protein_filtration(atoms, r, r_c=0.5)
+    # Every weighted vertex enters at -w = r_c^2 - r^2.
+    np.testing.assert_allclose(np.sort(f.values[0]), np.sort(0.25 - r**2))
+    bars = persistence(f)
+    assert bars.betti(0.25, 0) == 1  # the union of the van der Waals balls is connected
+    assert bars.betti(0.25, 1) > 10  # many rings (the thesis reports 30 with its radii)
+    with pytest.raises(ValueError, match="negative weights"):
+        protein_filtration(atoms, r, r_c=2.0)

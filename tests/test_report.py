@@ -98,3 +98,9 @@ def test_missing_results_are_reported_not_hidden(registry):
 def test_malformed_claims_are_refused(registry, text, message):
     with pytest.raises(ClaimError, match=message):
         registry(text)
+
+
+def test_report_is_ordered_by_thesis_place(registry):
+    text = _claim(id="late", where="Figure 3.5", rtol=0.1) + _claim(id="early", where="§2.2.2", rtol=0.1)
+    text += _claim(id="mid", where="Example 2.21", rtol=0.1)
+    assert [r["id"] for r in registry(text)] == ["early", "mid", "late"]

@@ -28,7 +28,19 @@ import numpy as np
 
 from .paths import shared_dir
 
-__all__ = ["Atoms", "read_pdb", "vdw_radii", "weighted_points", "resolve_structure", "WATER_NAMES"]
+__all__ = [
+    "Atoms",
+    "read_pdb",
+    "vdw_radii",
+    "weighted_points",
+    "resolve_structure",
+    "protein_filtration",
+    "discretise_intervals",
+    "count_bars",
+    "space_filling_image",
+    "WATER_NAMES",
+    "ELEMENT_COLORS",
+]
 
 WATER_NAMES = frozenset({"HOH", "WAT", "DOD", "H2O", "SOL"})
 
@@ -326,3 +338,101 @@ def weighted_points(atoms, radii, r_c: float = 0.0) -> tuple[np.ndarray, np.ndar
     if not np.isfinite(r_c) or r_c < 0:
         raise ValueError(f"r_c must be a finite non-negative number, got {r_c!r}")
     return coords.copy(), r**2 - float(r_c) ** 2
+
+
+# --------------------------------------------------------------------------- filtrations and bars
+def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0):
+    """Weighted alpha filtration of the atoms' balls with weights w = r² − r_c² (values ε²).
+
+    Thesis: §2.2.2 and §2.4.2 (the union of the balls B(x, sqrt(w + ε²)) is homotopy equivalent to
+    the weighted alpha complex; at ε² = r_c² every atom has its van der Waals radius).
+    """
+    from .complexes.alpha import alpha
+
+    points, weights = weighted_points(atoms, radii, r_c)
+    if np.any(weights < 0):
+        raise ValueError(f"r_c = {r_c} exceeds the smallest radius {float(np.min(radii)):.3f}: negative weights")
+    return alpha(points, weights)
+
+
+def discretise_intervals(intervals: np.ndarray, increment: float, window: tuple[float, float] = (0.0, np.inf)) -> np.ndarray:
+    """Intervals of the filtration sampled at ``lo, lo + increment, lo + 2·increment, ...`` within a window.
+
+    Thesis: §2.4.2, Example 2.43 ("filtration increments" of 0.02, 0.005 and 0.05).
+
+    A complex computed only at the values ``lo + j·increment`` sees a class born at b from the first
+    sample ≥ b until the first sample ≥ d, so each interval ``[b, d)`` becomes ``[⌈b⌉, ⌈d⌉)`` on the
+    grid; classes born and dead between two samples vanish.  Only intervals meeting the window
+    ``[lo, hi)`` are kept, clipped to it (a class alive at ``hi`` ends there, like a finite stream).
+    Since persistence pairs do not change under a monotone re-indexing of a filtration, this is the
+    barcode of the sampled filtration.
+    """
+    iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
+    if not (np.isfinite(increment) and increment > 0):
+        raise ValueError(f"increment must be a positive number, got {increment!r}")
+    lo, hi = (float(window[0]), float(window[1]))
+    if not (np.isfinite(lo) and hi > lo):
+        raise ValueError(f"window must be (lo, hi) with a finite lo < hi, got {window!r}")
+    if np.any(np.isnan(iv)) or np.any(iv[:, 1] < iv[:, 0]):
+        raise ValueError("intervals must be (birth, death) pairs with birth <= death and no NaN")
+    keep = (iv[:, 0] < hi) & (iv[:, 1] > lo)
+    iv = np.clip(iv[keep], lo, hi)
+    with np.errstate(invalid="ignore"):
+        steps = np.ceil(np.round((iv - lo) / increment, 9))
+    snapped = np.where(np.isinf(iv), iv, lo + steps * increment)
+    return snapped[snapped[:, 1] > snapped[:, 0]]
+
+
+def count_bars(intervals: np.ndarray, min_length: float = 0.0) -> int:
+    """Number of bars of length at least ``min_length`` (infinite bars always count).
+
+    Thesis: §2.4.2, Example 2.43 ("ignoring bars with length less than 0.03").
+    """
+    iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
+    if not (np.isfinite(min_length) and min_length >= 0):
+        raise ValueError(f"min_length must be a non-negative number, got {min_length!r}")
+    length = iv[:, 1] - iv[:, 0]
+    return int(np.count_nonzero(length >= min_length - 1e-12))
+
+
+# --------------------------------------------------------------------------- rendering
+#: CPK-like colours of the elements in the space-filling pictures.
+ELEMENT_COLORS = {"C": "#8c8c8c", "N": "#3050f8", "O": "#ff0d0d", "S": "#e6c619", "FE": "#e06633"}
+
+
+def space_filling_image(
+    atoms: Atoms,
+    radii: np.ndarray,
+    scale: float = 1.0,
+    window_size: tuple[int, int] = (600, 600),
+    resolution: int = 16,
+) -> np.ndarray:
+    """RGB picture (h, w, 3) of the atoms as balls of radius ``scale × radius`` rendered off-screen.
+
+    Thesis: §2.2.2 and Figure 2.18 (space-filling diagram; 1ECA with 15 % and 100 % of the radii).
+    """
+    from .render import pyvista_offscreen
+
+    r = np.asarray(radii, dtype=np.float64)
+    if not isinstance(atoms, Atoms) or r.shape != (len(atoms),):
+        raise ValueError("need an Atoms record and one radius per atom")
+    if not (np.isfinite(scale) and scale > 0):
+        raise ValueError(f"scale must be positive, got {scale!r}")
+    pv = pyvista_offscreen()
+    from matplotlib.colors import to_rgb
+
+    colors = np.array([to_rgb(ELEMENT_COLORS.get(e, "#ff69b4")) for e in atoms.elements])
+    cloud = pv.PolyData(atoms.coords - atoms.coords.mean(axis=0))
+    cloud["radius"] = scale * r
+    cloud["rgb"] = (255 * colors).astype(np.uint8)
+    ball = pv.Sphere(radius=1.0, theta_resolution=resolution, phi_resolution=resolution)
+    glyphs = cloud.glyph(scale="radius", geom=ball, orient=False)
+    plotter = pv.Plotter(off_screen=True, window_size=list(window_size))
+    plotter.set_background("white")
+    plotter.add_mesh(glyphs, scalars="rgb", rgb=True, smooth_shading=True)
+    plotter.camera_position = "xy"
+    plotter.reset_camera()
+    plotter.camera.zoom(1.4)
+    image = plotter.screenshot(return_img=True)
+    plotter.close()
+    return np.asarray(image)

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -86,8 +87,14 @@ def _parse(item: dict, source: str) -> Claim:
     return Claim(result=result, source=source, **fields)
 
 
+def _place(claim: Claim) -> tuple[int, ...]:
+    """Sort key: the first thesis number in ``where`` (``Figure 2.14`` → (2, 14); ``§2.2.2`` → (2, 2, 2))."""
+    m = re.search(r"\d+(?:\.\d+)*", claim.where)
+    return tuple(int(x) for x in m.group(0).split(".")) if m else (99,)
+
+
 def load_claims(directory: Path | None = None) -> list[Claim]:
-    """Every claim of the registry, in file then listed order; ids must be unique."""
+    """Every claim of the registry, ordered by thesis place (stable); ids must be unique."""
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
         with open(file, "rb") as fh:
@@ -97,7 +104,7 @@ def load_claims(directory: Path | None = None) -> list[Claim]:
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
         raise ClaimError(f"claim ids must be unique; repeated: {sorted(dup)}")
-    return claims
+    return sorted(claims, key=_place)
 
 
 def _ours(claim: Claim, cache: dict[str, dict]) -> list[float] | None:

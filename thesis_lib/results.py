@@ -13,9 +13,11 @@ from pathlib import Path
 
 from .paths import repo_root
 
-__all__ = ["Recorder", "load", "results_dir", "RESULTS_FILE"]
+__all__ = ["Recorder", "load", "results_dir", "RESULTS_FILE", "TIMINGS_FILE"]
 
 RESULTS_FILE = "results.json"
+#: wall-clock times vary from run to run: kept apart from the results, and not committed
+TIMINGS_FILE = "timings.json"
 
 
 def results_dir(name: str) -> Path:
@@ -60,6 +62,13 @@ class Recorder:
             self.results[key] = _as_number(key, value)
         self._write()
         return {k: self.results[k] for k in values}
+
+    def timing(self, **seconds) -> None:
+        """Record wall-clock times (``timings.json``): shown to the reader, never compared."""
+        file = self.path / TIMINGS_FILE
+        times = json.loads(file.read_text()) if file.exists() else {}
+        times.update({k: round(float(v), 4) for k, v in seconds.items()})
+        file.write_text(json.dumps(times, indent=1, sort_keys=True) + "\n")
 
     def savefig(self, fig, stem: str, dpi: int = 110) -> Path:
         """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs)."""

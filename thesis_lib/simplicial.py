@@ -138,7 +138,11 @@ def find_rows(haystack: np.ndarray, needles: np.ndarray, *, missing: str = "rais
 def _unique_rows(arr: np.ndarray) -> np.ndarray:
     if arr.shape[0] == 0:
         return arr
-    return np.unique(arr, axis=0)
+    keys = row_keys(arr, int(arr.max()) + 1)  # 1-D keys sort much faster than np.unique(axis=0)
+    if keys is None:
+        return np.unique(arr, axis=0)
+    _, first = np.unique(keys, return_index=True)
+    return arr[first]
 
 
 def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.ndarray]:

@@ -6,3 +6,16 @@ __all__ = ["Filtration"]
 from .landmarks import covering_radius, maxmin_landmarks, random_landmarks
 
 __all__ += ["maxmin_landmarks", "random_landmarks", "covering_radius"]
+from .rips import rips
+from .cech import cech
+from .miniball import smallest_enclosing_ball
+from .delaunay import delaunay, regular_triangulation
+from .alpha import alpha
+from .witness import lazy_witness, witness, witness_offsets
+from .nerve import nerve
+
+__all__ += ["rips", "cech", "smallest_enclosing_ball", "delaunay", "regular_triangulation", "alpha", "witness",
+            "lazy_witness", "witness_offsets", "nerve"]
+from .factory import COMPLEXES, build_filtration, choose_landmarks
+
+__all__ += ["COMPLEXES", "build_filtration", "choose_landmarks"]

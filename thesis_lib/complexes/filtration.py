@@ -151,11 +151,16 @@ class Filtration:
 
     @cached_property
     def order(self) -> tuple[np.ndarray, np.ndarray]:
-        """The filtration order as ``(dims, index)``: the i-th simplex is ``simplices[dims[i]][index[i]]``."""
+        """The filtration order as ``(dims, index)``: the i-th simplex is ``simplices[dims[i]][index[i]]``.
+
+        Thesis: Definition 2.22 (simplices listed by value; ties by dimension, then position).
+        """
         dims = np.concatenate([np.full(s.shape[0], d, dtype=np.int64) for d, s in enumerate(self.simplices)])
         index = np.concatenate([np.arange(s.shape[0], dtype=np.int64) for s in self.simplices])
         vals = np.concatenate(self.values)
-        perm = np.lexsort((index, dims, vals))
+        # the concatenation is already sorted by (dimension, index): a stable sort on the value alone
+        # gives the (value, dimension, index) order, faster than a three-key lexsort.
+        perm = np.argsort(vals, kind="stable")
         return dims[perm], index[perm]
 
     @cached_property
@@ -168,6 +173,30 @@ class Filtration:
             mask = dims == d
             out[d][index[mask]] = where[mask]
         return out
+
+    def skeleton(self, k: int) -> Filtration:
+        """The k-skeleton K^(k): the simplices of dimension <= k with their values.
+
+        Thesis: §2.1.1 (the j-skeleton of a complex).
+        """
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
+            raise ValueError(f"skeleton dimension must be an integer >= 0, got {k!r}")
+        k = min(int(k), self.dimension)
+        return Filtration(self.simplices[: k + 1], self.values[: k + 1], validate=False)
+
+    def threshold(self, value: float) -> Filtration:
+        """The sub-complex K^value of simplices with filtration value <= ``value``.
+
+        Thesis: Definition 2.22 (each step of the filtration is a sub-complex).
+        """
+        value = float(value)
+        if np.isnan(value):
+            raise ValueError("threshold value is NaN")
+        keep = [v <= value for v in self.values]
+        if not keep or not keep[0].any():
+            raise ValueError(f"no simplex has a value <= {value}")
+        return Filtration([s[m] for s, m in zip(self.simplices, keep)], [v[m] for v, m in zip(self.values, keep)],
+                          validate=False)
 
     def __iter__(self) -> Iterator[tuple[tuple[int, ...], float]]:
         dims, index = self.order

@@ -20,10 +20,13 @@ from __future__ import annotations
 from math import factorial
 from typing import NamedTuple
 
+import numba
 import numpy as np
 
 __all__ = [
     "Mesh",
+    "TriangleGeometry",
+    "triangle_geometry",
     "validate_mesh",
     "simplex_hyperareas",
     "ridges",
@@ -36,6 +39,63 @@ __all__ = [
 DEGENERATE_RTOL = 1e-10
 
 
+class TriangleGeometry(NamedTuple):
+    """Per-corner data of a triangle mesh, computed once during validation (n = 2).
+
+    Corner k of a face is its k-th vertex; ``edge_sq[k]`` is the squared length of the edge
+    opposite corner k and ``dot[k]`` the dot product of the two edge vectors leaving corner k.
+    Arrays are ``(3, m)`` (corner-major) so that each row is contiguous.
+    """
+
+    dot: np.ndarray  #: (3, m)
+    edge_sq: np.ndarray  #: (3, m)
+    twice_area: np.ndarray  #: (m,)
+    coords: np.ndarray  #: (3 corners, 3 coordinates, m) vertex coordinates
+
+
+@numba.njit(cache=True)
+def _triangle_kernel(v, s, dot, sq, twice, pts):  # pragma: no cover - compiled
+    for t in range(s.shape[0]):
+        for k in range(3):
+            for a in range(3):
+                pts[k, a, t] = v[s[t, k], a]
+        # edge opposite corner k: e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0
+        e0x = pts[2, 0, t] - pts[1, 0, t]
+        e0y = pts[2, 1, t] - pts[1, 1, t]
+        e0z = pts[2, 2, t] - pts[1, 2, t]
+        e1x = pts[0, 0, t] - pts[2, 0, t]
+        e1y = pts[0, 1, t] - pts[2, 1, t]
+        e1z = pts[0, 2, t] - pts[2, 2, t]
+        e2x = pts[1, 0, t] - pts[0, 0, t]
+        e2y = pts[1, 1, t] - pts[0, 1, t]
+        e2z = pts[1, 2, t] - pts[0, 2, t]
+        s0 = e0x * e0x + e0y * e0y + e0z * e0z
+        s1 = e1x * e1x + e1y * e1y + e1z * e1z
+        s2 = e2x * e2x + e2y * e2y + e2z * e2z
+        sq[0, t] = s0
+        sq[1, t] = s1
+        sq[2, t] = s2
+        dot[0, t] = 0.5 * (s1 + s2 - s0)  # law of cosines
+        dot[1, t] = 0.5 * (s2 + s0 - s1)
+        dot[2, t] = 0.5 * (s0 + s1 - s2)
+        cx = e1y * e2z - e1z * e2y
+        cy = e1z * e2x - e1x * e2z
+        cz = e1x * e2y - e1y * e2x
+        twice[t] = np.sqrt(cx * cx + cy * cy + cz * cz)
+
+
+def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
+    """Corner dot products, squared opposite edge lengths and twice the areas of triangles in R^3.
+
+    One compiled pass over the triangles (numba); ``v`` float64 (nv, 3), ``s`` int64 (m, 3), in range.
+    """
+    m = len(s)
+    dot, sq = np.empty((3, m)), np.empty((3, m))
+    twice, pts = np.empty(m), np.empty((3, 3, m))
+    _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts)
+    return TriangleGeometry(dot, sq, twice, pts)
+
+
 class Mesh(NamedTuple):
     """A validated triangulated hypersurface (see :func:`validate_mesh`)."""
 
@@ -44,6 +104,7 @@ class Mesh(NamedTuple):
     areas: np.ndarray  #: ``(m,)`` hyperarea of each top simplex
     boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
+    tri: "TriangleGeometry | None" = None  #: per-corner data when n = 2, else None
 
     @property
     def n(self) -> int:
@@ -69,19 +130,49 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
     return np.sqrt(np.clip(np.linalg.det(gram), 0.0, None)) / factorial(n)
 
 
-def _rows_key(rows: np.ndarray, nv: int) -> np.ndarray:
-    """One integer (or a void view) per sorted row, for counting equal rows."""
-    rows = np.sort(rows, axis=1)
-    w = rows.shape[1]
-    if w == 1:
-        return rows[:, 0].copy()
-    if float(nv) ** w < 2.0**62:
-        key = rows[:, 0].astype(np.int64)
-        for j in range(1, w):
-            key = key * nv + rows[:, j]
-        return key
-    rows = np.ascontiguousarray(rows)
-    return rows.view(np.dtype((np.void, rows.dtype.itemsize * w))).ravel()
+def _ridge_keys(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, bool]:
+    """One key per (simplex, omitted vertex) ridge; ``True`` if the keys are integers."""
+    m, w = simplices.shape
+    if w == 3:
+        a, b, c = simplices[:, 0], simplices[:, 1], simplices[:, 2]
+        lo = np.concatenate([np.minimum(b, c), np.minimum(a, c), np.minimum(a, b)])
+        hi = np.concatenate([np.maximum(b, c), np.maximum(a, c), np.maximum(a, b)])
+        if float(nv) ** 2 < 2.0**62:
+            return lo * nv + hi, True
+        allr = np.stack([lo, hi], axis=1)
+    else:
+        allr = np.sort(np.concatenate([np.delete(simplices, i, axis=1) for i in range(w)]), axis=1)
+    if w == 1 or float(nv) ** (w - 1) < 2.0**62:
+        key = allr[:, 0].astype(np.int64)
+        for j in range(1, w - 1):
+            key = key * nv + allr[:, j]
+        return key, True
+    allr = np.ascontiguousarray(allr)
+    return allr.view(np.dtype((np.void, allr.dtype.itemsize * (w - 1)))).ravel(), False
+
+
+def _decode(keys: np.ndarray, nv: int, width: int) -> np.ndarray:
+    out = np.empty((len(keys), width), dtype=np.int64)
+    k = keys.astype(np.int64)
+    for j in range(width - 1, -1, -1):
+        k, out[:, j] = np.divmod(k, nv)
+    return out
+
+
+def _ridge_counts(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray, bool]:
+    key, integral = _ridge_keys(simplices, nv)
+    ks = np.sort(key)
+    start = np.ones(len(ks), dtype=bool)
+    start[1:] = ks[1:] != ks[:-1]
+    first = np.flatnonzero(start)
+    counts = np.diff(np.append(first, len(ks)))
+    return ks[first], counts, integral
+
+
+def _rows(keys: np.ndarray, nv: int, width: int, integral: bool) -> np.ndarray:
+    if integral:
+        return _decode(keys, nv, width)
+    return np.frombuffer(np.ascontiguousarray(keys).tobytes(), dtype=np.int64).reshape(-1, width)
 
 
 def ridges(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
@@ -94,17 +185,9 @@ def ridges(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
     (ridges, counts)
         ``ridges`` is ``(r, n)`` with sorted rows, ``counts`` is ``(r,)``.
     """
-    m, w = simplices.shape
-    allr = np.concatenate([np.delete(simplices, i, axis=1) for i in range(w)])
-    allr = np.sort(allr, axis=1)
-    key = _rows_key(allr, nv)
-    order = np.argsort(key, kind="stable")
-    ks = key[order]
-    start = np.ones(len(ks), dtype=bool)
-    start[1:] = ks[1:] != ks[:-1]
-    first = np.flatnonzero(start)
-    counts = np.diff(np.append(first, len(ks)))
-    return allr[order[first]], counts
+    simplices = np.asarray(simplices, dtype=np.int64)
+    keys, counts, integral = _ridge_counts(simplices, nv)
+    return _rows(keys, nv, simplices.shape[1] - 1, integral), counts
 
 
 def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
@@ -144,7 +227,7 @@ def validate_mesh(vertices, simplices) -> Mesh:
     if not np.issubdtype(v.dtype, np.number) or np.iscomplexobj(v):
         raise ValueError(f"vertices must be real numbers, got dtype {v.dtype}")
     v = v.astype(np.float64, copy=False)
-    if not np.all(np.isfinite(v)):
+    if not np.isfinite(v).all():
         bad = int(np.flatnonzero(~np.all(np.isfinite(v), axis=1))[0])
         raise ValueError(f"vertex {bad} has a NaN or infinite coordinate: {v[bad].tolist()}")
     nv, d = v.shape
@@ -168,18 +251,23 @@ def validate_mesh(vertices, simplices) -> Mesh:
     if lo < 0 or hi >= nv:
         bad = int(np.flatnonzero(np.any((s < 0) | (s >= nv), axis=1))[0])
         raise ValueError(f"simplex {bad} {s[bad].tolist()} has a vertex index outside 0..{nv - 1}")
-    ss = np.sort(s, axis=1)
-    rep = np.any(ss[:, 1:] == ss[:, :-1], axis=1)
+    if d == 3:
+        rep = (s[:, 0] == s[:, 1]) | (s[:, 1] == s[:, 2]) | (s[:, 0] == s[:, 2])
+    else:
+        ss = np.sort(s, axis=1)
+        rep = np.any(ss[:, 1:] == ss[:, :-1], axis=1)
     if rep.any():
         bad = int(np.flatnonzero(rep)[0])
         raise ValueError(f"simplex {bad} {s[bad].tolist()} has a repeated vertex")
     n = d - 1
-    areas = simplex_hyperareas(v, s)
-    p = v[s]
+    tri = None
     if n == 2:
-        e = p[:, [1, 2, 0]] - p
-        longest = np.sqrt(np.einsum("mia,mia->mi", e, e).max(axis=1))
+        tri = triangle_geometry(v, s)
+        areas = 0.5 * tri.twice_area
+        longest = np.sqrt(np.maximum(np.maximum(tri.edge_sq[0], tri.edge_sq[1]), tri.edge_sq[2]))
     else:
+        areas = simplex_hyperareas(v, s)
+        p = v[s]
         diff = p[:, :, None, :] - p[:, None, :, :]
         longest = np.sqrt(np.einsum("mija,mija->mij", diff, diff).max(axis=(1, 2)))
     degenerate = areas <= DEGENERATE_RTOL * longest**n
@@ -189,18 +277,27 @@ def validate_mesh(vertices, simplices) -> Mesh:
             f"simplex {bad} {s[bad].tolist()} is degenerate (hyperarea {areas[bad]:.3g}); "
             f"{int(degenerate.sum())} degenerate simplices in all"
         )
-    r, counts = ridges(s, nv)
-    if counts.max() > 2:
+    key, integral = _ridge_keys(s, nv)
+    ks = np.sort(key)
+    eq = ks[1:] == ks[:-1]  # a ridge in k simplices gives a run of k equal keys
+    triple = eq[1:] & eq[:-1]
+    if triple.any():
+        keys, counts, _ = _ridge_counts(s, nv)
         k = int(np.argmax(counts))
+        ridge = _rows(keys[k : k + 1], nv, n, integral)[0]
         raise ValueError(
-            f"non-manifold ridge {tuple(int(x) for x in r[k])}: it lies in {int(counts[k])} top simplices "
+            f"non-manifold ridge {tuple(int(x) for x in ridge)}: it lies in {int(counts[k])} top simplices "
             f"(at most 2 allowed); {int((counts > 2).sum())} such ridges in all"
         )
+    single = np.ones(len(ks), dtype=bool)
+    single[1:] &= ~eq
+    single[:-1] &= ~eq
     boundary = np.zeros(nv, dtype=bool)
-    boundary[r[counts == 1].ravel()] = True
+    if single.any():
+        boundary[_rows(ks[single], nv, n, integral).ravel()] = True
     isolated = np.ones(nv, dtype=bool)
     isolated[s.ravel()] = False
-    return Mesh(v, s, areas, boundary, isolated)
+    return Mesh(v, s, areas, boundary, isolated, tri)
 
 
 def check_orientation(simplices: np.ndarray) -> None:

@@ -1,0 +1,200 @@
+"""Construction of the complexes of §2.1.2: thesis_lib against GUDHI, time and peak memory as ratios.
+
+Usage: ``python benchmarks/bench_complexes.py [--quick] [--repeat N]``.
+
+Every (case, tool) runs in its own subprocess so that the resident-set high-water mark
+(``resource.getrusage``) belongs to that tool alone: build the input, warm up on a small input
+(numba compilation excluded), read the RSS mark (``base_mb``), time the construction (best of
+``--repeat``), read the mark again; ``work_mb = peak - base`` is what the construction added.
+
+Pairs compared (same input for both tools):
+
+* rips — ``rips(points, ε, 2)`` vs ``RipsComplex(max_edge_length=2ε).create_simplex_tree(2)``; the
+  thesis case is two circles with 100 points each, ε <= 2 (1,333,500 simplices).
+* alpha — ``alpha(points)`` vs ``AlphaComplex(points).create_simplex_tree()`` (default precision).
+* alpha-weighted — the same with weights.
+* witness — ``witness(points, landmarks, inf, 3)`` (thesis rule) vs
+  ``EuclideanStrongWitnessComplex(...).create_simplex_tree(inf, 3)`` (GUDHI's strong witness rule with
+  squared distances): both give every simplex up to dimension 3 on the landmarks, so the work is
+  the same size; values differ by definition (see ``thesis_lib.complexes.witness``).
+* cech — GUDHI's Python API has no Čech complex; the reference is its Delaunay–Čech complex on the
+  same points (a different, smaller complex with the same miniball values).  Read that ratio as
+  context, not as a like-for-like comparison.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import resource
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+CASES = {
+    "rips-two-circles-20": {"kind": "rips", "data": ("two_circles", 20), "eps": 2.0, "max_dim": 2},
+    "rips-two-circles-60": {"kind": "rips", "data": ("two_circles", 60), "eps": 2.0, "max_dim": 2},
+    "rips-two-circles-100": {"kind": "rips", "data": ("two_circles", 100), "eps": 2.0, "max_dim": 2},
+    "alpha-2d-1000": {"kind": "alpha", "data": ("uniform", 1000, 2)},
+    "alpha-2d-100000": {"kind": "alpha", "data": ("uniform", 100_000, 2)},
+    "alpha-3d-20000": {"kind": "alpha", "data": ("uniform", 20_000, 3)},
+    "alpha-weighted-2d-100000": {"kind": "alpha-weighted", "data": ("uniform", 100_000, 2)},
+    "witness-torus-20-30": {"kind": "witness", "data": ("flat_torus", 20), "landmarks": 30, "max_dim": 3},
+    "witness-torus-50-50": {"kind": "witness", "data": ("flat_torus", 50), "landmarks": 50, "max_dim": 3},
+    "cech-two-circles-20": {"kind": "cech", "data": ("two_circles", 20), "eps": 0.3, "max_dim": 2},
+    "cech-two-circles-100": {"kind": "cech", "data": ("two_circles", 100), "eps": 0.3, "max_dim": 2},
+}
+FULL = [
+    "rips-two-circles-60",
+    "rips-two-circles-100",
+    "alpha-2d-100000",
+    "alpha-3d-20000",
+    "alpha-weighted-2d-100000",
+    "witness-torus-50-50",
+    "cech-two-circles-100",
+]
+QUICK = ["rips-two-circles-20", "alpha-2d-1000", "witness-torus-20-30", "cech-two-circles-20"]
+
+
+def _points(case: dict):
+    import numpy as np
+
+    from thesis_lib.datasets import flat_torus, two_circles
+
+    kind = case["data"][0]
+    if kind == "two_circles":
+        return two_circles(case["data"][1], seed=0)
+    if kind == "flat_torus":
+        return flat_torus(case["data"][1], noise=0.02, seed=0)
+    _, n, dim = case["data"]
+    return np.random.default_rng(0).random((n, dim))
+
+
+def _rss_mb() -> float:
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+
+
+def worker(tool: str, name: str, repeat: int) -> dict:
+    import numpy as np
+
+    case = CASES[name]
+    pts = _points(case)
+    kind = case["kind"]
+    weights = np.random.default_rng(1).random(pts.shape[0]) * 1e-5 if kind == "alpha-weighted" else None
+    small = pts[: min(40, pts.shape[0])]
+    if tool == "ours":
+        from thesis_lib import complexes as cx
+
+        if kind == "rips":
+            build = lambda p: cx.rips(p, case["eps"], case["max_dim"])  # noqa: E731
+        elif kind == "cech":
+            build = lambda p: cx.cech(p, case["eps"], case["max_dim"])  # noqa: E731
+        elif kind.startswith("alpha"):
+            build = lambda p: cx.alpha(p, None if weights is None else weights[: p.shape[0]])  # noqa: E731
+        elif kind == "witness":
+            lm_all = cx.maxmin_landmarks(pts, case["landmarks"], seed=0)
+
+            def build(p):
+                lm = lm_all if p is pts else np.arange(5)
+                return cx.witness(p, lm, np.inf, case["max_dim"])
+        build(small)  # warm-up (numba compilation, cached on disk anyway)
+        run = lambda: build(pts)  # noqa: E731
+        count = lambda f: len(f)  # noqa: E731
+    elif tool == "gudhi":
+        import gudhi
+
+        if kind == "rips":
+            run = lambda: gudhi.RipsComplex(points=pts, max_edge_length=2 * case["eps"]).create_simplex_tree(  # noqa: E731
+                max_dimension=case["max_dim"]
+            )
+        elif kind == "cech":
+            run = lambda: gudhi.DelaunayCechComplex(points=pts).create_simplex_tree(  # noqa: E731
+                max_alpha_square=case["eps"] ** 2
+            )
+        elif kind.startswith("alpha"):
+            run = lambda: gudhi.AlphaComplex(points=pts, weights=weights).create_simplex_tree()  # noqa: E731
+        elif kind == "witness":
+            from thesis_lib.complexes import maxmin_landmarks
+
+            lm = maxmin_landmarks(pts, case["landmarks"], seed=0)
+            run = lambda: gudhi.EuclideanStrongWitnessComplex(  # noqa: E731
+                landmarks=pts[lm], witnesses=pts
+            ).create_simplex_tree(max_alpha_square=float("inf"), limit_dimension=case["max_dim"])
+        count = lambda s: s.num_simplices()  # noqa: E731
+    else:
+        raise ValueError(f"unknown tool {tool!r}")
+    base = _rss_mb()
+    best = float("inf")
+    n = None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = run()
+        best = min(best, time.perf_counter() - t0)
+        n = count(out)
+        del out
+    peak = _rss_mb()
+    return {"time_s": best, "base_mb": base, "peak_mb": peak, "work_mb": peak - base, "n_simplices": n}
+
+
+def run_case(tool: str, name: str, repeat: int) -> dict:
+    cmd = [sys.executable, str(Path(__file__).resolve()), "--worker", tool, name, "--repeat", str(repeat)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    if proc.returncode != 0:
+        raise RuntimeError(f"{tool} on {name} failed:\n{proc.stderr}")
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def main(argv: list[str] | None = None) -> list[dict]:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="small cases only (smoke test)")
+    ap.add_argument("--repeat", type=int, default=None, help="timed runs per case (best is kept)")
+    ap.add_argument("--worker", nargs=2, metavar=("TOOL", "CASE"), help=argparse.SUPPRESS)
+    args = ap.parse_args(argv)
+    repeat = args.repeat or (2 if args.quick else 5)
+    if args.worker:
+        print(json.dumps(worker(args.worker[0], args.worker[1], repeat)))
+        return []
+    rows = []
+    names = QUICK if args.quick else FULL
+    print("| case | simplices (ours / GUDHI) | ours s | GUDHI s | time ratio | ours MB | GUDHI MB | memory ratio |")
+    print("|---|---|---|---|---|---|---|---|")
+    for name in names:
+        ours = run_case("ours", name, repeat)
+        ref = run_case("gudhi", name, repeat)
+        row = {
+            "case": name,
+            "kind": CASES[name]["kind"],
+            "ours_s": ours["time_s"],
+            "ref_s": ref["time_s"],
+            "ratio": ours["time_s"] / ref["time_s"],
+            "ours_mb": ours["work_mb"],
+            "ref_mb": ref["work_mb"],
+            "mem_ratio": ours["work_mb"] / ref["work_mb"] if ref["work_mb"] > 0 else None,
+            "ours_peak_mb": ours["peak_mb"],
+            "ref_peak_mb": ref["peak_mb"],
+            "ours_simplices": ours["n_simplices"],
+            "ref_simplices": ref["n_simplices"],
+            "reference": "gudhi " + ("DelaunayCechComplex (different complex)" if CASES[name]["kind"] == "cech" else
+                                     "EuclideanStrongWitnessComplex (squared rule)" if CASES[name]["kind"] == "witness"
+                                     else "same complex"),
+            "repeat": repeat,
+        }
+        rows.append(row)
+        mr = "n/a" if row["mem_ratio"] is None else f"{row['mem_ratio']:.2f}"
+        print(
+            f"| {name} | {row['ours_simplices']} / {row['ref_simplices']} | {row['ours_s']:.4f} | "
+            f"{row['ref_s']:.4f} | {row['ratio']:.2f} | {row['ours_mb']:.1f} | {row['ref_mb']:.1f} | {mr} |",
+            flush=True,
+        )
+    out = HERE / "results" / ("complexes_quick.json" if args.quick else "complexes.json")
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(rows, indent=1) + "\n")
+    print(f"wrote {out}")
+    return rows
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,131 @@
+"""The Crust algorithm [ABK98] and ball pivoting on sampled surfaces."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from thesis_lib.curvature import mean_curvature
+from thesis_lib.curvature.exact import torus_uv
+from thesis_lib.meshes import (
+    ball_pivoting,
+    crust,
+    crust_candidates,
+    estimate_normals,
+    euler_characteristic,
+    extract_manifold,
+    facet_degrees,
+    poles,
+    sample_sphere,
+    sample_torus,
+)
+
+
+def _coherent(f):
+    e = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
+    # every directed edge once, and its reverse present
+    s = {tuple(x) for x in e.tolist()}
+    return len(s) == len(e) and all((b, a) in s for a, b in s)
+
+
+def _torus_normals(pts, R=10.0, r=5.0):
+    u, v = torus_uv(pts, R, r)
+    return np.column_stack([np.cos(u) * np.cos(v), np.sin(u) * np.cos(v), np.sin(v)])
+
+
+@pytest.fixture(scope="module")
+def torus3000():
+    pts = sample_torus(3000, 10.0, 5.0, seed=11)
+    return pts, crust(pts)
+
+
+def test_crust_closes_the_torus(torus3000):
+    pts, f = torus3000
+    assert np.all(facet_degrees(f) == 2)  # every edge in exactly two faces
+    assert euler_characteristic(f) == 0  # genus one
+    assert len(np.unique(f)) == len(pts)  # every sample used
+    assert len(f) == 2 * len(pts)  # V - E + F = 0 with 3F = 2E
+    assert _coherent(f)
+    p = pts[f]
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    nrm /= np.linalg.norm(nrm, axis=1, keepdims=True)
+    exact = _torus_normals(p.mean(axis=1))
+    cos = np.einsum("ij,ij->i", nrm, exact)
+    assert np.all(cos > 0)  # oriented outward
+    assert np.median(cos) > 0.98
+
+
+def test_crust_mesh_feeds_curvature(torus3000):
+    pts, f = torus3000
+    H = mean_curvature(pts, f, area="mixed")
+    assert np.all(np.isfinite(H))
+    assert 0.05 < np.median(H) < 0.2  # |H| of the torus lies in [0, 0.1333]
+
+
+def test_poles_lie_along_normals():
+    pts = sample_torus(2000, 10.0, 5.0, seed=5)
+    pp, pm = poles(pts)
+    nrm = _torus_normals(pts)
+    for q in (pp, pm):
+        d = q - pts
+        cos = np.abs(np.einsum("ij,ij->i", d, nrm)) / np.linalg.norm(d, axis=1)
+        assert np.median(cos) > 0.95
+    # one of the two poles lies inside the tube, near the core circle (the inner medial axis)
+    inner = np.where(np.einsum("ij,ij->i", pp - pts, nrm)[:, None] < 0, pp, pm)
+    core = np.hypot(np.hypot(inner[:, 0], inner[:, 1]) - 10, inner[:, 2])
+    assert np.median(core) < 1.0
+
+
+def test_crust_on_sphere():
+    pts = sample_sphere(1500, 3, 2.0, seed=2)
+    f = crust(pts)
+    assert np.all(facet_degrees(f) == 2) and euler_characteristic(f) == 2
+    p = pts[f]
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert np.all(np.einsum("ij,ij->i", nrm, p.mean(axis=1)) > 0)
+
+
+@settings(deadline=None, max_examples=4)
+@given(st.integers(0, 10**6))
+def test_crust_torus_random_seeds(seed):
+    pts = sample_torus(2000, 10.0, 5.0, seed=seed)
+    f = crust(pts)
+    deg = facet_degrees(f)
+    assert deg.max() <= 2  # always a pseudo-manifold with boundary at worst
+    assert np.all(deg == 2) and euler_characteristic(f) == 0
+
+
+def test_sparse_sample_falls_back_to_untrimmed_walk():
+    pts = sample_torus(100, 10.0, 5.0, seed=1)
+    f = crust(pts)
+    assert len(f) > 0 and facet_degrees(f).max() <= 2
+    with pytest.raises(ValueError, match="too sparse"):
+        extract_manifold(pts, crust_candidates(pts))
+
+
+def test_ball_pivoting_reference():
+    pts = sample_sphere(1000, 3, 1.0, seed=0)
+    n = estimate_normals(pts)
+    assert np.all(np.einsum("ij,ij->i", n, pts) > 0.9)
+    f = ball_pivoting(pts, n)
+    assert f.shape[1] == 3 and f.min() >= 0 and f.max() < len(pts)
+    p = pts[f]
+    assert np.allclose(np.linalg.norm(p, axis=2), 1.0)
+    assert len(f) > 1700 and facet_degrees(f).max() <= 2
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="R³"):
+        crust(np.random.default_rng(0).normal(size=(20, 2)))
+    with pytest.raises(ValueError, match="duplicate"):
+        crust(np.vstack([np.eye(3), np.eye(3), [[1, 1, 1]]]))
+    with pytest.raises(ValueError, match="NaN"):
+        crust(np.array([[np.nan, 0, 0]] + [[i, i * i, 1.0] for i in range(6)]))
+    with pytest.raises(ValueError, match="theta"):
+        crust_candidates(sample_sphere(50, 3), theta=2.0)
+    with pytest.raises(ValueError, match="triangles"):
+        extract_manifold(np.eye(3), np.zeros((0, 3), dtype=int))
+    with pytest.raises(ValueError, match="normals"):
+        ball_pivoting(sample_sphere(50, 3), normals=np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="radii"):
+        ball_pivoting(sample_sphere(50, 3), radii=[-1.0])

@@ -1,0 +1,113 @@
+"""Exact references of §3.4: torus, hypersphere, n-catenoid (thesis_lib.curvature.exact)."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from thesis_lib.curvature.exact import (
+    catenoid_mean_curvature,
+    catenoid_point,
+    catenoid_principal_curvatures,
+    hypersphere_mean_curvature,
+    hypersphere_point,
+    hypersurface_normal,
+    parametric_shape_operator,
+    torus_gaussian_curvature,
+    torus_gaussian_curvature_at,
+    torus_mean_curvature,
+    torus_mean_curvature_at,
+    torus_point,
+    torus_principal_curvatures,
+    torus_shape_operator,
+    torus_uv,
+)
+
+angle = st.floats(0, 2 * np.pi, allow_nan=False)
+
+
+def test_torus_values_at_known_points():
+    R, r = 10.0, 5.0
+    # outer equator v = 0: κ = -1/15, -1/5; inner equator v = π: κ = +1/5, -1/5
+    assert np.allclose(torus_principal_curvatures(0.0, 0.0, R, r), [-0.2, -1 / 15])
+    assert np.isclose(torus_mean_curvature(0.0, 0.0, R, r), -(1 / 15 + 1 / 5) / 2)
+    assert np.isclose(torus_gaussian_curvature(0.0, 0.0, R, r), 1 / 75)
+    assert np.isclose(torus_mean_curvature(1.0, np.pi, R, r), 0.0)  # R + 2r cos v = 0
+    assert np.isclose(torus_gaussian_curvature(1.0, np.pi / 2, R, r), 0.0)
+    assert np.allclose(torus_point(0.0, 0.0, R, r), [15, 0, 0])
+
+
+@settings(deadline=None, max_examples=25)
+@given(u=angle, v=angle)
+def test_torus_closed_forms_match_trace_det_and_numerics(u, v):
+    R, r = 10.0, 5.0
+    S = torus_shape_operator(u, v, R, r)
+    assert np.isclose(np.trace(S) / 2, torus_mean_curvature(u, v, R, r))
+    assert np.isclose(np.linalg.det(S), torus_gaussian_curvature(u, v, R, r))
+    Sn = parametric_shape_operator(lambda w: torus_point(w[..., 0], w[..., 1], R, r), np.array([u, v]))
+    assert np.allclose(Sn, S, atol=1e-6)
+    uu, vv = torus_uv(torus_point(u, v, R, r), R, r)
+    assert np.isclose(np.cos(uu), np.cos(u)) and np.isclose(np.sin(vv), np.sin(v), atol=1e-12)
+    assert np.isclose(torus_mean_curvature_at(torus_point(u, v, R, r), R, r), torus_mean_curvature(u, v, R, r))
+    assert np.isclose(
+        torus_gaussian_curvature_at(torus_point(u, v, R, r), R, r), torus_gaussian_curvature(u, v, R, r)
+    )
+
+
+def test_torus_gauss_bonnet_numerically():
+    # ∫ K dA = 2πχ = 0, dA = r (R + r cos v) du dv
+    R, r = 10.0, 5.0
+    v = np.linspace(0, 2 * np.pi, 2001)[:-1]
+    integrand = torus_gaussian_curvature(0.0, v, R, r) * r * (R + r * np.cos(v))
+    assert abs(integrand.sum() * (2 * np.pi / 2000) * 2 * np.pi) < 1e-10
+
+
+def test_hypersphere_points_and_curvature():
+    w = np.random.default_rng(0).uniform(0, np.pi, (50, 3))
+    x = hypersphere_point(w, 2.0)
+    assert np.allclose(np.linalg.norm(x, axis=1), 2.0)
+    assert np.allclose(hypersphere_point(np.array([0.0, 1.0, 2.0]), 2.0), [2, 0, 0, 0])
+    S = parametric_shape_operator(lambda a: hypersphere_point(a, 2.0), np.array([0.7, 1.1, 0.3]))
+    assert np.allclose(np.abs(np.diag(S)), 0.5, atol=1e-6)
+    assert hypersphere_mean_curvature(2.0) == 0.5
+
+
+@pytest.mark.parametrize("n", [2, 3, 4])
+def test_catenoid_is_minimal(n):
+    w = np.random.default_rng(n).uniform(-1, 1, (5, n))
+    assert np.allclose(catenoid_mean_curvature(w), 0.0)
+    for p in w:
+        S = parametric_shape_operator(catenoid_point, p)
+        k = catenoid_principal_curvatures(p)
+        sign = 1.0 if n == 2 else np.sign(S[0, 0] * k[0])  # orientation of N depends on n
+        assert np.allclose(np.diag(S), sign * k, atol=1e-6)
+        assert np.allclose(S - np.diag(np.diag(S)), 0, atol=1e-6)
+        assert abs(np.trace(S)) < 1e-6
+
+
+def test_normal_matches_cross_product_and_orientation():
+    J = np.random.default_rng(1).normal(size=(10, 3, 2))
+    N = hypersurface_normal(J)
+    c = np.cross(J[:, :, 0], J[:, :, 1])
+    assert np.allclose(N, c / np.linalg.norm(c, axis=1, keepdims=True))
+    J4 = np.random.default_rng(2).normal(size=(10, 4, 3))
+    N4 = hypersurface_normal(J4)
+    assert np.allclose(np.einsum("mki,mk->mi", J4, N4), 0, atol=1e-12)
+    assert np.all(np.linalg.det(np.concatenate([J4, N4[..., None]], axis=2)) > 0)
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="0 < r < R"):
+        torus_point(0, 0, R=5, r=5)
+    with pytest.raises(ValueError, match="NaN"):
+        torus_mean_curvature(np.nan, 0.0)
+    with pytest.raises(ValueError, match="shape"):
+        torus_uv(np.zeros((4, 2)))
+    with pytest.raises(ValueError, match="radius"):
+        hypersphere_point([0.1, 0.2], radius=-1)
+    with pytest.raises(ValueError, match="n >= 2"):
+        catenoid_point(np.zeros((3, 1)))
+    with pytest.raises(ValueError, match="regular"):
+        hypersurface_normal(np.zeros((3, 2)))
+    with pytest.raises(ValueError, match="shape"):
+        hypersurface_normal(np.zeros((3, 3)))

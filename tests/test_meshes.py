@@ -1,0 +1,207 @@
+"""Triangulations of chapter 3: torus grid, Freudenthal subdivisions, convex hulls, samplers, stencil."""
+
+from math import factorial
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from thesis_lib import datasets
+from thesis_lib.curvature import simplex_hyperareas
+from thesis_lib.curvature.exact import catenoid_point, hypersphere_point, torus_uv
+from thesis_lib.meshes import (
+    catenoid_freudenthal,
+    convex_hull_surface,
+    cross_stars,
+    euler_characteristic,
+    facet_degrees,
+    freudenthal,
+    grid_parameters,
+    hypersphere_freudenthal,
+    is_closed_pseudomanifold,
+    merge_coincident,
+    neighbour_grid_mean_curvature,
+    sample_catenoid,
+    sample_sphere,
+    sample_torus,
+    sphere_hull,
+    torus_chosen_points,
+    torus_grid,
+)
+
+
+def _signed_volumes(params, simplices):
+    p = params[simplices]
+    return np.linalg.det(p[:, 1:] - p[:, :1])
+
+
+def test_torus_grid_is_closed_genus_one_and_outward():
+    v, f = torus_grid(20, 10.0, 5.0)
+    assert v.shape == (400, 3) and f.shape == (800, 3)
+    assert euler_characteristic(f) == 0 and is_closed_pseudomanifold(f)
+    assert np.allclose(v[0], [15, 0, 0]) and np.allclose(v[1], [10 + 5 * np.cos(np.pi / 10), 0, 5 * np.sin(np.pi / 10)])
+    p = v[f]
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    c = p.mean(axis=1)
+    ring = c.copy()
+    ring[:, 2] = 0
+    ring *= 10 / np.linalg.norm(ring, axis=1, keepdims=True)  # centre of the tube
+    assert np.all(np.einsum("ij,ij->i", nrm, c - ring) > 0)
+    assert datasets.torus_grid is torus_grid
+
+
+def test_chosen_points_epsilon():
+    v, f, uv = torus_chosen_points(np.pi / 50)
+    assert len(v) == 100 * 100 and np.isclose(uv[1, 1], np.pi / 50)
+    with pytest.raises(ValueError, match="integer"):
+        torus_chosen_points(0.3)
+
+
+@pytest.mark.parametrize("shape,periodic", [((3, 4), False), ((4, 3, 3), False), ((5, 3), (True, False)),
+                                            ((3, 3, 3, 3), False), ((4, 5, 3), (False, True, False))])
+def test_freudenthal_tiles_the_box(shape, periodic):
+    s = freudenthal(shape, periodic)
+    n = len(shape)
+    per = (periodic,) * n if isinstance(periodic, bool) else periodic
+    cells = np.prod([m if p else m - 1 for m, p in zip(shape, per)])
+    assert s.shape == (factorial(n) * cells, n + 1)
+    assert len(np.unique(np.sort(s, axis=1), axis=0)) == len(s)
+    if not any(per):
+        params = grid_parameters(*[np.arange(m, dtype=float) for m in shape])
+        vol = _signed_volumes(params, s)
+        assert np.all(vol > 0)  # positively oriented
+        assert np.isclose(vol.sum() / factorial(n), np.prod([m - 1 for m in shape]))  # tiles the box
+        deg = facet_degrees(s)
+        assert set(np.unique(deg)) <= {1, 2}
+
+
+@settings(deadline=None, max_examples=10)
+@given(st.lists(st.integers(3, 5), min_size=2, max_size=3))
+def test_freudenthal_periodic_torus_is_closed(shape):
+    s = freudenthal(tuple(shape), periodic=True)
+    assert is_closed_pseudomanifold(s)
+    assert euler_characteristic(s) == 0  # the n-torus
+
+
+@pytest.mark.parametrize("n,k", [(2, 12), (3, 8)])
+def test_hypersphere_freudenthal_is_a_closed_sphere(n, k):
+    v, s, params = hypersphere_freudenthal(np.pi / k, 2.0, n)
+    assert is_closed_pseudomanifold(s)
+    assert euler_characteristic(s) == 1 + (-1) ** n
+    assert np.allclose(np.linalg.norm(v, axis=1), 2.0)
+    assert np.allclose(hypersphere_point(params, 2.0), v)
+    vol = simplex_hyperareas(v, s).sum()
+    exact = {2: 4 * np.pi * 4, 3: 2 * np.pi**2 * 8}[n]
+    assert 0.9 * exact < vol < exact
+    assert _coherently_oriented(s)
+
+
+def _coherently_oriented(s):
+    """Each ridge must appear with opposite induced orientations in its two simplices."""
+    keys, signs = [], []
+    n1 = s.shape[1]
+    for i in range(n1):
+        r = np.delete(s, i, axis=1)
+        inv = sum((r[:, a] > r[:, b]).astype(int) for a in range(n1 - 1) for b in range(a + 1, n1 - 1))
+        keys.append(np.sort(r, axis=1))
+        signs.append((-1) ** i * (-1) ** inv)
+    keys = np.concatenate(keys)
+    signs = np.concatenate(signs)
+    _, inverse = np.unique(keys, axis=0, return_inverse=True)
+    return bool(np.all(np.bincount(inverse.ravel(), weights=signs) == 0))
+
+
+def test_orientation_helper():
+    v, f = torus_grid(6)
+    assert _coherently_oriented(f)
+    f2 = f.copy()
+    f2[0, [0, 1]] = f2[0, [1, 0]]
+    assert not _coherently_oriented(f2)
+
+
+def test_catenoid_freudenthal_piece():
+    v, s, params = catenoid_freudenthal(0.1, n=3, v_range=(-1, 1), w_range=(-1, 1))
+    assert v.shape[1] == 4 and s.shape[1] == 4
+    assert euler_characteristic(s) == 0  # annulus × interval
+    assert np.allclose(catenoid_point(params), v)
+    assert set(np.unique(facet_degrees(s))) == {1, 2}
+    with pytest.raises(ValueError, match="integer"):
+        catenoid_freudenthal(0.3, v_range=(-1, 1))
+
+
+def test_merge_coincident_drops_degenerate():
+    v = np.array([[0.0, 0], [1, 0], [1, 1e-12], [0, 1]])
+    s = np.array([[0, 1, 3], [0, 2, 3], [0, 1, 2]])
+    v2, s2, kept = merge_coincident(v, s, tol=1e-9)
+    assert len(v2) == 3 and list(kept) == [0, 1, 3]
+    assert s2.tolist() == [[0, 1, 2]]
+
+
+@pytest.mark.parametrize("d", [3, 4, 5])
+def test_sphere_hull(d):
+    pts, s = sphere_hull(d, 200, seed=d)
+    assert np.allclose(np.linalg.norm(pts, axis=1), 1)
+    assert is_closed_pseudomanifold(s)
+    assert euler_characteristic(s) == 1 + (-1) ** (d - 1)
+    assert _coherently_oriented(s)
+    p = pts[s]
+    mat = np.concatenate([p[:, 1:] - p[:, :1], p[:, :1]], axis=1)
+    assert np.all(np.linalg.det(mat) > 0)  # outward
+
+
+def test_samplers_are_uniform_in_area():
+    pts, uv = sample_torus(20000, 10.0, 5.0, seed=3, return_uv=True)
+    assert pts.shape == (20000, 3)
+    assert np.allclose(np.hypot(np.hypot(pts[:, 0], pts[:, 1]) - 10, pts[:, 2]), 5)
+    # density of v is (R + r cos v) / (2π R): P(cos v > 0) = 1/2 + r/(πR)
+    frac = np.mean(np.cos(uv[:, 1]) > 0)
+    assert abs(frac - (0.5 + 5 / (10 * np.pi))) < 0.015
+    u, v = torus_uv(pts)
+    assert np.allclose(np.cos(v), np.cos(uv[:, 1]))
+    assert np.array_equal(sample_torus(50, seed=1), sample_torus(50, seed=1))
+    c = sample_catenoid(5000, (-1, 1), seed=0)
+    assert np.allclose(np.hypot(c[:, 0], c[:, 1]), np.cosh(c[:, 2]))
+    s = sample_sphere(100, 4, 2.0, seed=0)
+    assert np.allclose(np.linalg.norm(s, axis=1), 2.0)
+
+
+def test_cross_star_stencil():
+    w = np.array([[0.5, 0.7, 1.0]])
+    v, s, c = cross_stars(lambda a: hypersphere_point(a, 2.0), w, 0.1)
+    assert v.shape == (7, 4) and s.shape == (8, 4) and c.tolist() == [0]
+    eps = np.pi / 50
+    P = grid_parameters(eps * np.arange(5, 45, 10), eps * np.arange(5, 45, 10), eps * np.arange(0, 100, 25))
+    H = neighbour_grid_mean_curvature(lambda a: hypersphere_point(a, 2.0), P, eps)
+    assert np.allclose(H, 0.5, rtol=3e-3)
+    Hc = neighbour_grid_mean_curvature(catenoid_point, np.array([[0.0, 0.0, 0.0], [1.0, -0.9, 0.5]]), 0.05)
+    assert np.all(Hc < 2e-4)
+    # the surface case: |H| of the torus from the 4-neighbour star
+    from thesis_lib.curvature.exact import torus_mean_curvature, torus_point
+
+    uv = np.array([[0.3, 0.4], [1.0, 2.0]])
+    Ht = neighbour_grid_mean_curvature(lambda a: torus_point(a[:, 0], a[:, 1]), uv, 0.01)
+    assert np.allclose(Ht, np.abs(torus_mean_curvature(uv[:, 0], uv[:, 1])), rtol=1e-3)
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="n must be"):
+        torus_grid(2)
+    with pytest.raises(ValueError, match="grid size"):
+        freudenthal((1, 4))
+    with pytest.raises(ValueError, match="periodic"):
+        freudenthal((3, 3), periodic=(True,))
+    with pytest.raises(ValueError, match="positive integer"):
+        sample_torus(0)
+    with pytest.raises(ValueError, match="0 < r < R"):
+        sample_torus(10, R=1, r=2)
+    with pytest.raises(ValueError, match="epsilon"):
+        hypersphere_freudenthal(-1.0)
+    with pytest.raises(ValueError, match="π/epsilon"):
+        hypersphere_freudenthal(0.3)
+    with pytest.raises(ValueError, match="duplicate"):
+        convex_hull_surface(np.vstack([np.eye(3), np.eye(3)[:1], [[0, 0, 0]]]))
+    with pytest.raises(ValueError, match="epsilon"):
+        cross_stars(lambda a: a, np.zeros((2, 2)), 0.0)
+    with pytest.raises(ValueError, match="interval"):
+        sample_catenoid(10, (1, -1))

@@ -1,0 +1,193 @@
+"""Smallest enclosing ball of a point set in any dimension (thesis §2.1.2, the Miniball Algorithm).
+
+Two independent implementations:
+
+* :func:`smallest_enclosing_ball` — Welzl's randomised algorithm in Gärtner's move-to-front form
+  ([Gär99]); recursion only on the support set (depth <= d + 2) and a vectorised scan for the first
+  point outside the current ball, so it runs on large point sets.
+* :func:`meb_radius_small` (numba) — for the few vertices of one simplex: the smallest ball is the
+  circumscribed ball, within the affine hull, of some subset of the points, so the radius is the
+  smallest such circumradius whose ball contains every point.  Used by the Čech complex.
+"""
+
+from __future__ import annotations
+
+import numba
+import numpy as np
+
+from ..points import as_points
+
+__all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
+
+
+def circumball(support: np.ndarray) -> tuple[np.ndarray, float]:
+    """Centre and squared radius of the smallest ball with all of ``support`` on its boundary.
+
+    Thesis: §2.1.2 (balls B(x, ε) of the Čech complex); the centre lies in the affine hull.
+    """
+    support = np.asarray(support, dtype=np.float64)
+    p0 = support[0]
+    if support.shape[0] == 1:
+        return p0.copy(), 0.0
+    a = support[1:] - p0
+    gram = 2.0 * a @ a.T
+    rhs = np.einsum("ij,ij->i", a, a)
+    try:
+        lam = np.linalg.solve(gram, rhs)
+    except np.linalg.LinAlgError:
+        lam = np.linalg.lstsq(gram, rhs, rcond=None)[0]
+    centre = p0 + lam @ a
+    return centre, float(np.sum((centre - p0) ** 2))
+
+
+def _mtf(points: np.ndarray, end: int, support: list[np.ndarray], dim: int, tol: float):
+    if support:
+        centre, r2 = circumball(np.array(support))
+    else:
+        centre, r2 = points[0].copy(), -1.0
+    if len(support) == dim + 1:
+        return centre, r2
+    i = 0
+    while i < end:
+        d2 = np.einsum("ij,ij->i", points[i:end] - centre, points[i:end] - centre)
+        outside = np.flatnonzero(d2 > r2 + tol)
+        if outside.size == 0:
+            break
+        j = i + int(outside[0])
+        p = points[j].copy()
+        centre, r2 = _mtf(points, j, support + [p], dim, tol)
+        # move-to-front: the violating point goes first, the ones before it shift by one
+        points[1 : j + 1] = points[0:j].copy()
+        points[0] = p
+        i = j + 1
+    return centre, r2
+
+
+def smallest_enclosing_ball(points, seed: int = 0) -> tuple[np.ndarray, float]:
+    """Centre and radius of the smallest closed ball containing ``points`` (any dimension).
+
+    Thesis: §2.1.2, the Miniball Algorithm [Gär99] deciding membership in C(X, ε) (Definition 2.9).
+
+    Parameters
+    ----------
+    points : (n, d) array, n >= 1, finite.
+    seed : seed of the random permutation (expected linear time); the ball does not depend on it.
+    """
+    pts = as_points(points)
+    n, dim = pts.shape
+    order = np.random.default_rng(seed).permutation(n)
+    work = pts[order].copy()
+    scale = float(np.max(np.abs(work - work[0]))) if n > 1 else 0.0
+    tol = 1e-12 * max(scale, 1e-300) ** 2
+    centre, r2 = _mtf(work, n, [], dim, tol)
+    return centre, float(np.sqrt(max(r2, 0.0)))
+
+
+@numba.njit(cache=True)
+def _solve_small(a, b, k):
+    """Gaussian elimination with partial pivoting on the leading k x k block; False if singular."""
+    m = a.copy()
+    x = b.copy()
+    scale = 0.0
+    for i in range(k):
+        for j in range(k):
+            scale = max(scale, abs(m[i, j]))
+    if scale == 0.0:
+        return x, False
+    for col in range(k):
+        piv = col
+        best = abs(m[col, col])
+        for r in range(col + 1, k):
+            if abs(m[r, col]) > best:
+                best = abs(m[r, col])
+                piv = r
+        if best <= 1e-13 * scale:
+            return x, False
+        if piv != col:
+            for j in range(k):
+                tmp = m[col, j]
+                m[col, j] = m[piv, j]
+                m[piv, j] = tmp
+            tmp = x[col]
+            x[col] = x[piv]
+            x[piv] = tmp
+        for r in range(col + 1, k):
+            f = m[r, col] / m[col, col]
+            for j in range(col, k):
+                m[r, j] -= f * m[col, j]
+            x[r] -= f * x[col]
+    for col in range(k - 1, -1, -1):
+        s = x[col]
+        for j in range(col + 1, k):
+            s -= m[col, j] * x[j]
+        x[col] = s / m[col, col]
+    return x, True
+
+
+@numba.njit(cache=True)
+def meb_radius_small(pts):
+    """Radius of the smallest enclosing ball of a few points (rows of ``pts``), by subset search.
+
+    Thesis: Definition 2.9 / Theorem 2.10 (the ball realising the Čech value of a simplex).
+    """
+    k, dim = pts.shape
+    if k == 1:
+        return 0.0
+    best = np.inf
+    scale = 0.0
+    for i in range(k):
+        for j in range(dim):
+            scale = max(scale, abs(pts[i, j] - pts[0, j]))
+    slack = 1e-12 * scale * scale
+    gram = np.empty((k, k))
+    rhs = np.empty(k)
+    centre = np.empty(dim)
+    sub = np.empty(k, dtype=np.int64)
+    for mask in range(1, 1 << k):
+        size = 0
+        for i in range(k):
+            if mask >> i & 1:
+                sub[size] = i
+                size += 1
+        if size == 1:
+            continue  # a single point encloses the others only if they coincide (radius 0 handled below)
+        p0 = sub[0]
+        for a in range(size - 1):
+            ia = sub[a + 1]
+            s = 0.0
+            for t in range(dim):
+                da = pts[ia, t] - pts[p0, t]
+                s += da * da
+            rhs[a] = s
+            for b in range(size - 1):
+                ib = sub[b + 1]
+                g = 0.0
+                for t in range(dim):
+                    g += (pts[ia, t] - pts[p0, t]) * (pts[ib, t] - pts[p0, t])
+                gram[a, b] = 2.0 * g
+        lam, ok = _solve_small(gram, rhs, size - 1)
+        if not ok:
+            continue
+        for t in range(dim):
+            c = pts[p0, t]
+            for a in range(size - 1):
+                c += lam[a] * (pts[sub[a + 1], t] - pts[p0, t])
+            centre[t] = c
+        r2 = 0.0
+        for t in range(dim):
+            r2 += (centre[t] - pts[p0, t]) ** 2
+        if r2 >= best:
+            continue
+        inside = True
+        for i in range(k):
+            d2 = 0.0
+            for t in range(dim):
+                d2 += (pts[i, t] - centre[t]) ** 2
+            if d2 > r2 + slack + 1e-12 * r2:
+                inside = False
+                break
+        if inside:
+            best = r2
+    if best == np.inf:
+        return 0.0  # all points coincide
+    return np.sqrt(best)

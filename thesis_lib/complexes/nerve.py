@@ -1,0 +1,51 @@
+"""The nerve of a finite cover (thesis Definition 2.7)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+
+__all__ = ["nerve"]
+
+
+def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[int, ...]]:
+    """Simplices J (index tuples into ``cover``) whose sets have a common element.
+
+    Thesis: Definition 2.7, N(U) = {J ⊆ I : ∩_{j∈J} U_j ≠ ∅} (the empty simplex is left out).
+
+    Parameters
+    ----------
+    cover : sequence of finite sets (any iterables of hashable elements); ``cover[i]`` is U_i.
+    max_dim : keep simplices of dimension <= max_dim (default: all).
+
+    Returns
+    -------
+    Ascending index tuples sorted by dimension, then lexicographically.  An empty U_i gives no vertex.
+    """
+    if isinstance(cover, (str, bytes)) or not hasattr(cover, "__len__"):
+        raise ValueError("cover must be a sequence of sets")
+    if max_dim is not None:
+        if isinstance(max_dim, bool) or not isinstance(max_dim, int) or max_dim < 0:
+            raise ValueError(f"max_dim must be an integer >= 0 or None, got {max_dim!r}")
+    sets: list[frozenset] = []
+    for i, u in enumerate(cover):
+        if isinstance(u, (str, bytes)) or not isinstance(u, Iterable):
+            raise ValueError(f"cover[{i}] is not a set of elements: {u!r}")
+        sets.append(frozenset(u))
+    limit = len(sets) if max_dim is None else max_dim + 1
+    # depth-first search carrying the running intersection: a set is a coface only if it meets it
+    out: list[tuple[int, ...]] = []
+
+    def grow(simplex: tuple[int, ...], common: frozenset) -> None:
+        out.append(simplex)
+        if len(simplex) >= limit:
+            return
+        for j in range(simplex[-1] + 1, len(sets)):
+            inter = common & sets[j]
+            if inter:
+                grow(simplex + (j,), inter)
+
+    for i, u in enumerate(sets):
+        if u:
+            grow((i,), u)
+    out.sort(key=lambda s: (len(s), s))
+    return out

@@ -1,0 +1,41 @@
+"""Discrete differential geometry of triangulated (hyper)surfaces: thesis chapter 3, §3.3.
+
+Vertices are ``(nv, n + 1)`` points of R^{n+1}; top simplices ``(m, n + 1)`` vertex indices of the
+n-simplices of the hypersurface (n = 2 is a triangle mesh).  Every function validates its input
+through :func:`validate_mesh` (one module, :mod:`.validate`).
+"""
+
+from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas
+from .gaussian import angle_defects, gaussian_curvature
+from .mean import mean_curvature, mean_curvature_vector, total_hyperarea
+from .shape import (
+    PrincipalCurvatures,
+    ShapeOperator,
+    normal_curvatures,
+    principal_curvatures,
+    shape_operator,
+    vertex_normals,
+)
+from .validate import boundary_vertices, check_orientation, simplex_hyperareas, validate_mesh
+
+__all__ = [
+    "AREA_KINDS",
+    "PrincipalCurvatures",
+    "ShapeOperator",
+    "angle_defects",
+    "boundary_vertices",
+    "check_orientation",
+    "circumcentric_fractions",
+    "gaussian_curvature",
+    "mean_curvature",
+    "mean_curvature_vector",
+    "normal_curvatures",
+    "principal_curvatures",
+    "shape_operator",
+    "simplex_hyperareas",
+    "total_hyperarea",
+    "validate_mesh",
+    "vertex_areas",
+    "vertex_normals",
+]
+from .exact import *  # noqa: F401,F403  (exact smooth references of §3.4)

@@ -1,0 +1,267 @@
+"""Exact curvature of the smooth (hyper)surfaces of §3.4: torus, 3-sphere, n-catenoid.
+
+Sign conventions follow the thesis: the normal is N = X_{u_1} ∧ ... ∧ X_{u_n} / W (eq. 3.9, for
+n = 2 the cross product X_u × X_v), the shape operator is S = -N_* (Definition 3.1, eq. 3.10),
+H = tr(S)/n and K = det(S) (Definitions 3.4 and 3.10).  The discrete estimates of
+:mod:`thesis_lib.curvature` give |H| = ||∇area|| / (n · area), to be compared with ``abs`` of the
+signed values returned here.
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+__all__ = [
+    "torus_point",
+    "torus_uv",
+    "torus_shape_operator",
+    "torus_principal_curvatures",
+    "torus_mean_curvature",
+    "torus_gaussian_curvature",
+    "torus_mean_curvature_at",
+    "torus_gaussian_curvature_at",
+    "hypersphere_point",
+    "hypersphere_mean_curvature",
+    "catenoid_point",
+    "catenoid_principal_curvatures",
+    "catenoid_mean_curvature",
+    "hypersurface_normal",
+    "parametric_shape_operator",
+]
+
+
+def _radii(R: float, r: float) -> tuple[float, float]:
+    R, r = float(R), float(r)
+    if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
+        raise ValueError(f"torus radii need 0 < r < R (finite), got R={R!r}, r={r!r}")
+    return R, r
+
+
+def _finite(name: str, x) -> np.ndarray:
+    arr = np.asarray(x, dtype=np.float64)
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} contains NaN or infinite values")
+    return arr
+
+
+# --------------------------------------------------------------------------------------- torus
+def torus_point(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Points X(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v) of the torus, shape (..., 3).
+
+    Thesis: §3.4.1 (parametrisation of the torus in R³).
+    """
+    R, r = _radii(R, r)
+    u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
+    rho = R + r * np.cos(v)
+    return np.stack([rho * np.cos(u), rho * np.sin(u), r * np.sin(v)], axis=-1)
+
+
+def torus_uv(points, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
+    """Parameters (u, v) in [0, 2π) of points on (or near) the torus: the nearest point's parameters.
+
+    Thesis: §3.4.1 (inverse of the torus parametrisation, used to compare estimates at samples).
+    """
+    _radii(R, r)
+    p = _finite("points", points)
+    if p.ndim < 1 or p.shape[-1] != 3:
+        raise ValueError(f"points must have shape (..., 3), got {p.shape}")
+    u = np.mod(np.arctan2(p[..., 1], p[..., 0]), 2 * np.pi)
+    v = np.mod(np.arctan2(p[..., 2], np.hypot(p[..., 0], p[..., 1]) - R), 2 * np.pi)
+    return u, v
+
+
+def torus_shape_operator(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Shape operator in the basis (X_u, X_v): diag(-cos v / (R + r cos v), -1/r), shape (..., 2, 2).
+
+    Thesis: §3.4.1 (S(X_u) = -cos v/(R + r cos v) X_u, S(X_v) = -X_v / r).
+    """
+    R, r = _radii(R, r)
+    u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
+    out = np.zeros(v.shape + (2, 2))
+    out[..., 0, 0] = -np.cos(v) / (R + r * np.cos(v))
+    out[..., 1, 1] = -1.0 / r
+    return out
+
+
+def torus_principal_curvatures(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Principal curvatures κ₁ ≤ κ₂ (eigenvalues of S), shape (..., 2).
+
+    Thesis: Definition 3.3 and §3.4.1.
+    """
+    S = torus_shape_operator(u, v, R, r)
+    k = np.stack([S[..., 0, 0], S[..., 1, 1]], axis=-1)
+    return np.sort(k, axis=-1)
+
+
+def torus_mean_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Signed mean curvature H = -(R + 2r cos v) / (2r (R + r cos v)) (outward normal).
+
+    Thesis: §3.4.1 (H = tr(S)/2, Definition 3.4).  Zero on the circle cos v = -R/(2r).
+    """
+    R, r = _radii(R, r)
+    u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
+    c = np.cos(v)
+    return -(R + 2 * r * c) / (2 * r * (R + r * c))
+
+
+def torus_gaussian_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Gaussian curvature K = cos v / (r (R + r cos v)).
+
+    Thesis: §3.4.1 (K = det S, Definition 3.4).  Zero on the circles v = ±π/2.
+    """
+    R, r = _radii(R, r)
+    u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
+    c = np.cos(v)
+    return c / (r * (R + r * c))
+
+
+def torus_mean_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Signed mean curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
+
+    Thesis: §3.4.1, Figure 3.11 (exact |H| at the sampled points).
+    """
+    return torus_mean_curvature(*torus_uv(points, R, r), R, r)
+
+
+def torus_gaussian_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Gaussian curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
+
+    Thesis: §3.4.1, Figures 3.6–3.7.
+    """
+    return torus_gaussian_curvature(*torus_uv(points, R, r), R, r)
+
+
+# ---------------------------------------------------------------------------------- hypersphere
+def hypersphere_point(angles, radius: float = 2.0) -> np.ndarray:
+    """Hyperspherical coordinates: angles (..., n) = (ψ₁, ..., ψ_{n-1}, φ) to points (..., n+1) on S^n(ρ).
+
+    x₁ = ρ cos ψ₁, x₂ = ρ sin ψ₁ cos ψ₂, ..., x_{n+1} = ρ sin ψ₁ ⋯ sin ψ_{n-1} sin φ; for n = 3 these are
+    the coordinates (ψ, θ, φ) of the thesis.  Thesis: §3.4.2 (parametrisation of the 3-sphere).
+    """
+    radius = float(radius)
+    if not np.isfinite(radius) or radius <= 0:
+        raise ValueError(f"radius must be a positive finite number, got {radius!r}")
+    a = _finite("angles", angles)
+    if a.ndim < 1 or a.shape[-1] < 1:
+        raise ValueError(f"angles must have shape (..., n) with n >= 1, got {a.shape}")
+    n = a.shape[-1]
+    out = np.empty(a.shape[:-1] + (n + 1,))
+    s = np.ones(a.shape[:-1])
+    for i in range(n):
+        out[..., i] = s * np.cos(a[..., i])
+        s = s * np.sin(a[..., i])
+    out[..., n] = s
+    return radius * out
+
+
+def hypersphere_mean_curvature(radius: float = 2.0, n: int = 3) -> float:
+    """|H| = 1/ρ of the n-sphere of radius ρ in R^{n+1} (every principal curvature is ±1/ρ).
+
+    Thesis: §3.4.2 (mean curvature of the 3-sphere equals 1/r).
+    """
+    radius = float(radius)
+    if not np.isfinite(radius) or radius <= 0:
+        raise ValueError(f"radius must be a positive finite number, got {radius!r}")
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"n must be a positive integer, got {n!r}")
+    return 1.0 / radius
+
+
+# ------------------------------------------------------------------------------------ catenoid
+def catenoid_point(params) -> np.ndarray:
+    """The n-catenoid (catenoid × R^{n-2}): params (..., n) = (u, v, w₁, ...) to (..., n+1).
+
+    X = (cosh v cos u, cosh v sin u, v, w₁, ..., w_{n-2}).  Thesis: §3.4.3 (the n-catenoid).
+    """
+    p = _finite("params", params)
+    if p.ndim < 1 or p.shape[-1] < 2:
+        raise ValueError(f"params must have shape (..., n) with n >= 2, got {p.shape}")
+    u, v = p[..., 0], p[..., 1]
+    ch = np.cosh(v)
+    return np.concatenate(
+        [np.stack([ch * np.cos(u), ch * np.sin(u), v], axis=-1), p[..., 2:]], axis=-1
+    )
+
+
+def catenoid_principal_curvatures(params) -> np.ndarray:
+    """Principal curvatures (-1/cosh² v, 1/cosh² v, 0, ..., 0) of the n-catenoid, shape (..., n).
+
+    Signs for N = X_u × X_v (n = 2); for n > 2 the normal of eq. (3.9) may be the opposite one, which
+    flips every sign.  Thesis: §3.4.3 (N_u = X_u / cosh² v, N_v = -X_v / cosh² v, flat in the extra
+    directions).
+    """
+    p = _finite("params", params)
+    if p.ndim < 1 or p.shape[-1] < 2:
+        raise ValueError(f"params must have shape (..., n) with n >= 2, got {p.shape}")
+    k = 1.0 / np.cosh(p[..., 1]) ** 2
+    out = np.zeros(p.shape)
+    out[..., 0] = -k
+    out[..., 1] = k
+    return out
+
+
+def catenoid_mean_curvature(params) -> np.ndarray:
+    """H = 0 everywhere: the n-catenoid is a minimal hypersurface.
+
+    Thesis: Definition 3.10 and §3.4.3.
+    """
+    return catenoid_principal_curvatures(params).sum(axis=-1) / np.asarray(params).shape[-1]
+
+
+# ------------------------------------------------------------------------ numerical reference
+def hypersurface_normal(jacobian) -> np.ndarray:
+    """Unit normal N = X_{u_1} ∧ ... ∧ X_{u_n} / W from Jacobians (..., n+1, n), with det[J | N] > 0.
+
+    For n = 2 this is (X_u × X_v)/|X_u × X_v|.  Thesis: eq. (3.9).
+    """
+    J = _finite("jacobian", jacobian)
+    if J.ndim < 2 or J.shape[-2] != J.shape[-1] + 1:
+        raise ValueError(f"jacobian must have shape (..., n+1, n), got {J.shape}")
+    n = J.shape[-1]
+    comps = []
+    for i in range(n + 1):
+        minor = np.delete(J, i, axis=-2)
+        comps.append((-1) ** (i + n) * np.linalg.det(minor))
+    N = np.stack(comps, axis=-1)
+    norm = np.linalg.norm(N, axis=-1, keepdims=True)
+    if np.any(norm == 0):
+        raise ValueError("the parametrisation is not regular here (X_* has rank < n)")
+    return N / norm
+
+
+def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4) -> np.ndarray:
+    """Shape operator S = g⁻¹ B of a parametrisation X: (..., n) -> (..., n+1), by central differences.
+
+    g_ij = <X_i, X_j> (first fundamental form), B_ij = <N, X_ij> = <S X_i, X_j> (second), so the
+    matrix of S = -N_* in the basis (X_{u_1}, ..., X_{u_n}) is g⁻¹ B; returns (..., n, n).
+    Thesis: Definitions 3.1–3.2 and eq. (3.10).
+    """
+    w = _finite("w", w)
+    if w.ndim < 1:
+        raise ValueError("w must have shape (..., n)")
+    h = float(h)
+    if not np.isfinite(h) or h <= 0:
+        raise ValueError(f"step h must be positive, got {h!r}")
+    n = w.shape[-1]
+    eye = np.eye(n) * h
+    X0 = np.asarray(X(w), dtype=np.float64)
+    if X0.shape != w.shape[:-1] + (n + 1,):
+        raise ValueError(f"X must map (..., {n}) to (..., {n + 1}), got {X0.shape}")
+    first = np.stack([(X(w + eye[i]) - X(w - eye[i])) / (2 * h) for i in range(n)], axis=-1)
+    second = np.empty(w.shape[:-1] + (n + 1, n, n))
+    for i in range(n):
+        for j in range(i, n):
+            if i == j:
+                d = (X(w + eye[i]) - 2 * X0 + X(w - eye[i])) / h**2
+            else:
+                d = (
+                    X(w + eye[i] + eye[j]) - X(w + eye[i] - eye[j])
+                    - X(w - eye[i] + eye[j]) + X(w - eye[i] - eye[j])
+                ) / (4 * h * h)
+            second[..., i, j] = second[..., j, i] = d
+    N = hypersurface_normal(first)
+    g = np.einsum("...ki,...kj->...ij", first, first)
+    B = np.einsum("...k,...kij->...ij", N, second)
+    return np.linalg.solve(g, B)

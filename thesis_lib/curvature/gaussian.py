@@ -1,0 +1,71 @@
+"""Discrete Gaussian curvature of triangle meshes: angle defect over area (§3.3.3)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .areas import vertex_areas_of_mesh
+from .validate import Mesh, validate_mesh
+
+__all__ = ["angle_defects", "gaussian_curvature"]
+
+
+def _angle_defects(mesh: Mesh) -> np.ndarray:
+    if mesh.n != 2:
+        raise ValueError(f"the angle defect is defined for triangle meshes (n = 2), got n = {mesh.n}")
+    v, s, tri = mesh.vertices, mesh.simplices, mesh.tri
+    angles = np.arctan2(np.broadcast_to(tri.twice_area, tri.dot.shape), tri.dot)  # (3 corners, m)
+    defect = 2.0 * np.pi - np.bincount(s.T.ravel(), weights=angles.ravel(), minlength=len(v))
+    defect[mesh.boundary | mesh.isolated] = np.nan
+    return defect
+
+
+def angle_defects(vertices, faces) -> np.ndarray:
+    """Angle defect 2π − Σ_j θ_j at every vertex: the integrated Gaussian curvature.
+
+    Thesis: Equation (3.20) (∫_A K dA = 2π − Σ θ_j over a vertex's region).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+    faces : array_like of int, shape (m, 3)
+
+    Returns
+    -------
+    ndarray, shape (nv,)
+        NaN on boundary vertices (there the defect would be π − Σ θ_j plus the boundary's turning)
+        and on isolated vertices.  On a closed mesh the sum is 2πχ (Theorem 3.8).
+    """
+    return _angle_defects(validate_mesh(vertices, faces))
+
+
+def gaussian_curvature(vertices, faces, area: str = "mixed") -> np.ndarray:
+    """Discrete Gaussian curvature K = (2π − Σ_j θ_j) / area at every vertex.
+
+    Thesis: Definition 3.21 (Voronoi (3.21) or barycentric (3.22) region; "mixed" = Meyer et al.).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+    faces : array_like of int, shape (m, 3)
+    area : {"mixed", "voronoi", "barycentric"}
+        Vertex area, see :func:`thesis_lib.curvature.vertex_areas`.
+
+    Returns
+    -------
+    ndarray, shape (nv,)
+        NaN on boundary and isolated vertices and where the vertex area is not positive (possible
+        with the signed ``"voronoi"`` area).  Independent of the faces' orientation.
+
+    Raises
+    ------
+    ValueError
+        On an invalid mesh, an unknown area kind, or a hypersurface with n ≠ 2.
+    """
+    mesh = validate_mesh(vertices, faces)
+    defect = _angle_defects(mesh)
+    a = vertex_areas_of_mesh(mesh, area)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = defect / a
+    k[~(a > 0)] = np.nan
+    return k

@@ -1,0 +1,48 @@
+"""Triangulations for chapter 3: parameter grids (torus, Freudenthal subdivisions of the 3-sphere
+and the n-catenoid), convex hulls of spheres, random surface samples, the Crust algorithm [ABK98]
+and ball pivoting; plus the thesis's neighbour-grid stencil and topological checks.
+"""
+
+from .crust import crust, crust_candidates, extract_manifold, poles
+from .grids import (
+    catenoid_freudenthal,
+    freudenthal,
+    grid_parameters,
+    hypersphere_freudenthal,
+    merge_coincident,
+    torus_chosen_points,
+    torus_grid,
+)
+from .hull import convex_hull_surface, orient_outward, sphere_hull
+from .pivoting import ball_pivoting, estimate_normals
+from .sampling import sample_catenoid, sample_sphere, sample_torus
+from .stencil import cross_stars, neighbour_grid_mean_curvature
+from .topology import euler_characteristic, facet_degrees, faces_of, is_closed_pseudomanifold
+
+__all__ = [
+    "ball_pivoting",
+    "catenoid_freudenthal",
+    "convex_hull_surface",
+    "cross_stars",
+    "crust",
+    "crust_candidates",
+    "estimate_normals",
+    "euler_characteristic",
+    "extract_manifold",
+    "faces_of",
+    "facet_degrees",
+    "freudenthal",
+    "grid_parameters",
+    "hypersphere_freudenthal",
+    "is_closed_pseudomanifold",
+    "merge_coincident",
+    "neighbour_grid_mean_curvature",
+    "orient_outward",
+    "poles",
+    "sample_catenoid",
+    "sample_sphere",
+    "sample_torus",
+    "sphere_hull",
+    "torus_chosen_points",
+    "torus_grid",
+]

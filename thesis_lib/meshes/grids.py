@@ -1,0 +1,233 @@
+"""Triangulations of parameter grids: the torus grid and Freudenthal (Kuhn) subdivisions.
+
+A parameter grid with ``shape = (m_1, ..., m_n)`` vertices is cut into n-simplices by the
+Freudenthal–Kuhn rule: every grid cube with lower corner b gives the n! simplices
+b, b + e_{π(1)}, b + e_{π(1)} + e_{π(2)}, ..., b + (1, ..., 1) for the permutations π.  Mapped
+through a parametrisation X this triangulates the hypersurfaces of §3.4 in any dimension.
+"""
+
+from __future__ import annotations
+
+import itertools
+from typing import Callable
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import cKDTree
+
+from ..curvature.exact import catenoid_point, hypersphere_point, torus_point
+
+__all__ = [
+    "freudenthal",
+    "grid_parameters",
+    "torus_grid",
+    "torus_chosen_points",
+    "merge_coincident",
+    "hypersphere_freudenthal",
+    "catenoid_freudenthal",
+]
+
+
+def _count(name: str, n, low: int = 1) -> int:
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < low:
+        raise ValueError(f"{name} must be an integer >= {low}, got {n!r}")
+    return int(n)
+
+
+def _positive(name: str, x) -> float:
+    x = float(x)
+    if not np.isfinite(x) or x <= 0:
+        raise ValueError(f"{name} must be a positive finite number, got {x!r}")
+    return x
+
+
+def _permutation_sign(perm: tuple[int, ...]) -> int:
+    perm = list(perm)
+    sign = 1
+    for i in range(len(perm)):
+        while perm[i] != i:
+            j = perm[i]
+            perm[i], perm[j] = perm[j], perm[i]
+            sign = -sign
+    return sign
+
+
+def freudenthal(shape, periodic=False) -> np.ndarray:
+    """Freudenthal/Kuhn subdivision of an n-dimensional vertex grid into n-simplices.
+
+    Parameters
+    ----------
+    shape : number of grid vertices along each axis, ``(m_1, ..., m_n)``; vertex ``(i_1, ..., i_n)``
+        has the C-order flat index ``np.ravel_multi_index(i, shape)``.
+    periodic : bool or one bool per axis; a periodic axis wraps (``m`` cells instead of ``m - 1``).
+
+    Returns
+    -------
+    ``(n! · #cells, n + 1)`` int array of simplices, each positively oriented in parameter space
+    (det[v_1 - v_0, ..., v_n - v_0] > 0 before wrapping).
+
+    Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
+    """
+    shape = tuple(shape) if np.ndim(shape) else (shape,)
+    if len(shape) == 0:
+        raise ValueError("shape must have at least one axis")
+    n = len(shape)
+    per = (bool(periodic),) * n if np.ndim(periodic) == 0 else tuple(bool(p) for p in periodic)
+    if len(per) != n:
+        raise ValueError(f"periodic has {len(per)} entries for {n} axes")
+    for m, p in zip(shape, per):
+        _count("grid size", m, 3 if p else 2)
+    cells = [m if p else m - 1 for m, p in zip(shape, per)]
+    base = np.stack(np.meshgrid(*[np.arange(c) for c in cells], indexing="ij"), axis=-1).reshape(-1, n)
+    out = []
+    for perm in itertools.permutations(range(n)):
+        path = [base.copy()]
+        cur = base.copy()
+        for axis in perm:
+            cur = cur.copy()
+            cur[:, axis] += 1
+            path.append(cur)
+        verts = np.stack(path, axis=1)  # (cells, n+1, n)
+        if _permutation_sign(perm) < 0:  # orientation of the Kuhn simplex is sign(π)
+            verts = verts[:, [1, 0] + list(range(2, n + 1))]
+        for axis in range(n):
+            if per[axis]:
+                verts[..., axis] %= shape[axis]
+        out.append(np.ravel_multi_index(tuple(np.moveaxis(verts, -1, 0)), shape))
+    return np.concatenate(out, axis=0).astype(np.int64)
+
+
+def grid_parameters(*axes) -> np.ndarray:
+    """Parameters of the grid ``axes[0] × axes[1] × ...`` in the C order used by :func:`freudenthal`.
+
+    Thesis: §3.4 (the parameter grids {0, ε, 2ε, ...}).
+    """
+    arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
+    if not arrs or any(a.size == 0 for a in arrs):
+        raise ValueError("need at least one non-empty axis")
+    if any(not np.all(np.isfinite(a)) for a in arrs):
+        raise ValueError("grid axes contain NaN or infinite values")
+    return np.stack(np.meshgrid(*arrs, indexing="ij"), axis=-1).reshape(-1, len(arrs))
+
+
+def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
+    """Periodic n × n grid on the torus, u_i = 2πi/n, v_j = 2πj/n, with one diagonal per square.
+
+    Returns ``(vertices (n², 3), faces (2n², 3))``; vertex ``i·n + j`` is X(u_i, v_j) and every face is
+    oriented by X_u × X_v (outward).  Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
+    """
+    n = _count("n", n, 3)
+    t = 2 * np.pi * np.arange(n) / n
+    uv = grid_parameters(t, t)
+    vertices = torus_point(uv[:, 0], uv[:, 1], R, r)
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    a = (i * n + j).ravel()
+    b = (((i + 1) % n) * n + j).ravel()
+    c = (((i + 1) % n) * n + (j + 1) % n).ravel()
+    d = (i * n + (j + 1) % n).ravel()
+    faces = np.concatenate([np.stack([a, b, c], 1), np.stack([a, c, d], 1)])
+    return vertices, faces
+
+
+def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float = 5.0):
+    """The thesis's "chosen points" (u, v) ∈ {0, ε, ..., 2π - ε}² on the torus, triangulated.
+
+    Returns ``(vertices, faces, uv)``.  ``2π/ε`` must be an integer (up to 1e-9).
+    Thesis: §3.4.1, Figures 3.4–3.7 (ε = π/50).
+    """
+    epsilon = _positive("epsilon", epsilon)
+    m = 2 * np.pi / epsilon
+    n = int(round(m))
+    if abs(m - n) > 1e-9 * m or n < 3:
+        raise ValueError(f"2π/epsilon must be an integer >= 3, got {m!r}")
+    vertices, faces = torus_grid(n, R, r)
+    t = 2 * np.pi * np.arange(n) / n
+    return vertices, faces, grid_parameters(t, t)
+
+
+def merge_coincident(vertices, simplices, tol: float = 1e-9):
+    """Identify vertices closer than ``tol``, then drop degenerate and repeated simplices.
+
+    Returns ``(vertices, simplices, kept)``: ``kept[i]`` is the original index of new vertex ``i``
+    (its first representative).  Simplices keep their vertex order (and so their orientation).
+    Thesis: §3.4.2 (grid points at the poles of hyperspherical coordinates coincide).
+    """
+    v = np.asarray(vertices, dtype=np.float64)
+    s = np.asarray(simplices)
+    if v.ndim != 2 or s.ndim != 2:
+        raise ValueError("vertices and simplices must be 2-D arrays")
+    if s.size and (s.min() < 0 or s.max() >= len(v)):
+        raise ValueError("simplices refer to vertices that do not exist")
+    pairs = cKDTree(v).query_pairs(float(tol), output_type="ndarray")
+    nv = len(v)
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(nv, nv))
+    _, label = connected_components(graph, directed=False)
+    # representative = smallest original index of each class, numbered in order of appearance
+    first = np.full(label.max() + 1, nv)
+    np.minimum.at(first, label, np.arange(nv))
+    order = np.argsort(first, kind="stable")
+    new_id = np.empty_like(order)
+    new_id[order] = np.arange(len(order))
+    s2 = new_id[label[s]]
+    ss = np.sort(s2, axis=1)
+    nondeg = np.all(ss[:, 1:] != ss[:, :-1], axis=1)
+    s2, ss = s2[nondeg], ss[nondeg]
+    _, idx = np.unique(ss, axis=0, return_index=True)
+    s2 = s2[np.sort(idx)]
+    kept = first[order]
+    return v[kept], s2, kept
+
+
+def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray:
+    steps = (high - low) / epsilon
+    k = int(round(steps))
+    if k < 1 or abs(steps - k) > 1e-6 * max(1.0, steps):
+        raise ValueError(f"{name}: (high - low)/epsilon must be a positive integer, got {steps!r}")
+    return low + epsilon * np.arange(k + 1)
+
+
+def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0, n: int = 3):
+    """Freudenthal triangulation of the n-sphere of radius ρ in R^{n+1} in hyperspherical coordinates.
+
+    Grid ψ_i ∈ {0, ε, ..., π} (i < n) and φ ∈ {0, ε, ..., 2π - ε} (periodic); ``π/ε`` must be an
+    integer.  The grid points on the degenerate region (ψ_i ∈ {0, π} for some i < n, where the
+    coordinates collapse) are identified, and the simplices that collapse there are dropped, which
+    leaves a closed triangulation of the whole sphere.  Returns ``(vertices, simplices, params)``
+    with ``params`` the coordinates of each vertex's first grid representative.
+    Thesis: §3.4.2 (3-sphere, hyperspherical coordinates, ε = π/50).
+    """
+    epsilon = _positive("epsilon", epsilon)
+    radius = _positive("radius", radius)
+    n = _count("n", n, 1)
+    m = np.pi / epsilon
+    if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
+        raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
+    k = int(round(m))
+    ang = np.pi * np.arange(k + 1) / k
+    phi = np.pi * np.arange(2 * k) / k
+    params = grid_parameters(*([ang] * (n - 1) + [phi]))
+    simplices = freudenthal((k + 1,) * (n - 1) + (2 * k,), periodic=(False,) * (n - 1) + (True,))
+    vertices = hypersphere_point(params, radius)
+    vertices, simplices, kept = merge_coincident(vertices, simplices, tol=1e-9 * radius)
+    return vertices, simplices, params[kept]
+
+
+def catenoid_freudenthal(
+    epsilon: float = 0.05, n: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0), n_u: int | None = None
+):
+    """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
+
+    u is periodic with ``n_u`` steps (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε);
+    v ∈ {v_low, v_low + ε, ..., v_high} and each extra coordinate w ∈ {w_low, ..., w_high} step ε.
+    Returns ``(vertices, simplices, params)``; the boundary is v = v_low, v_high (and w = w_low, w_high).
+    Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
+    """
+    epsilon = _positive("epsilon", epsilon)
+    n = _count("n", n, 2)
+    n_u = int(round(2 * np.pi / epsilon)) if n_u is None else _count("n_u", n_u, 3)
+    axes = [2 * np.pi * np.arange(n_u) / n_u, _grid_axis("v_range", *map(float, v_range), epsilon)]
+    axes += [_grid_axis("w_range", *map(float, w_range), epsilon)] * (n - 2)
+    params = grid_parameters(*axes)
+    simplices = freudenthal(tuple(len(a) for a in axes), periodic=(True,) + (False,) * (n - 1))
+    return catenoid_point(params), simplices, params

@@ -1,0 +1,80 @@
+"""Uniform random samples (with respect to area) of the surfaces of §3.4, by rejection sampling."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..curvature.exact import catenoid_point, torus_point
+
+__all__ = ["sample_torus", "sample_catenoid", "sample_sphere"]
+
+
+def _count(name: str, n) -> int:
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"{name} must be a positive integer, got {n!r}")
+    return int(n)
+
+
+def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
+    out, have = [], 0
+    while have < n:
+        m = max(64, int(2.6 * (n - have)))
+        cand = draw(m)
+        keep = rng.uniform(0.0, wmax, m) < weight(cand)
+        out.append(cand[keep])
+        have += int(keep.sum())
+    return np.concatenate(out)[:n]
+
+
+def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0, return_uv: bool = False):
+    """``n`` points uniform w.r.t. area on the torus: (u, v) uniform, accepted with prob. (R + r cos v)/(R + r).
+
+    The area element of the torus is r (R + r cos v) du dv, so rejection on that density gives the
+    uniform distribution on the surface.  Returns ``(n, 3)`` points (and ``(n, 2)`` parameters when
+    ``return_uv``).  Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
+    """
+    n = _count("n", n)
+    torus_point(0.0, 0.0, R, r)  # validates the radii
+    rng = np.random.default_rng(seed)
+    uv = _rejection(
+        n, rng, lambda m: rng.uniform(0.0, 2 * np.pi, (m, 2)),
+        lambda c: R + r * np.cos(c[:, 1]), R + r,
+    )
+    pts = torus_point(uv[:, 0], uv[:, 1], R, r)
+    return (pts, uv) if return_uv else pts
+
+
+def sample_catenoid(n: int, v_range=(-1.0, 1.0), seed: int = 0, return_params: bool = False):
+    """``n`` points uniform w.r.t. area on the catenoid piece v ∈ v_range (area element cosh² v du dv).
+
+    Thesis: §3.4.3, Figure 3.14 (point cloud on the 2-catenoid).
+    """
+    n = _count("n", n)
+    lo, hi = map(float, v_range)
+    if not (np.isfinite(lo) and np.isfinite(hi)) or hi <= lo:
+        raise ValueError(f"v_range must be a finite interval (low < high), got {v_range!r}")
+    rng = np.random.default_rng(seed)
+    wmax = np.cosh(max(abs(lo), abs(hi))) ** 2
+    uv = _rejection(
+        n, rng,
+        lambda m: np.column_stack([rng.uniform(0, 2 * np.pi, m), rng.uniform(lo, hi, m)]),
+        lambda c: np.cosh(c[:, 1]) ** 2, wmax,
+    )
+    pts = catenoid_point(uv)
+    return (pts, uv) if return_params else pts
+
+
+def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -> np.ndarray:
+    """``n`` points uniform on the sphere S^{n_dims - 1} of the given radius in R^{n_dims}.
+
+    Thesis: §3.4.2 (spheres as test hypersurfaces).
+    """
+    n = _count("n", n)
+    d = _count("n_dims", n_dims)
+    if d < 2:
+        raise ValueError(f"n_dims must be >= 2, got {d}")
+    radius = float(radius)
+    if not np.isfinite(radius) or radius <= 0:
+        raise ValueError(f"radius must be positive, got {radius!r}")
+    g = np.random.default_rng(seed).normal(size=(n, d))
+    return radius * g / np.linalg.norm(g, axis=1, keepdims=True)

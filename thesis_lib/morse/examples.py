@@ -1,0 +1,105 @@
+"""Small inputs of chapter 4: the RP² triangulation with the gradient field of Example 4.43."""
+
+from __future__ import annotations
+
+from ._cells import Simplex
+
+__all__ = ["RP2_FACETS", "rp2_gradient_field", "rp2_chart", "example_4_45", "experiment_complex", "COMPLEX_NAMES"]
+
+#: The 6-vertex RP² of Example 2.21 / Figure 2.7 with a, b, c, d, e, f = 0, ..., 5
+#: (abd, adf, afc, bcd, ced, cae, abe, bfe, bcf, def).
+RP2_FACETS: list[Simplex] = [
+    (0, 1, 3), (0, 3, 5), (0, 2, 5), (1, 2, 3), (2, 3, 4),
+    (0, 2, 4), (0, 1, 4), (1, 4, 5), (1, 2, 5), (3, 4, 5),
+]
+
+
+def rp2_gradient_field() -> list[tuple[Simplex, Simplex]]:
+    """An acyclic gradient field on :data:`RP2_FACETS` with the critical cells of Example 4.43.
+
+    Thesis: Example 4.43 / Figure 4.6 (critical a, σ = ac and one triangle τ; two gradient paths
+    σ → a of multiplicities ±1, two paths τ → σ of multiplicity +1, so ∂̃τ = 2σ and ∂̃σ = 0).
+
+    The figure itself is not in the text; this field is one that matches every statement the text
+    makes about it (τ = ace, vertices flowing to a along a spanning tree).
+    """
+    return [
+        ((0, 3), (0, 3, 5)), ((0, 4), (0, 1, 4)), ((0, 5), (0, 2, 5)), ((1,), (0, 1)),
+        ((1, 3), (0, 1, 3)), ((1, 5), (1, 4, 5)), ((2,), (1, 2)), ((2, 3), (1, 2, 3)),
+        ((2, 4), (2, 3, 4)), ((2, 5), (1, 2, 5)), ((3,), (3, 4)), ((3, 5), (3, 4, 5)),
+        ((4,), (1, 4)), ((5,), (4, 5)),
+    ]
+
+
+def rp2_chart() -> dict[Simplex, list[tuple[float, float]]]:
+    """Plane coordinates of the corners of every triangle of :data:`RP2_FACETS` in the disc picture
+    of RP² (Figure 2.7): inner triangle d, e, f; outer hexagon a, b, c, a, b, c with antipodal
+    points identified.  Maps each triangle (sorted vertices) to the positions of its vertices.
+
+    Thesis: Figure 2.7 (triangulation of RP²), used to draw Figure 4.6.
+    """
+    import numpy as np
+
+    ang = np.pi / 2 - np.arange(6) * np.pi / 3  # hexagon P0..P5 clockwise from the top
+    hexagon = [(float(np.cos(t)), float(np.sin(t))) for t in ang]  # a, b, c, a, b, c
+    inner = {v: (0.45 * float(np.cos(ang[k])), 0.45 * float(np.sin(ang[k]))) for v, k in ((3, 1), (4, 3), (5, 5))}
+    corner_copy = {  # which hexagon copy of a, b, c each triangle uses
+        (0, 1, 3): {0: 0, 1: 1}, (1, 2, 3): {1: 1, 2: 2}, (0, 2, 4): {2: 2, 0: 3}, (0, 1, 4): {0: 3, 1: 4},
+        (1, 2, 5): {1: 4, 2: 5}, (0, 2, 5): {2: 5, 0: 0}, (2, 3, 4): {2: 2}, (0, 3, 5): {0: 0},
+        (1, 4, 5): {1: 4}, (3, 4, 5): {},
+    }
+    out = {}
+    for t in RP2_FACETS:
+        pos = corner_copy[t]
+        out[t] = [hexagon[pos[v]] if v in pos else inner[v] for v in t]
+    return out
+
+
+def example_4_45() -> tuple[list[Simplex], list[tuple[Simplex, Simplex]]]:
+    """A small complex and an acyclic modified Hasse diagram with critical v_2 and e_23.
+
+    Thesis: Example 4.45 / Figures 4.7–4.8 (two critical simplices, so K ≃ S¹ by Example 4.29).
+    The complex of Figure 4.7 is not in the text; this one (a filled triangle 123 with a path
+    2–4–3) has the stated critical simplices.
+    """
+    simplices = [(1, 2, 3), (2, 4), (3, 4)]
+    pairs = [((1,), (1, 2)), ((1, 3), (1, 2, 3)), ((3,), (3, 4)), ((4,), (2, 4))]
+    return simplices, pairs
+
+
+COMPLEX_NAMES = ("rp2", "torus", "klein", "dunce-hat", "random-flag", "rips")
+
+
+def experiment_complex(name: str, seed: int = 0):
+    """The complexes of the ``rp2-morse`` experiment: ``(facets, positions, chart)``.
+
+    Thesis: §4.2 (RP² of Example 4.43; other triangulations of §2.2.1; small flag and Rips complexes).
+
+    ``positions`` maps vertices to the plane for point-cloud complexes (else ``None``); ``chart`` is
+    the disc picture of RP² (else ``None``).  ``random-flag``: the flag complex of 14 uniform points
+    in the unit square at ε = 0.2 (edges of length ≤ 0.4); ``rips``: the Rips complex of
+    ``two_circles(12, seed)`` at ε = 0.3, both up to dimension 2.
+    """
+    from ..complexes.rips import rips
+    from ..datasets import dunce_hat, klein_bottle, rp2, torus, two_circles
+
+    if name == "rp2":
+        return list(RP2_FACETS), None, rp2_chart()
+    if name == "torus":
+        return torus(), None, None
+    if name == "klein":
+        return klein_bottle(), None, None
+    if name == "dunce-hat":
+        return dunce_hat(), None, None
+    if name in ("random-flag", "rips"):
+        import numpy as np
+
+        if name == "random-flag":
+            pts = np.random.default_rng(seed).random((14, 2))
+            filt = rips(pts, 0.2, 2)
+        else:
+            pts = two_circles(12, seed=seed)
+            filt = rips(pts, 0.3, 2)
+        facets = [s for s, _ in filt]
+        return facets, {i: (float(x), float(y)) for i, (x, y) in enumerate(pts)}, None
+    raise ValueError(f"complex must be one of {', '.join(COMPLEX_NAMES)}, got {name!r}")

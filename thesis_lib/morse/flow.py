@@ -1,0 +1,100 @@
+"""The discrete gradient V, the discrete gradient flow Φ = 1 + ∂V + V∂ and its stabilisation Φ^∞.
+
+All matrices act on the chain group of the whole complex, in the basis :func:`cells` (simplices by
+dimension, then lexicographically, oriented by ascending vertices as in Definition 2.18).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.sparse as sp
+
+from ._cells import Simplex, as_complex, partner_array
+from .vector_field import Pairs
+
+__all__ = ["cells", "boundary_operator", "gradient_matrix", "gradient_flow", "stabilised_flow", "is_flow_invariant"]
+
+
+def cells(simplices) -> list[Simplex]:
+    """The basis used by :func:`gradient_matrix` and :func:`gradient_flow`: all simplices of the
+    complex, by dimension then lexicographically.
+
+    Thesis: §4.2.3 (C_k is the free Abelian group on the k-simplices, cells orthonormal).
+    """
+    return as_complex(simplices).simplices()
+
+
+def boundary_operator(simplices) -> sp.csc_matrix:
+    """The boundary ∂ on the whole chain complex as one (n × n) integer matrix in the basis :func:`cells`.
+
+    Thesis: Definition 2.18 (∂σ = Σ <∂σ, γ> γ, §4.2.3).
+    """
+    return as_complex(simplices).D.copy()
+
+
+def gradient_matrix(simplices, pairs: Pairs) -> sp.csc_matrix:
+    """The discrete gradient vector field V as an (n × n) integer matrix: V(σ) = -<∂τ, σ> τ for {σ < τ}.
+
+    Thesis: Definition 4.30 (and Definition 4.33 for the pairs).
+    """
+    cx = as_complex(simplices)
+    partner = partner_array(cx, pairs)
+    low = np.flatnonzero(partner > np.arange(cx.n))
+    high = partner[low]
+    signs = -np.asarray(cx.D[low, high]).ravel().astype(np.int64) if low.size else np.empty(0, np.int64)
+    v = sp.csc_matrix((signs, (high, low)), shape=(cx.n, cx.n), dtype=np.int64)
+    v.sort_indices()
+    return v
+
+
+def gradient_flow(simplices, pairs: Pairs) -> sp.csc_matrix:
+    """The discrete gradient flow Φ = id + ∂∘V + V∘∂ as an (n × n) integer matrix.
+
+    Thesis: Definition 4.31.
+    """
+    cx = as_complex(simplices)
+    v = gradient_matrix(cx, pairs)
+    phi = sp.identity(cx.n, dtype=np.int64, format="csc") + cx.D @ v + v @ cx.D
+    phi = sp.csc_matrix(phi, dtype=np.int64)
+    phi.eliminate_zeros()
+    phi.sort_indices()
+    return phi
+
+
+def _equal(a: sp.spmatrix, b: sp.spmatrix) -> bool:
+    return (a != b).nnz == 0
+
+
+def stabilised_flow(simplices, pairs: Pairs, max_iter: int | None = None) -> tuple[sp.csc_matrix, int]:
+    """Φ^∞ = Φ^N for the first N with Φ^N = Φ^{N+1}, and that N.
+
+    Thesis: Theorem 4.38 (Φ^N(c) = Φ^{N+1}(c) = ... = Φ^∞(c) for N large).
+
+    Raises ValueError if Φ has not stabilised after ``max_iter`` (default: number of cells + 1)
+    steps, which happens for a vector field with a closed V-path.
+    """
+    cx = as_complex(simplices)
+    phi = gradient_flow(cx, pairs)
+    limit = cx.n + 1 if max_iter is None else int(max_iter)
+    power = sp.identity(cx.n, dtype=np.int64, format="csc")
+    for n in range(limit + 1):
+        nxt = sp.csc_matrix(phi @ power, dtype=np.int64)
+        nxt.eliminate_zeros()
+        if _equal(nxt, power):
+            power.sort_indices()
+            return power, n
+        power = nxt
+    raise ValueError(f"Φ^N did not stabilise within {limit} steps: is the vector field acyclic (Theorem 4.36)?")
+
+
+def is_flow_invariant(simplices, pairs: Pairs, chain) -> bool:
+    """True when the chain (a length-n integer vector in the basis :func:`cells`) satisfies Φ(c) = c.
+
+    Thesis: §4.2.4 (Φ-invariant chains form the Morse complex C^Φ).
+    """
+    cx = as_complex(simplices)
+    c = np.asarray(chain)
+    if c.shape != (cx.n,):
+        raise ValueError(f"a chain needs {cx.n} coefficients, got shape {c.shape}")
+    phi = gradient_flow(cx, pairs)
+    return bool(np.array_equal(phi @ c.astype(np.int64), c.astype(np.int64)))

@@ -1,0 +1,166 @@
+"""Acyclic matchings (discrete gradient vector fields) with few critical simplices (thesis §4.2.6).
+
+Finding a gradient with the minimum number of critical simplices is NP-hard (Joswig & Pfetsch 2006,
+thesis §4.2.6), so these are heuristics: greedy coreduction / collapse, and Robins, Wood &
+Sheppard's ProcessLowerStars (2011) for lower-star filtrations of vertex values.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections.abc import Sequence
+
+import numpy as np
+
+from ._cells import CellComplex, Simplex, as_complex, pairs_from_partner, partner_array
+from ._kernels import greedy_matching
+
+__all__ = ["morse_matching", "critical_counts"]
+
+
+def _greedy_partner(cx: CellComplex, method: str, vals: np.ndarray | None = None, seed: int | None = None) -> np.ndarray:
+    faces = cx.D  # CSC: column g lists the faces of g
+    cofaces = cx.cofaces  # CSR: row g lists the cofaces of g
+    fptr, fidx = faces.indptr.astype(np.int64), faces.indices.astype(np.int64)
+    cptr, cidx = cofaces.indptr.astype(np.int64), cofaces.indices.astype(np.int64)
+    tie = np.arange(cx.n) if seed is None else np.random.default_rng(seed).permutation(cx.n)
+    v = np.zeros(cx.n) if vals is None else np.asarray(vals, dtype=np.float64)
+    if method == "coreduction":
+        order = np.lexsort((tie, cx.dim_of)).astype(np.int64)  # lowest dimension first
+        return greedy_matching(cx.n, fptr, fidx, cptr, cidx, v, order)
+    order = np.lexsort((tie, -cx.dim_of)).astype(np.int64)  # top dimension first
+    return greedy_matching(cx.n, cptr, cidx, fptr, fidx, v, order)
+
+
+def _vertex_ranks(cx: CellComplex, values) -> np.ndarray:
+    vals = np.asarray(values, dtype=np.float64)
+    nv = int(cx.arrays[0][:, 0].max()) + 1
+    if vals.ndim != 1:
+        raise ValueError(f"vertex values must be a 1-D array, got shape {vals.shape}")
+    if vals.shape[0] < nv:
+        raise ValueError(f"vertex values cover {vals.shape[0]} vertices but the complex uses vertex {nv - 1}")
+    if not np.all(np.isfinite(vals)):
+        raise ValueError("vertex values must be finite (no NaN or inf)")
+    order = np.lexsort((np.arange(vals.shape[0]), vals))  # ties broken by vertex index
+    rank = np.empty(vals.shape[0], dtype=np.int64)
+    rank[order] = np.arange(vals.shape[0])
+    return rank
+
+
+def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
+    """ProcessLowerStars (Robins, Wood & Sheppard 2011) on the lower stars of the vertex order."""
+    rank = _vertex_ranks(cx, values)
+    keys: list[tuple[int, ...]] = []
+    top = np.empty(cx.n, dtype=np.int64)  # vertex (global id of the 0-cell) whose lower star holds g
+    vid = np.full(rank.shape[0], -1, dtype=np.int64)
+    vid[cx.arrays[0][:, 0]] = np.arange(cx.counts[0])
+    for d, a in enumerate(cx.arrays):
+        r = rank[a]
+        srt = -np.sort(-r, axis=1)
+        keys.extend(map(tuple, srt.tolist()))
+        top[cx.offsets[d] : cx.offsets[d + 1]] = vid[a[np.arange(a.shape[0]), np.argmax(r, axis=1)]]
+    members = [[] for _ in range(cx.counts[0])]
+    for g in np.argsort(top, kind="stable").tolist():
+        members[top[g]].append(g)
+    fptr, fidx = cx.D.indptr, cx.D.indices
+    cptr, cidx = cx.cofaces.indptr, cx.cofaces.indices
+    partner = np.full(cx.n, -1, dtype=np.int64)
+    done = np.zeros(cx.n, dtype=bool)
+
+    def lower_faces(g: int, v: int) -> list[int]:
+        return [int(h) for h in fidx[fptr[g] : fptr[g + 1]] if top[h] == v]
+
+    def lower_cofaces(g: int, v: int) -> list[int]:
+        return [int(h) for h in cidx[cptr[g] : cptr[g + 1]] if top[h] == v]
+
+    def unpaired_faces(g: int, v: int) -> list[int]:
+        return [h for h in lower_faces(g, v) if not done[h]]
+
+    for v in range(cx.counts[0]):
+        star = members[v]
+        if len(star) == 1:
+            done[v] = True
+            continue
+        edges = [g for g in star if cx.dim_of[g] == 1]
+        delta = min(edges, key=lambda g: keys[g])
+        partner[v], partner[delta] = delta, v
+        done[v] = done[delta] = True
+        pq_zero = [(keys[g], g) for g in edges if g != delta]
+        heapq.heapify(pq_zero)
+        pq_one: list[tuple[tuple[int, ...], int]] = []
+
+        def push_ones(cells: Sequence[int]) -> None:
+            for a in cells:
+                for b in lower_cofaces(a, v):
+                    if not done[b] and len(unpaired_faces(b, v)) == 1:
+                        heapq.heappush(pq_one, (keys[b], b))
+
+        push_ones([delta])
+        while pq_one or pq_zero:
+            while pq_one:
+                _, a = heapq.heappop(pq_one)
+                if done[a]:
+                    continue
+                free = unpaired_faces(a, v)
+                if len(free) == 0:
+                    heapq.heappush(pq_zero, (keys[a], a))
+                elif len(free) == 1:
+                    b = free[0]
+                    partner[a], partner[b] = b, a
+                    done[a] = done[b] = True
+                    push_ones([a, b])
+            while pq_zero and done[pq_zero[0][1]]:
+                heapq.heappop(pq_zero)
+            if pq_zero:
+                _, c = heapq.heappop(pq_zero)
+                done[c] = True  # critical
+                push_ones([c])
+    return partner
+
+
+def morse_matching(
+    simplices, method: str = "coreduction", values=None, seed: int | None = None
+) -> list[tuple[Simplex, Simplex]]:
+    """An acyclic matching (gradient vector field) with few critical simplices.
+
+    Thesis: §4.2.6 (minimising critical simplices is NP-hard [JP06]; acyclic by Theorem 4.44).
+
+    Parameters
+    ----------
+    simplices : the complex (all faces are added).
+    method : ``"coreduction"`` (default; greedy coreductions, a lowest-dimensional cell made critical
+        when none is possible — one critical vertex per connected component), ``"collapse"``
+        (greedy elementary collapses from free faces, a top-dimensional cell made critical when
+        stuck) or ``"lower-star"`` (ProcessLowerStars of Robins–Wood–Sheppard 2011 on the
+        lower-star filtration of ``values``; every pair lies in one lower star).
+    values : vertex values (indexed by vertex number), required for ``"lower-star"``; ties are
+        broken by vertex index.
+    seed : random tie-breaking of the greedy methods (``None``: deterministic order).
+
+    Returns
+    -------
+    The pairs ``(sigma, tau)``, sigma a facet of tau, sorted.  The optimum is NP-hard to reach;
+    the greedy result is only guaranteed to be acyclic.
+    """
+    if method not in ("coreduction", "collapse", "lower-star"):
+        raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
+    cx = as_complex(simplices)
+    if method == "lower-star":
+        if values is None:
+            raise ValueError("method 'lower-star' needs vertex values")
+        partner = _lower_star_partner(cx, values)
+    else:
+        if values is not None:
+            raise ValueError(f"method {method!r} takes no values")
+        partner = _greedy_partner(cx, method, seed=seed)
+    return pairs_from_partner(cx, partner)
+
+
+def critical_counts(simplices, pairs) -> list[int]:
+    """Number of critical simplices per dimension (Crit_k^d) of a vector field.
+
+    Thesis: Theorem 4.27 (weak discrete Morse inequalities β_k ≤ Crit_k^d).
+    """
+    cx = as_complex(simplices)
+    partner = partner_array(cx, pairs)
+    return np.bincount(cx.dim_of[partner < 0], minlength=cx.dimension + 1).astype(int).tolist()

@@ -1,0 +1,135 @@
+"""Drawings of chapter 4: gradient fields as arrows (Figures 4.4, 4.6) and modified Hasse diagrams (4.7–4.8)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from ._cells import as_complex, partner_array
+
+__all__ = ["draw_gradient_field", "draw_hasse_diagram", "spectral_layout"]
+
+
+def spectral_layout(simplices) -> dict[int, tuple[float, float]]:
+    """Plane positions of the vertices from two Laplacian eigenvectors of the 1-skeleton.
+
+    Thesis: none (a drawing aid for Figures 4.4/4.6 when a complex has no natural picture).
+    """
+    cx = as_complex(simplices)
+    verts = cx.arrays[0][:, 0]
+    n = verts.size
+    lap = np.zeros((n, n))
+    if cx.dimension >= 1:
+        idx = cx.facet_ids[1]  # global ids of the two vertices = local ids
+        for a, b in idx:
+            lap[a, b] = lap[b, a] = -1
+    lap -= np.diag(lap.sum(axis=1))
+    w, v = np.linalg.eigh(lap + 1e-9 * np.eye(n))
+    xy = v[:, 1:3] if n >= 3 else np.column_stack([np.arange(n), np.zeros(n)])
+    xy = xy * np.sign(xy[np.argmax(np.abs(xy), axis=0), [0, 1]]) if n >= 3 else xy
+    return {int(u): (float(x), float(y)) for u, (x, y) in zip(verts, xy)}
+
+
+def draw_gradient_field(
+    ax,
+    simplices,
+    pairs,
+    positions: Mapping[int, Sequence[float]] | None = None,
+    chart: Mapping[tuple[int, ...], Sequence[Sequence[float]]] | None = None,
+    labels: Mapping[int, str] | None = None,
+):
+    """Draw a 2-dimensional complex with its vector field: an arrow σ → τ for each pair, critical
+    simplices in red (vertices as dots, edges thick, triangles shaded).
+
+    Thesis: Figures 4.4 and 4.6 (arrows from σ to τ when f(τ) ≤ f(σ), Definition 4.30).
+
+    Give either ``positions`` (vertex → (x, y)) or ``chart`` (triangle → corner positions, for
+    complexes such as RP² drawn with identified boundary, see :func:`~thesis_lib.morse.examples.rp2_chart`).
+    """
+    cx = as_complex(simplices)
+    if cx.dimension > 2:
+        raise ValueError("only complexes of dimension ≤ 2 can be drawn")
+    partner = partner_array(cx, pairs)
+    crit = set(int(g) for g in np.flatnonzero(partner < 0))
+    # pieces: every drawn copy of a simplex with its corner coordinates
+    copies: dict[tuple[int, ...], list[np.ndarray]] = {}
+
+    def add(s, pts):
+        lst = copies.setdefault(s, [])
+        if not any(np.allclose(pts, q) for q in lst):
+            lst.append(np.asarray(pts, dtype=float))
+
+    if chart is not None:
+        for t, corners in chart.items():
+            t = tuple(t)
+            corners = np.asarray(corners, dtype=float)
+            add(t, corners)
+            for i in range(3):
+                for j in range(i + 1, 3):
+                    add((t[i], t[j]), corners[[i, j]])
+                add((t[i],), corners[[i]])
+    else:
+        pos = positions if positions is not None else spectral_layout(cx)
+        for s in cx.simplices():
+            add(s, np.array([pos[v] for v in s]))
+    ids = {s: g for g, s in enumerate(cx.simplices())}
+    for s, lst in copies.items():
+        g = ids[s]
+        for pts in lst:
+            if len(s) == 3:
+                ax.fill(pts[:, 0], pts[:, 1], color="#f4a3a3" if g in crit else "#dde6f2", lw=0, zorder=0)
+            elif len(s) == 2:
+                ax.plot(pts[:, 0], pts[:, 1], color="crimson" if g in crit else "0.35",
+                        lw=3 if g in crit else 1, zorder=1)
+            else:
+                ax.plot(pts[0, 0], pts[0, 1], "o", color="crimson" if g in crit else "0.2",
+                        ms=8 if g in crit else 4, zorder=3)
+                if labels is not None:
+                    ax.annotate(labels.get(s[0], str(s[0])), pts[0], textcoords="offset points", xytext=(4, 4))
+    for low, high in zip(np.flatnonzero(partner > np.arange(cx.n)), partner[partner > np.arange(cx.n)]):
+        s, t = cx.simplex(int(low)), cx.simplex(int(high))
+        for tp in copies.get(t, []):
+            centre_t = tp.mean(axis=0)
+            # the copy of s that is a face of this copy of t
+            for sp_ in copies.get(s, []):
+                if all(any(np.allclose(p, q) for q in tp) for p in sp_):
+                    c_s = sp_.mean(axis=0)
+                    ax.annotate("", xy=c_s + 0.75 * (centre_t - c_s), xytext=c_s,
+                                arrowprops=dict(arrowstyle="-|>", color="black", lw=1.2), zorder=4)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    return ax
+
+
+def draw_hasse_diagram(ax, simplices, pairs=(), names: Mapping[tuple[int, ...], str] | None = None):
+    """The (modified) Hasse diagram: one row per dimension, an edge τ → σ for each facet, reversed
+    (red, upwards) for the pairs of the vector field; critical simplices boxed in red.
+
+    Thesis: §4.2.6, Figures 4.7–4.8 and Theorem 4.44.
+    """
+    cx = as_complex(simplices)
+    partner = partner_array(cx, pairs)
+    pos = {}
+    for d in range(cx.dimension + 1):
+        m = int(cx.counts[d])
+        xs = np.linspace(-(m - 1) / 2, (m - 1) / 2, m) if m > 1 else np.zeros(1)
+        for k in range(m):
+            pos[int(cx.offsets[d] + k)] = (float(xs[k]), float(d))
+    coo = cx.D.tocoo()
+    for face, cell in zip(coo.row.tolist(), coo.col.tolist()):
+        flip = partner[face] == cell
+        src, dst = (face, cell) if flip else (cell, face)
+        ax.annotate("", xy=pos[dst], xytext=pos[src],
+                    arrowprops=dict(arrowstyle="-|>", color="crimson" if flip else "0.5", lw=1.8 if flip else 0.8,
+                                    shrinkA=9, shrinkB=9), zorder=1)
+    for g, (x, y) in pos.items():
+        s = cx.simplex(g)
+        text = names.get(s) if names and s in names else "".join(str(v) for v in s)
+        critical = partner[g] < 0
+        ax.text(x, y, text, ha="center", va="center", zorder=2,
+                bbox=dict(boxstyle="round", fc="white", ec="crimson" if critical else "0.6", lw=2 if critical else 1))
+    ax.set_xlim(min(p[0] for p in pos.values()) - 0.7, max(p[0] for p in pos.values()) + 0.7)
+    ax.set_ylim(-0.5, cx.dimension + 0.5)
+    ax.set_axis_off()
+    return ax

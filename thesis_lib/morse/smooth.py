@@ -1,0 +1,186 @@
+"""Smooth Morse theory examples of thesis §4.1: the upright torus, Morse inequalities, Morse complexes."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+import scipy.optimize
+import scipy.sparse as sp
+
+from .morse_complex import chain_complex_homology
+
+__all__ = [
+    "torus_height",
+    "torus_height_gradient",
+    "torus_height_hessian",
+    "morse_index",
+    "torus_critical_points",
+    "morse_inequalities",
+    "sphere_morse_complex",
+    "rp2_morse_complex",
+    "torus_morse_complex",
+]
+
+
+def _check_radii(R: float, r: float) -> tuple[float, float]:
+    R, r = float(R), float(r)
+    if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
+        raise ValueError(f"the upright torus needs finite radii with R > r > 0, got R={R}, r={r}")
+    return R, r
+
+
+def torus_height(u, v, R: float = 2.0, r: float = 1.0):
+    """Height h(u, v) = cos(u)(R + r cos v) on the torus φ(u, v) of Example 4.2.
+
+    Thesis: Example 4.2.
+    """
+    R, r = _check_radii(R, r)
+    return np.cos(u) * (R + r * np.cos(v))
+
+
+def torus_height_gradient(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
+    """h_*(u, v) = (-sin(u)(R + r cos v), -r cos(u) sin v).
+
+    Thesis: Example 4.2.
+    """
+    R, r = _check_radii(R, r)
+    return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
+
+
+def torus_height_hessian(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
+    """The Hessian of h in the coordinates (u, v).
+
+    Thesis: Example 4.2 (e.g. diag(-(R + r), -r) at (0, 0)).
+    """
+    R, r = _check_radii(R, r)
+    return np.array(
+        [
+            [-np.cos(u) * (R + r * np.cos(v)), r * np.sin(u) * np.sin(v)],
+            [r * np.sin(u) * np.sin(v), -r * np.cos(u) * np.cos(v)],
+        ]
+    )
+
+
+def morse_index(hessian, tol: float = 1e-9) -> int:
+    """Number of negative eigenvalues of a non-degenerate Hessian (the Morse index).
+
+    Thesis: §4.1.1 (index of a non-degenerate critical point), Definition 4.1.
+
+    Raises ValueError if the Hessian is not a finite symmetric square matrix or is degenerate.
+    """
+    h = np.asarray(hessian, dtype=float)
+    if h.ndim != 2 or h.shape[0] != h.shape[1] or not np.all(np.isfinite(h)):
+        raise ValueError(f"a Hessian is a finite square matrix, got shape {h.shape}")
+    if not np.allclose(h, h.T, atol=1e-9):
+        raise ValueError("the Hessian is not symmetric")
+    ev = np.linalg.eigvalsh(h)
+    if np.min(np.abs(ev)) <= tol * max(1.0, np.max(np.abs(ev))):
+        raise ValueError("the critical point is degenerate (det H = 0): not a Morse function")
+    return int(np.sum(ev < 0))
+
+
+def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list[dict]:
+    """Critical points of the height on the upright torus, found numerically from a grid of starts.
+
+    Thesis: Example 4.2 / Figure 4.1 (r, q_1, q_2, p of indices 0, 1, 1, 2).
+
+    Newton iterations (``scipy.optimize.root`` with the analytic Hessian as Jacobian) from a
+    ``grid × grid`` lattice of (u, v); the roots are reduced to [0, 2π)², merged, and classified
+    by the Hessian.  Returns dicts with ``u, v, point (x, y, z), value, index``, sorted by value.
+    """
+    R, r = _check_radii(R, r)
+    if int(grid) < 2:
+        raise ValueError(f"grid must be at least 2, got {grid}")
+    two_pi = 2 * np.pi
+    found: list[np.ndarray] = []
+    starts = np.linspace(0, two_pi, int(grid), endpoint=False) + 0.1
+    for u0 in starts:
+        for v0 in starts:
+            sol = scipy.optimize.root(
+                lambda x: torus_height_gradient(x[0], x[1], R, r),
+                np.array([u0, v0]),
+                jac=lambda x: torus_height_hessian(x[0], x[1], R, r),
+                method="hybr",
+            )
+            if not sol.success or np.linalg.norm(torus_height_gradient(*sol.x, R, r)) > 1e-10:
+                continue
+            x = np.mod(sol.x, two_pi)
+            x[np.isclose(x, two_pi, atol=1e-8)] = 0.0
+            if not any(np.allclose(np.mod(x - y + np.pi, two_pi) - np.pi, 0, atol=1e-6) for y in found):
+                found.append(x)
+    out = []
+    for u, v in found:
+        point = (np.sin(u) * (R + r * np.cos(v)), r * np.sin(v), np.cos(u) * (R + r * np.cos(v)))
+        out.append(
+            dict(
+                u=float(u), v=float(v), point=tuple(float(c) for c in point),
+                value=float(torus_height(u, v, R, r)), index=morse_index(torus_height_hessian(u, v, R, r)),
+            )
+        )
+    return sorted(out, key=lambda d: d["value"])
+
+
+def morse_inequalities(critical_counts: Sequence[int], betti: Sequence[int]) -> dict[str, bool]:
+    """Check β_k ≤ Crit_k, Σ(-1)^k β_k = Σ(-1)^k Crit_k and the strong inequalities.
+
+    Thesis: Theorems 4.6 and 4.7 (and their discrete versions, Theorems 4.27–4.28).
+
+    Returns ``{"weak": ..., "euler": ..., "strong": ...}``.
+    """
+    c = np.asarray(critical_counts, dtype=np.int64)
+    b = np.asarray(betti, dtype=np.int64)
+    if c.ndim != 1 or b.ndim != 1 or (c < 0).any() or (b < 0).any():
+        raise ValueError("critical counts and Betti numbers are 1-D lists of non-negative integers")
+    n = max(c.size, b.size)
+    c = np.pad(c, (0, n - c.size))
+    b = np.pad(b, (0, n - b.size))
+    signs = (-1) ** np.arange(n)
+    strong = all(
+        int(np.sum(signs[: k + 1][::-1] * b[: k + 1])) <= int(np.sum(signs[: k + 1][::-1] * c[: k + 1])) for k in range(n)
+    )
+    return {
+        "weak": bool(np.all(b <= c)),
+        "euler": bool(np.sum(signs * b) == np.sum(signs * c)),
+        "strong": bool(strong),
+    }
+
+
+def _complex(mats: list[list[list[int]]], sizes: list[int]) -> list[sp.csc_matrix]:
+    out = [sp.csc_matrix((0, sizes[0]), dtype=np.int64)]
+    out += [sp.csc_matrix(np.array(m, dtype=np.int64).reshape(sizes[k], sizes[k + 1])) for k, m in enumerate(mats)]
+    return out
+
+
+def sphere_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tuple[int, list[int]]]]:
+    """The integer Morse complex of h = c_1u² + c_2v² + c_3w² on S² and its homology.
+
+    Thesis: Example 4.18 (∂p_i = q_1 + q_2, ∂q_1 = r_1 - r_2, ∂q_2 = r_2 - r_1).
+
+    Returns the critical points per index, the boundary matrices and the homology over Z.
+    """
+    names = [["r1", "r2"], ["q1", "q2"], ["p1", "p2"]]
+    mats = _complex([[[1, -1], [-1, 1]], [[1, 1], [1, 1]]], [2, 2, 2])
+    return names, mats, chain_complex_homology(mats, 0)
+
+
+def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tuple[int, list[int]]]]:
+    """The Morse complex of RP² over Z/2: two flow lines p → q and two q → r.
+
+    Thesis: Example 4.19 (Z_2 → Z_2 → Z_2 with zero maps).
+
+    The matrices hold the numbers of flow lines (2), which vanish mod 2; homology over Z/2.
+    """
+    names = [["r"], ["q"], ["p"]]
+    mats = _complex([[[2]], [[2]]], [1, 1, 1])
+    return names, mats, chain_complex_homology(mats, 2)
+
+
+def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tuple[int, list[int]]]]:
+    """The Morse complex of the tilted upright torus over Z/2.
+
+    Thesis: Example 4.17 (∂p = 2q_2 + 2q_1 = 0, ∂q_i = 2r = 0).
+    """
+    names = [["r"], ["q1", "q2"], ["p"]]
+    mats = _complex([[[2, 2]], [[2], [2]]], [1, 2, 1])
+    return names, mats, chain_complex_homology(mats, 2)

@@ -1,0 +1,13 @@
+"""Persistent homology (thesis §2.3): the thesis's algorithm, a fast engine, barcodes and their plots."""
+
+from .algorithm import compute_intervals, trace_matrices
+from .barcode import Barcode
+from .engine import persistence
+
+__all__ = ["Barcode", "compute_intervals", "persistence", "trace_matrices"]
+from .plotting import plot_barcode, plot_diagram
+
+__all__ += ["plot_barcode", "plot_diagram"]
+from .summaries import long_bars, long_betti
+
+__all__ += ["long_bars", "long_betti"]

@@ -1,0 +1,196 @@
+"""The thesis's persistence algorithm, literally: Reduce (Algorithm 1) and ComputeIntervals (Algorithm 2).
+
+Readable pure Python on sparse chains ``{index: coefficient}``; meant for small complexes, the
+notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ._input import as_filtration, check_prime
+from .barcode import Barcode
+
+__all__ = ["compute_intervals", "trace_matrices"]
+
+
+def _inverse(q: int, p: int) -> int:
+    """q^{-1} in Z/p (Fermat: q^{p-2})."""
+    return pow(q, p - 2, p)
+
+
+def compute_intervals(filtration, p: int = 2, trace: list | None = None) -> Barcode:
+    """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
+
+    Thesis: Algorithms 1–2, §2.3.5 (after Zomorodian and Carlsson), O(m³) in the number of simplices m.
+
+    Parameters
+    ----------
+    filtration : a :class:`~thesis_lib.complexes.Filtration` or any iterable of ``(simplex, value)``
+        pairs in filtration order (non-decreasing values, faces before cofaces).
+    p : a prime; the coefficients are the field Z/p.
+    trace : optional list; if given, one dict per simplex σ^j is appended recording the steps of
+        Reduce(σ^j): ``j``, ``simplex``, ``dim``, ``value``, ``boundary`` (∂σ^j as ``{i: coeff}``),
+        ``removed`` (the unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per
+        subtraction ``d = d − factor·T[i]``), ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
+        Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; each entry also holds
+        ``order``, the list of all simplices in that order, on the first entry.
+
+    Returns
+    -------
+    Barcode
+        Intervals ``(deg σ^i, deg σ^j)`` and ``(deg σ^j, ∞)``; zero-length ones are left out.
+    """
+    K = as_filtration(filtration)
+    p = check_prime(p)
+
+    # "First, sort the simplices by dimension and then by degree.  The ordering between simplices
+    #  with the same dimension and degree will be irrelevant."  We keep the filtration's own order
+    #  among equal degrees (a stable sort), so the pairs match the fast engine's simplex for simplex.
+    sigma: list[tuple[int, ...]] = []  # σ^0, ..., σ^{m-1}
+    deg: list[float] = []  # deg σ^j (the filtration value at which σ^j enters)
+    dim_of: list[int] = []
+    source: list[int] = []  # index of σ^j in K.simplices[dim]
+    for d in range(K.dimension + 1):
+        for j in np.argsort(K.values[d], kind="stable").tolist():
+            sigma.append(tuple(int(v) for v in K.simplices[d][j]))
+            deg.append(float(K.values[d][j]))
+            dim_of.append(d)
+            source.append(j)
+    m = len(sigma)
+    index = {s: j for j, s in enumerate(sigma)}
+
+    # "At the same time we also create an array T with one slot for each simplex."
+    T: list[tuple[int, dict[int, int]] | None] = [None] * m
+    marked = [False] * m
+
+    def boundary(j: int) -> dict[int, int]:
+        # d = ∂_p σ = Σ_k (-1)^k [x_0, ..., x̂_k, ..., x_p] (Definition 2.18), coefficients in Z/p.
+        s = sigma[j]
+        if len(s) == 1:
+            return {}
+        return {index[s[:k] + s[k + 1 :]]: (-1) ** k % p for k in range(len(s))}
+
+    def reduce(j: int, record: dict | None) -> dict[int, int]:
+        # Algorithm 1: Reduce.  Input: a simplex σ = σ^j.
+        # p = dim σ;  d = ∂_p σ;
+        d = boundary(j)
+        if record is not None:
+            record["boundary"] = dict(d)
+        # Remove unmarked terms in d;   (unmarked faces are negative: their rows were deleted)
+        removed = [i for i in d if not marked[i]]
+        for i in removed:
+            del d[i]
+        if record is not None:
+            record["removed"] = [sigma[i] for i in removed]
+        # while d ≠ ∅ do
+        while d:
+            # i = maxindex d;
+            i = max(d)
+            # if T[i] is empty then break;
+            if T[i] is None:
+                break
+            # Let q be the coefficient of σ^i in T[i];
+            _, Ti = T[i]
+            q = Ti[i]
+            # d = d − q^{-1} T[i];   (the thesis's line assumes the coefficient of σ^i in d is 1; in
+            # general we subtract d_i q^{-1} T[i], which clears the term σ^i over Z/p)
+            factor = d[i] * _inverse(q, p) % p
+            for k, c in Ti.items():
+                v = (d.get(k, 0) - factor * c) % p
+                if v:
+                    d[k] = v
+                else:
+                    d.pop(k, None)
+            if record is not None:
+                record["steps"].append({"i": i, "q": q, "factor": factor, "T": dict(Ti)})
+        # end; return d;
+        return d
+
+    # Algorithm 2: ComputeIntervals.
+    # for p = 0 to dim(K) do L_p = ∅;
+    L: dict[int, list[tuple[float, float]]] = {q: [] for q in range(K.dimension + 1)}
+    pairs: dict[int, list[tuple[int, int]]] = {q: [] for q in range(K.dimension + 1)}
+    # for j = 0 to m − 1 do
+    for j in range(m):
+        record = None
+        if trace is not None:
+            record = {"j": j, "simplex": sigma[j], "dim": dim_of[j], "value": deg[j], "steps": []}
+            if j == 0:
+                record["order"] = list(sigma)
+        # d = Reduce(σ^j);
+        d = reduce(j, record)
+        if not d:
+            # if d = ∅ then Mark σ^j;
+            marked[j] = True
+            pivot = None
+        else:
+            # i = maxindex d;  p = dim σ^j;  Store j and d in T[i];
+            i = max(d)
+            q = dim_of[i]
+            T[i] = (j, d)
+            # L_p = L_p ∪ {(deg σ^i, deg σ^j)};   (σ^i is a (p−1)-simplex: the interval belongs to H_{p−1})
+            L[q].append((deg[i], deg[j]))
+            pairs[q].append((source[i], source[j]))
+            pivot = i
+        if record is not None:
+            record.update(result=dict(d), marked=marked[j], pivot=pivot)
+            trace.append(record)
+    # for j = 0 to m − 1 do: if σ^j is marked and T[j] is empty then L_p = L_p ∪ {(deg σ^j, ∞)};
+    for j in range(m):
+        if marked[j] and T[j] is None:
+            q = dim_of[j]
+            L[q].append((deg[j], math.inf))
+            pairs[q].append((source[j], -1))
+    return Barcode(
+        {q: np.array(v, dtype=np.float64).reshape(-1, 2) for q, v in L.items()},
+        range(K.dimension + 1),
+        p=p,
+        simplices={q: np.array(v, dtype=np.int64).reshape(-1, 2) for q, v in pairs.items()},
+        filtration=K,
+        killers={q: np.array([t for _, t in v if t >= 0], dtype=np.int64) for q, v in pairs.items()},
+    )
+
+
+def _t_power(c: int, power: float, p: int) -> str:
+    """An entry c·t^power of a boundary matrix over F[t], c shown as a signed residue mod p."""
+    c = c - p if c > p // 2 else c
+    k = int(power) if float(power).is_integer() else power
+    mono = "1" if k == 0 else ("t" if k == 1 else f"t^{k}")
+    if mono == "1":
+        return str(c)
+    return mono if c == 1 else ("-" + mono if c == -1 else f"{c}{mono}")
+
+
+def trace_matrices(trace: list[dict], p: int, names: str | None = None) -> tuple[list[list[str]], list[list[str]]]:
+    """The two m × m tables of Example 2.41 from a trace of :func:`compute_intervals`.
+
+    Thesis: Example 2.41 (the boundary matrix over F[t] before and after ComputeIntervals, the
+    latter with the unmarked rows removed).
+
+    Returns ``(before, after)``, each a list of rows of strings, header row and column first; an
+    entry c·t^k means coefficient c (a signed residue mod ``p``) at the power k = deg σ^j − deg σ^i.
+    ``names`` maps vertex numbers to letters (e.g. ``"abcde"``).
+    """
+    if not trace or "order" not in trace[0]:
+        raise ValueError("trace must be the full list filled by compute_intervals(..., trace=[])")
+    order = trace[0]["order"]
+    deg = [r["value"] for r in trace]
+    label = ["".join(names[v] for v in s) if names else ",".join(map(str, s)) for s in order]
+
+    def table(rows: list[int], cols: list[dict[int, int]]) -> list[list[str]]:
+        out = [["*"] + label]
+        for i in rows:
+            line = [label[i]]
+            for j, col in enumerate(cols):
+                c = col.get(i, 0)
+                line.append(_t_power(c, deg[j] - deg[i], p) if c else "0")
+            out.append(line)
+        return out
+
+    before = table(list(range(len(order))), [r["boundary"] for r in trace])
+    marked = [r["j"] for r in trace if r["marked"]]
+    after = table(marked, [r["result"] for r in trace])
+    return before, after

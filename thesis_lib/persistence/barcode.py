@@ -1,0 +1,258 @@
+"""Barcodes: the P-intervals of a filtered complex, one ``(k, 2)`` array per homology dimension."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import numpy as np
+
+__all__ = ["Barcode"]
+
+
+def _as_interval_array(rows: Any) -> np.ndarray:
+    arr = np.asarray(rows, dtype=np.float64)
+    if arr.size == 0:
+        return np.empty((0, 2), dtype=np.float64)
+    arr = arr.reshape(-1, 2)
+    if np.isnan(arr).any():
+        raise ValueError("persistence intervals must not contain NaN")
+    if (arr[:, 1] < arr[:, 0]).any():
+        i = int(np.argmax(arr[:, 1] < arr[:, 0]))
+        raise ValueError(f"interval ({arr[i, 0]}, {arr[i, 1]}) dies before it is born")
+    return arr
+
+
+def _canonical(arr: np.ndarray, extra: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray | None]:
+    """Drop zero-length intervals and sort by (birth, death) (two stable sorts: faster than lexsort)."""
+    keep = arr[:, 1] > arr[:, 0]
+    if not keep.all():
+        arr = arr[keep]
+        extra = None if extra is None else extra[keep]
+    b, d = arr[:, 0], arr[:, 1]
+    if arr.shape[0] > 1 and not _is_sorted(b, d):
+        if np.isinf(d).all():
+            order = np.argsort(b, kind="stable")
+        else:
+            order = np.argsort(d, kind="stable")
+            order = order[np.argsort(b[order], kind="stable")]
+        arr = arr[order]
+        extra = None if extra is None else extra[order]
+    arr = np.ascontiguousarray(arr)
+    if extra is not None:
+        extra = np.ascontiguousarray(extra)
+    return arr, extra
+
+
+def _is_sorted(b: np.ndarray, d: np.ndarray) -> bool:
+    db = b[1:] - b[:-1]
+    return bool(np.all((b[1:] > b[:-1]) | ((b[1:] == b[:-1]) & (d[1:] >= d[:-1])))) if db.size else True
+
+
+class Barcode:
+    """The barcode of a filtered complex: finite and infinite P-intervals ``(birth, death)`` per dimension.
+
+    Thesis: Definition 2.34 and Corollary 2.35 (P-intervals ↔ graded F[t]-modules; the barcode).
+
+    Intervals are half-open ``[birth, death)``; ``death = inf`` marks an essential class; intervals of
+    length zero are left out (DESIGN.md conventions).  Within a dimension the intervals are sorted by
+    ``(birth, death)``, so two barcodes are equal exactly when their arrays are.
+
+    Parameters
+    ----------
+    intervals : mapping ``dim -> (k, 2)`` array-like of ``(birth, death)``.
+    dimensions : homology dimensions that were computed (default: the keys of ``intervals``);
+        a computed dimension may have no intervals.
+    p : the coefficient field Z/p the barcode was computed over (``None`` if unknown).
+    simplices : optional mapping ``dim -> (k, 2)`` int array, parallel to ``intervals``: the index
+        (into ``filtration.simplices[dim]``) of the simplex creating each class and the index (into
+        ``filtration.simplices[dim + 1]``) of the simplex killing it, ``-1`` for an essential class.
+    filtration : the filtration the barcode was computed from (needed for :meth:`representative`).
+    killers : optional mapping ``dim -> indices`` of every (dim+1)-simplex that kills a dim-class,
+        zero-length pairs included (needed for :meth:`representative`).
+    """
+
+    def __init__(
+        self,
+        intervals: Mapping[int, Any],
+        dimensions: Iterable[int] | None = None,
+        *,
+        p: int | None = None,
+        simplices: Mapping[int, np.ndarray] | None = None,
+        filtration: Any = None,
+        killers: Mapping[int, np.ndarray] | None = None,
+    ):
+        dims = sorted(set(int(d) for d in (intervals.keys() if dimensions is None else dimensions)))
+        if any(d < 0 for d in dims):
+            raise ValueError("homology dimensions must be non-negative")
+        extra_dims = set(int(d) for d in intervals) - set(dims)
+        if extra_dims:
+            raise ValueError(f"intervals given for dimensions {sorted(extra_dims)} outside {dims}")
+        self._dims = tuple(dims)
+        self.p = p
+        self.filtration = filtration
+        # raw (validated) arrays; each dimension is put in canonical form on first use
+        self._raw: dict[int, tuple[np.ndarray, np.ndarray | None]] = {}
+        self._done: dict[int, tuple[np.ndarray, np.ndarray | None]] = {}
+        self._has_simplices = simplices is not None
+        for d in dims:
+            arr = _as_interval_array(intervals.get(d, []))
+            extra = None
+            if simplices is not None:
+                extra = np.asarray(simplices.get(d, np.empty((0, 2))), dtype=np.int64).reshape(-1, 2)
+                if extra.shape[0] != arr.shape[0]:
+                    raise ValueError(f"dimension {d}: {arr.shape[0]} intervals but {extra.shape[0]} simplex pairs")
+            self._raw[d] = (arr, extra)
+        self._killers = None if killers is None else {int(d): np.asarray(k, dtype=np.int64) for d, k in killers.items()}
+        self._representatives: dict[int, Any] = {}
+
+    # ------------------------------------------------------------------ construction
+    @classmethod
+    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]], dimensions: Iterable[int] | None = None) -> Barcode:
+        """Build from ``(dim, (birth, death))`` pairs, the format of GUDHI's ``persistence()``.
+
+        Thesis: Definition 2.34 (a set of P-intervals per dimension).
+        """
+        by_dim: dict[int, list[tuple[float, float]]] = {}
+        for dim, (b, d) in pairs:
+            by_dim.setdefault(int(dim), []).append((float(b), float(d)))
+        return cls(by_dim, dimensions)
+
+    # ------------------------------------------------------------------ queries
+    @property
+    def dimensions(self) -> tuple[int, ...]:
+        """The homology dimensions this barcode covers (0 .. dim K for a computed barcode)."""
+        return self._dims
+
+    def _get(self, dim: int) -> tuple[np.ndarray, np.ndarray | None]:
+        if dim not in self._done:
+            if dim not in self._raw:
+                return np.empty((0, 2), dtype=np.float64), np.empty((0, 2), dtype=np.int64)
+            arr, extra = _canonical(*self._raw.pop(dim))
+            arr.setflags(write=False)
+            if extra is not None:
+                extra.setflags(write=False)
+            self._done[dim] = (arr, extra)
+        return self._done[dim]
+
+    def intervals(self, dim: int) -> np.ndarray:
+        """``(k, 2)`` read-only array of ``(birth, death)`` in dimension ``dim``, sorted; ``death = inf`` if essential.
+
+        Thesis: Theorem 2.39 (the intervals read off the column-echelon form).
+        """
+        dim = int(dim)
+        if dim < 0:
+            raise ValueError(f"homology dimension must be non-negative, got {dim}")
+        return self._get(dim)[0]
+
+    def betti(self, value: float, dim: int) -> int:
+        """Betti number of ``H_dim`` of the complex at filtration value ``value``: bars with birth ≤ value < death.
+
+        Thesis: §2.3.1, β_p^l = rank H_p^l (the special case k = 0 of Definition 2.23).
+        """
+        return self.persistent_betti(value, 0.0, dim)
+
+    def persistent_betti(self, l: float, k: float, dim: int) -> int:
+        """Rank of the k-persistent homology group H_dim^{l,k}: intervals spanning ``[l, l + k]``.
+
+        Thesis: Definition 2.23 and Theorem 2.37 (the rank equals the number of intervals spanning
+        [l, l + k]); an interval ``[b, d)`` spans it when ``b ≤ l`` and ``d > l + k``.
+        """
+        l, k = float(l), float(k)
+        if np.isnan(l) or np.isnan(k):
+            raise ValueError("l and k must not be NaN")
+        if k < 0:
+            raise ValueError(f"the persistence k must be non-negative, got {k}")
+        arr = self.intervals(dim)
+        return int(np.count_nonzero((arr[:, 0] <= l) & (arr[:, 1] > l + k)))
+
+    def __len__(self) -> int:
+        return int(sum(self.intervals(d).shape[0] for d in self._dims))
+
+    def as_pairs(self) -> list[tuple[int, tuple[float, float]]]:
+        """All intervals as ``(dim, (birth, death))`` pairs (GUDHI's format), by dimension then birth."""
+        return [(d, (float(b), float(e))) for d in self._dims for b, e in self.intervals(d).tolist()]
+
+    def longest(self, dim: int, n: int = 1) -> np.ndarray:
+        """Indices (into :meth:`intervals`) of the ``n`` longest intervals in ``dim``, longest first.
+
+        Thesis: §2.3 (long bars are the persistent features, short ones noise).
+        """
+        arr = self.intervals(dim)
+        order = np.lexsort((arr[:, 0], -(arr[:, 1] - arr[:, 0])))
+        return order[: int(n)]
+
+    # ------------------------------------------------------------------ comparison
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Barcode):
+            return NotImplemented
+        return self.difference(other, atol=0.0) is None
+
+    __hash__ = None  # compared by value
+
+    def allclose(self, other: Barcode, atol: float = 1e-9) -> bool:
+        """Same intervals in every dimension up to ``atol`` (dimensions without intervals are ignored).
+
+        Thesis: Corollary 2.35 (a barcode determines the persistence module up to isomorphism).
+        """
+        return self.difference(other, atol=atol) is None
+
+    def difference(self, other: Barcode, atol: float = 0.0) -> str | None:
+        """``None`` if both barcodes agree up to ``atol``, else a message naming the first difference."""
+        for d in sorted(set(self._dims) | set(other.dimensions)):
+            a, b = self.intervals(d), other.intervals(d)
+            if a.shape != b.shape:
+                return f"H{d}: {a.shape[0]} intervals vs {b.shape[0]}"
+            if a.size == 0:
+                continue
+            inf_a, inf_b = np.isinf(a), np.isinf(b)
+            if not np.array_equal(inf_a, inf_b):
+                return f"H{d}: the essential intervals differ"
+            fa, fb = np.where(inf_a, 0.0, a), np.where(inf_b, 0.0, b)
+            bad = np.abs(fa - fb) > atol
+            if bad.any():
+                i = int(np.argmax(bad.any(axis=1)))
+                return f"H{d}: interval {tuple(a[i])} vs {tuple(b[i])}"
+        return None
+
+    def __repr__(self) -> str:
+        parts = ", ".join(
+            f"H{d}: {self.intervals(d).shape[0]} ({int(np.isinf(self.intervals(d)[:, 1]).sum())} essential)"
+            for d in self._dims
+        )
+        return f"Barcode({parts})"
+
+    # ------------------------------------------------------------------ representatives
+    def simplex_pairs(self, dim: int) -> np.ndarray:
+        """``(k, 2)`` indices of the creating simplex (in ``simplices[dim]``) and killing one (in
+        ``simplices[dim + 1]``, ``-1`` if essential) of each interval of :meth:`intervals`.
+
+        Thesis: Algorithm 2 (each interval is a pair (σ^i, σ^j) of simplices).
+        """
+        if not self._has_simplices:
+            raise ValueError("this barcode does not know its simplices (it was not computed from a filtration)")
+        return self._get(int(dim))[1]
+
+    def representative(self, dim: int, i: int) -> list[tuple[tuple[int, ...], int]]:
+        """A cycle representing interval ``i`` of :meth:`intervals` ``(dim)``: ``[(simplex, coefficient), ...]``.
+
+        Thesis: Theorem 2.39 (z_i: a cycle born at the interval's birth; for a finite interval it is
+        the reduced boundary of the killing simplex, so it becomes a boundary at the death).
+
+        Coefficients lie in ``1 .. p - 1``; simplices are vertex tuples, listed in filtration order.
+        """
+        from .representatives import Representatives
+
+        if self.filtration is None or not self._has_simplices or self._killers is None:
+            raise ValueError("representatives need a barcode computed from a filtration")
+        dim, i = int(dim), int(i)
+        arr = self.intervals(dim)
+        if not 0 <= i < arr.shape[0]:
+            raise ValueError(f"no interval {i} in dimension {dim} (there are {arr.shape[0]})")
+        if dim not in self._representatives:
+            empty = np.empty(0, dtype=np.int64)
+            self._representatives[dim] = Representatives(
+                self.filtration, dim, self.p or 2, self._killers.get(dim, empty), self._killers.get(dim - 1, empty)
+            )
+        sigma, tau = self.simplex_pairs(dim)[i]
+        return self._representatives[dim].cycle(int(sigma), int(tau))

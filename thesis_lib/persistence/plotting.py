@@ -1,0 +1,148 @@
+"""Barcodes and persistence diagrams in the thesis's style (Figures 2.10 and 2.12), with matplotlib."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from .barcode import Barcode
+
+__all__ = ["plot_barcode", "plot_diagram", "DIM_COLORS"]
+
+#: one colour per homology dimension, shared by barcodes and diagrams
+DIM_COLORS = ("#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d68910")
+
+
+def _color(dim: int) -> str:
+    return DIM_COLORS[dim % len(DIM_COLORS)]
+
+
+def _dims(barcode: Barcode, dims: Sequence[int] | None) -> list[int]:
+    dims = list(barcode.dimensions if dims is None else dims)
+    if not dims:
+        raise ValueError("no homology dimension to plot")
+    return [int(d) for d in dims]
+
+
+def _right_edge(barcode: Barcode, dims: list[int], max_value: float | None) -> float:
+    if max_value is not None:
+        return float(max_value)
+    finite = [v for d in dims for v in barcode.intervals(d).ravel() if np.isfinite(v)]
+    top = max(finite) if finite else 1.0
+    return top + 0.15 * (top - min(finite + [0.0]) or 1.0)
+
+
+def plot_barcode(
+    barcode: Barcode,
+    dims: Sequence[int] | None = None,
+    *,
+    axes=None,
+    max_value: float | None = None,
+    min_length: float = 0.0,
+    xlabel: str = "filtration value",
+    title: str | None = None,
+):
+    """Draw a barcode: one panel per dimension, one horizontal bar per interval, arrows for ∞.
+
+    Thesis: Figures 2.10 and 2.12 (barcodes; the vertical axis is an arbitrary ordering).
+
+    Parameters
+    ----------
+    barcode : the Barcode.
+    dims : dimensions to draw (default: all computed ones), one panel each, top to bottom.
+    axes : optional sequence of matplotlib axes (one per dimension); a new figure otherwise.
+    max_value : right end of the axis; essential bars run to it and end in an arrow.
+    min_length : leave out bars shorter than this (noise).
+    Returns the figure.
+    """
+    import matplotlib.pyplot as plt
+
+    dims = _dims(barcode, dims)
+    if min_length < 0 or np.isnan(min_length):
+        raise ValueError(f"min_length must be >= 0, got {min_length}")
+    right = _right_edge(barcode, dims, max_value)
+    bars = {}
+    for d in dims:
+        iv = barcode.intervals(d)
+        bars[d] = iv[(iv[:, 1] - iv[:, 0]) >= min_length] if min_length else iv
+    if axes is None:
+        heights = [max(1, bars[d].shape[0]) for d in dims]
+        ratios = [0.6 + min(h, 40) for h in heights]
+        fig, axes = plt.subplots(
+            len(dims), 1, sharex=True, squeeze=False, figsize=(6.4, 0.9 + 0.22 * sum(min(h, 40) for h in heights) + 0.5 * len(dims)),
+            gridspec_kw={"height_ratios": ratios},
+        )
+        axes = axes[:, 0]
+    else:
+        axes = list(np.atleast_1d(axes))
+        if len(axes) != len(dims):
+            raise ValueError(f"need {len(dims)} axes, got {len(axes)}")
+        fig = axes[0].figure
+    left = min([0.0] + [float(bars[d][:, 0].min()) for d in dims if bars[d].size])
+    for ax, d in zip(axes, dims):
+        iv = bars[d]
+        # longest bars on top, as in the thesis's figures (births left to right)
+        order = np.lexsort((-(np.minimum(iv[:, 1], right) - iv[:, 0]), iv[:, 0])) if iv.size else []
+        lw = 3.0 if iv.shape[0] <= 40 else max(0.6, 120.0 / iv.shape[0])
+        for y, k in enumerate(order):
+            b, e = iv[k]
+            if np.isfinite(e):
+                ax.hlines(y, b, e, color=_color(d), lw=lw)
+            else:
+                ax.hlines(y, b, right, color=_color(d), lw=lw)
+                ax.annotate(
+                    "", xy=(right, y), xytext=(right - 0.02 * (right - left), y),
+                    arrowprops={"arrowstyle": "-|>", "color": _color(d), "lw": lw, "mutation_scale": 12},
+                    annotation_clip=False,
+                )  # fmt: skip
+        ax.set_ylim(-1, max(1, iv.shape[0]))
+        ax.invert_yaxis()
+        ax.set_yticks([])
+        ax.set_ylabel(f"$H_{d}$", rotation=0, labelpad=14, va="center")
+        for side in ("top", "right", "left"):
+            ax.spines[side].set_visible(False)
+        ax.set_xlim(left - 0.02 * (right - left), right * 1.0 + 0.03 * (right - left))
+    axes[-1].set_xlabel(xlabel)
+    if title:
+        axes[0].set_title(title)
+    return fig
+
+
+def plot_diagram(
+    barcode: Barcode,
+    dims: Sequence[int] | None = None,
+    *,
+    ax=None,
+    max_value: float | None = None,
+    title: str | None = None,
+):
+    """Persistence diagram: each interval as a point (birth, death); essential ones on a line marked ∞.
+
+    Thesis: Theorem 2.37 (β^{l,k} counts the points up-left of (l, l + k)); §2.3 barcodes as points.
+    Returns the figure.
+    """
+    import matplotlib.pyplot as plt
+
+    dims = _dims(barcode, dims)
+    right = _right_edge(barcode, dims, max_value)
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(4.6, 4.6))
+    else:
+        fig = ax.figure
+    ax.plot([0, right], [0, right], color="0.5", lw=0.8)
+    ax.axhline(right, color="0.7", lw=0.8, ls="--")
+    for d in dims:
+        iv = barcode.intervals(d)
+        death = np.where(np.isfinite(iv[:, 1]), iv[:, 1], right)
+        ax.scatter(iv[:, 0], death, s=14, color=_color(d), label=f"$H_{d}$", zorder=3, edgecolor="none")
+    ax.set_xlim(-0.02 * right, right * 1.04)
+    ax.set_ylim(-0.02 * right, right * 1.06)
+    ax.set_xlabel("birth")
+    ax.set_ylabel("death")
+    ax.text(0.01 * right, right * 1.01, "∞", va="bottom")
+    ax.legend(loc="lower right", frameon=False)
+    ax.set_aspect("equal")
+    if title:
+        ax.set_title(title)
+    return fig
