@@ -54,3 +54,16 @@ def test_figures_are_byte_identical_on_rerun(tmp_path):
         blobs.append(rec.savefig(fig, "line").read_bytes())
         plt.close(fig)
     assert blobs[0] == blobs[1]
+
+
+def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
+    from thesis_lib.results import figure
+
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    rec = Recorder("demo", "")
+    fig, ax = plt.subplots()
+    rec.savefig(fig, "plot")
+    plt.close(fig)
+    assert figure("demo", "plot").filename.endswith("experiments/results/demo/plot.png")
+    with pytest.raises(FileNotFoundError, match="make experiments"):
+        figure("demo", "nothing")

@@ -117,9 +117,21 @@ def test_sweep_resumes_keeps_going_past_failures_and_writes_a_table(root):
         ("1", "False", "ok"), ("1", "True", "failed"), ("2", "False", "ok"), ("2", "True", "failed")
     ]
     assert rows[2]["square"] == "4"
-    assert table.with_suffix(".md").read_text().startswith("| n | fail | status |")
+    md = table.with_suffix(".md").read_text()
+    assert md.startswith("`thesis-lab sweep toy -p n 1 2 -p fail False True`\n\n| n | fail | status |")
+    assert runner.stored_sweeps("toy") == []
     runs2, _ = runner.sweep("toy", {"n": [1, 2], "fail": [False, True]}, progress=False)
     assert [r.status for r in runs2] == ["skipped", "failed", "skipped", "failed"]
+
+
+def test_kept_sweeps_are_stored_with_the_default_run(root):
+    runner.sweep("toy", {"n": [2]}, progress=False, keep=True)
+    (table,) = runner.stored_sweeps("toy")
+    assert "| 2 | ok |" in table
+    (narrow,) = runner.stored_sweeps("toy", ["n", "square"])
+    assert narrow.splitlines()[2:] == ["| n | square |", "|---|---|", "| 2 | 4 |"]
+    with pytest.raises(ValueError, match="has no columns"):
+        runner.stored_sweeps("toy", ["nothing"])
 
 
 def test_sweep_in_parallel_gives_the_same_table(root):

@@ -44,7 +44,7 @@ def _cmd_run(args) -> int:
 def _cmd_sweep(args) -> int:
     from .runner import sweep
 
-    runs, table = sweep(args.experiment, _grid(args.param), jobs=args.jobs, progress=not args.quiet)
+    runs, table = sweep(args.experiment, _grid(args.param), jobs=args.jobs, progress=not args.quiet, keep=args.keep)
     print(table.with_suffix(".md").read_text())
     print(f"table: {table} (and {table.with_suffix('.md').name})")
     failed = [r for r in runs if r.status == "failed"]
@@ -111,6 +111,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("-p", "--param", nargs="+", action="append", metavar="NAME VALUE")
     p.add_argument("-j", "--jobs", type=int, default=1)
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
     p.set_defaults(func=_cmd_sweep)
 
     p = sub.add_parser("store", help="re-execute stored default runs in place (all experiments by default)")

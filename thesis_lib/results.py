@@ -13,7 +13,7 @@ from pathlib import Path
 
 from .paths import repo_root
 
-__all__ = ["Recorder", "load", "results_dir", "RESULTS_FILE", "TIMINGS_FILE"]
+__all__ = ["Recorder", "load", "figure", "results_dir", "RESULTS_FILE", "TIMINGS_FILE"]
 
 RESULTS_FILE = "results.json"
 #: wall-clock times vary from run to run: kept apart from the results, and not committed
@@ -90,3 +90,13 @@ def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | i
         )
     data = json.loads(path.read_text())
     return {k: (v if not isinstance(v, float) or not math.isnan(v) else math.nan) for k, v in data.items()}
+
+
+def figure(name: str, stem: str, width: int = 640):
+    """A stored figure of experiment ``name``'s default run, for display in a notebook."""
+    from IPython.display import Image
+
+    path = results_dir(name) / f"{stem}.png"
+    if not path.exists():
+        raise FileNotFoundError(f"no stored figure {stem!r} for {name!r} at {path}; run `make experiments`")
+    return Image(filename=str(path), width=width)

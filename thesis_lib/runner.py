@@ -23,7 +23,7 @@ from pathlib import Path
 import nbformat
 
 from .paths import repo_root
-from .results import RESULTS_FILE
+from .results import RESULTS_FILE, results_dir
 
 __all__ = [
     "ParameterError",
@@ -35,6 +35,7 @@ __all__ = [
     "run",
     "sweep",
     "store",
+    "stored_sweeps",
     "RunResult",
 ]
 
@@ -231,6 +232,15 @@ def _grid(name: str, grid: dict[str, list[object]]) -> list[dict[str, object]]:
     return combos
 
 
+def _markdown(header: list[str], lines: list[list[object]]) -> str:
+    def cell(v: object) -> str:
+        return f"{v:.6g}" if isinstance(v, float) else str(v)
+
+    md = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    md += ["| " + " | ".join(cell(v) for v in line) + " |" for line in lines]
+    return "\n".join(md) + "\n"
+
+
 def _table(rows: list[RunResult], keys: list[str]) -> tuple[str, str]:
     result_keys = sorted({k for r in rows for k in r.results})
     header = keys + ["status"] + result_keys + ["run"]
@@ -243,13 +253,7 @@ def _table(rows: list[RunResult], keys: list[str]) -> tuple[str, str]:
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(header)
     writer.writerows(lines)
-
-    def cell(v: object) -> str:
-        return f"{v:.6g}" if isinstance(v, float) else str(v)
-
-    md = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    md += ["| " + " | ".join(cell(v) for v in line) + " |" for line in lines]
-    return buf.getvalue(), "\n".join(md) + "\n"
+    return buf.getvalue(), _markdown(header, lines)
 
 
 def _run_one(args) -> RunResult:
@@ -265,11 +269,14 @@ def sweep(
     root: Path | None = None,
     progress: bool = True,
     timeout: int = 3600,
+    keep: bool = False,
 ) -> tuple[list[RunResult], Path]:
     """Run experiment ``name`` on the Cartesian product of ``grid`` and write one results table.
 
     Completed runs are skipped, failing runs are reported and the sweep goes on.  Returns the runs
-    (in grid order) and the path of the CSV table (a Markdown twin sits beside it).
+    (in grid order) and the path of the CSV table (a Markdown twin sits beside it).  With ``keep``
+    the table is also stored with the default run, ``experiments/results/<name>/sweeps/``, where
+    the book reads it.
     """
     combos = _grid(name, grid)
     base = root or runs_dir()
@@ -294,10 +301,33 @@ def sweep(
     table_dir = base / name / "sweeps"
     table_dir.mkdir(parents=True, exist_ok=True)
     stem = run_hash({k: [str(v) for v in vals] for k, vals in grid.items()})
-    csv_path = table_dir / f"{stem}.csv"
-    csv_path.write_text(csv_text)
-    (table_dir / f"{stem}.md").write_text(md_text)
-    return done, csv_path
+    command = "thesis-lab sweep " + name + "".join(f" -p {k} " + " ".join(map(str, v)) for k, v in grid.items())
+    md_text = f"`{command}`\n\n" + md_text
+    folders = [table_dir] + ([results_dir(name) / "sweeps"] if keep else [])
+    for folder in folders:
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / f"{stem}.csv").write_text(csv_text)
+        (folder / f"{stem}.md").write_text(md_text)
+    return done, table_dir / f"{stem}.csv"
+
+
+def stored_sweeps(name: str, columns: list[str] | None = None) -> list[str]:
+    """Markdown tables of the sweeps stored with experiment ``name`` (``sweep(..., keep=True)``).
+
+    ``columns`` keeps only those columns (in that order) of each table; its command line stays on top.
+    """
+    tables = []
+    for md in sorted((results_dir(name) / "sweeps").glob("*.md")):
+        if columns is None:
+            tables.append(md.read_text())
+            continue
+        rows = list(csv.DictReader(md.with_suffix(".csv").open()))
+        missing = [c for c in columns if rows and c not in rows[0]]
+        if missing:
+            raise ValueError(f"the stored sweep {md.name} of {name!r} has no columns {missing}")
+        command = md.read_text().split("\n", 1)[0]
+        tables.append(f"{command}\n\n" + _markdown(columns, [[r[c] for c in columns] for r in rows]))
+    return tables
 
 
 def store(path: str | Path, timeout: int = 3600) -> Path:
