@@ -14,6 +14,7 @@ def test_tables_from_rows(tmp_path, monkeypatch):
     (tmp_path / "benchmarks" / "results").mkdir(parents=True)
     rows = [{"case": "a", "ours_s": 0.5, "ref_s": 1.0, "ratio": 0.5}, {"case": "b", "ours_s": 2.0, "extra": 3}]
     (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))
+    (tmp_path / "benchmarks" / "results" / "x_quick.json").write_text(json.dumps(rows))
     assert bench.topics() == ["x"]
     assert bench.markdown("x").splitlines() == [
         "| case | ours_s | ref_s | ratio | extra |",

@@ -240,3 +240,33 @@ def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():
     assert bars.betti(0.25, 1) > 10  # many rings (the thesis reports 30 with its radii)
     with pytest.raises(ValueError, match="negative weights"):
         protein_filtration(atoms, r, r_c=2.0)
+
+
+def test_unknown_element_has_no_radius_and_select():
+    atoms = read_pdb(PDB / "1grm.pdb")
+    first = atoms.select(np.arange(len(atoms)) < 3)
+    assert len(first) == 3 and first.atom_names.tolist() == atoms.atom_names[:3].tolist()
+    odd = Atoms(first.coords, np.array(["C", "XX", "N"]), first.res_names, first.atom_names,
+                first.res_ids, first.chain_ids, first.hetero)
+    with pytest.raises(ValueError, match="element"):
+        vdw_radii(odd, set="single")
+    with pytest.raises(ValueError, match="mask"):
+        atoms.select(np.ones(3, dtype=bool))
+
+
+def test_element_from_remediated_columns_and_hydrogens(tmp_path):
+    lines = [
+        "ATOM      1  N   ALA A   1      11.104   6.134  -6.504  1.00  0.00           N  ",
+        "ATOM      2  CA  ALA A   1      11.639   6.071  -5.147  1.00  0.00           C  ",
+        "HETATM    3 ZN    ZN A   2       1.000   2.000   3.000  1.00  0.00          ZN  ",
+        "ATOM      4 HB11 ALA A   1      12.000   6.000  -5.000  1.00  0.00           H  ",
+        "END",
+    ]
+    path = _write(tmp_path, "\n".join(lines) + "\n")
+    atoms = read_pdb(path)
+    assert atoms.elements.tolist() == ["N", "C", "ZN"]
+    assert read_pdb(path, hydrogens=True).elements.tolist() == ["N", "C", "ZN", "H"]
+    assert read_pdb(path, hetero=False).elements.tolist() == ["N", "C"]
+    # Without element columns the element comes from the name columns 13-14.
+    path = _write(tmp_path, "\n".join(l[:66] for l in lines) + "\n")
+    assert read_pdb(path, hydrogens=True).elements.tolist() == ["N", "C", "ZN", "H"]

@@ -113,8 +113,13 @@ def test_sample_patches():
     S = sample_patches(imgs, 100, seed=1)
     assert S.shape == (100, 25)
     np.testing.assert_array_equal(S, sample_patches(imgs, 100, seed=1))
-    # Every sample is one of the patches (rows of the pool).
-    assert all(np.any(np.all(pool == row, axis=1)) for row in S[:10])
+    # The same rows as drawing from the concatenated pool of all patches.
+    idx = np.sort(np.random.default_rng(1).choice(pool.shape[0], size=100, replace=False))
+    np.testing.assert_array_equal(S, pool[idx])
+    raw = sample_patches(imgs, 50, size=3, seed=2, log=False)
+    pool3 = np.concatenate([patches(im, 3, log=False) for im in imgs])
+    idx3 = np.sort(np.random.default_rng(2).choice(pool3.shape[0], size=50, replace=False))
+    np.testing.assert_array_equal(raw, pool3[idx3])
     with pytest.raises(ValueError, match="only"):
         sample_patches(imgs, pool.shape[0] + 1)
     with pytest.raises(ValueError, match="no images"):
@@ -183,6 +188,18 @@ def test_kth_neighbour_against_brute_force(seed, k):
     np.testing.assert_allclose(kth_neighbour_distance(X, k), brute)
 
 
+@settings(deadline=None, max_examples=10)
+@given(st.integers(0, 10_000), st.integers(1, 30))
+def test_kth_neighbour_high_dimension_against_brute_force(seed, k):
+    X = np.random.default_rng(seed).normal(size=(120, 25))
+    X[5] = X[7]  # a duplicate: its nearest other point is at distance 0
+    D = np.linalg.norm(X[:, None] - X[None], axis=2)
+    np.fill_diagonal(D, -1.0)
+    brute = np.sort(D, axis=1)[:, k]
+    np.testing.assert_allclose(kth_neighbour_distance(X, k), brute, rtol=1e-12, atol=1e-12)
+    assert kth_neighbour_distance(X, 1)[5] == 0.0
+
+
 def test_density_filter_keeps_densest_in_brute_force_order():
     rng = np.random.default_rng(3)
     X = np.vstack([rng.normal(scale=0.05, size=(30, 2)), rng.normal(scale=2.0, size=(70, 2))])
@@ -215,7 +232,8 @@ def test_dct_basis_orthonormal_and_gradients():
     assert np.allclose(horizontal, horizontal[0])  # the same in every row: varies along x
     assert np.allclose(vertical.T, vertical[:, 0])  # the same in every column: varies along y
     # c_0 (x) c_1 with c_0 = sqrt(1/5) and c_1(m) = sqrt(2/5) cos(pi (2m+1) / 10), decreasing.
-    np.testing.assert_allclose(horizontal[0], np.sqrt(1 / 5) * np.sqrt(2 / 5) * np.cos(np.pi * (2 * np.arange(5) + 1) / 10))
+    c1 = np.sqrt(2 / 5) * np.cos(np.pi * (2 * np.arange(5) + 1) / 10)
+    np.testing.assert_allclose(horizontal[0], np.sqrt(1 / 5) * c1)
     np.testing.assert_allclose(dct_basis(3) @ dct_basis(3).T, np.eye(9), atol=1e-12)
 
 
@@ -241,3 +259,22 @@ def test_pipeline_on_small_synthetic_images():
     np.testing.assert_allclose(out["dense"].sum(axis=1), 0, atol=1e-10)
     proj = gradient_projection(out["dense"])
     assert np.all(np.linalg.norm(proj, axis=1) <= 1 + 1e-9)
+
+
+def test_grazing_ground_is_out_of_range_and_rocks_change_the_scene():
+    kw = dict(size=(60, 80), n_boxes=0, n_cylinders=0, n_spheres=0, n_rocks=0, noise=0.0, max_range=1e9)
+    flat = synthetic_range_image(5, min_grazing_degrees=0.0, **kw)
+    cut = synthetic_range_image(5, min_grazing_degrees=8.0, **kw)
+    lost = np.isfinite(flat) & np.isnan(cut)
+    assert lost.any()
+    # Only the farthest ground (near the horizon) is lost; what is kept is unchanged.
+    assert np.nanmin(flat[lost]) > np.nanmax(cut)
+    np.testing.assert_array_equal(cut[np.isfinite(cut)], flat[np.isfinite(cut)])
+    rocks = synthetic_range_image(5, min_grazing_degrees=0.0, **{**kw, "n_rocks": 10})
+    both = np.isfinite(rocks) & np.isfinite(flat)
+    assert np.any(rocks[both] < flat[both])  # rocks occlude some ground ...
+    assert np.all(rocks[both] <= flat[both])  # ... and never make anything farther
+    with pytest.raises(ValueError, match="min_grazing"):
+        synthetic_range_image(0, min_grazing_degrees=90)
+    with pytest.raises(ValueError, match="n_rocks"):
+        synthetic_range_image(0, n_rocks=1.5)

@@ -15,8 +15,8 @@ def _dir() -> Path:
 
 
 def topics() -> list[str]:
-    """Benchmarks with stored results."""
-    return sorted(p.stem for p in _dir().glob("*.json"))
+    """Benchmarks with stored full results (``--quick`` smoke runs are left out)."""
+    return sorted(p.stem for p in _dir().glob("*.json") if not p.stem.replace("-", "_").endswith("_quick"))
 
 
 def load(topic: str) -> list[dict]:

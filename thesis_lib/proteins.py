@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .complexes.filtration import Filtration
 from .paths import shared_dir
 
 __all__ = [
@@ -222,14 +223,13 @@ def read_pdb(
     try:
         pdb_file = PDBFile.read(io.StringIO(clean))
         n_models = pdb_file.get_model_count()
-        if model > n_models:
-            raise ValueError(f"{path} has {n_models} model(s), asked for model {model}")
-        array = pdb_file.get_structure(model=int(model), altloc=altloc)
-    except ValueError as exc:
-        if "model(s), asked for" in str(exc):
-            raise
-        raise ValueError(f"{path}: cannot parse coordinate records ({exc})") from None
     except Exception as exc:  # biotite's InvalidFileError and friends
+        raise ValueError(f"{path}: cannot parse coordinate records ({type(exc).__name__}: {exc})") from None
+    if model > n_models:
+        raise ValueError(f"{path} has {n_models} model(s), asked for model {model}")
+    try:
+        array = pdb_file.get_structure(model=int(model), altloc=altloc)
+    except Exception as exc:
         raise ValueError(f"{path}: cannot parse coordinate records ({type(exc).__name__}: {exc})") from None
     if array.array_length() == 0:
         raise ValueError(f"{path}: model {model} has no atoms")
@@ -258,13 +258,9 @@ def read_pdb(
 
 
 # --------------------------------------------------------------------------- radii and weights
-def _single_radius(element: str) -> float | None:
-    import biotite.structure.info as info
-
-    return info.vdw_radius_single(element)
-
-
-def vdw_radii(atoms: Atoms, set: str = "protor", return_fallback: bool = False):
+def vdw_radii(
+    atoms: Atoms, set: str = "protor", return_fallback: bool = False
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """Van der Waals radius (Å) of every atom.
 
     Thesis: §2.2.2 (the radius of an atom depends on its chemical environment; the thesis used
@@ -308,12 +304,13 @@ def vdw_radii(atoms: Atoms, set: str = "protor", return_fallback: bool = False):
     else:
         fallback[:] = True
     elements, inverse = np.unique(atoms.elements, return_inverse=True)
-    single = np.array([_single_radius(e) if _single_radius(e) is not None else np.nan for e in elements])
-    missing = fallback & np.isnan(single[np.asarray(inverse).reshape(-1)])
+    table = [info.vdw_radius_single(str(e)) for e in elements]
+    single = np.array([np.nan if r is None else r for r in table], dtype=np.float64)[np.asarray(inverse).reshape(-1)]
+    missing = fallback & np.isnan(single)
     if np.any(missing):
         bad = sorted({str(e) for e in atoms.elements[missing]})
         raise ValueError(f"no van der Waals radius for element(s) {', '.join(bad)}")
-    radii = np.where(fallback, single[np.asarray(inverse).reshape(-1)], radii)
+    radii = np.where(fallback, single, radii)
     return (radii, fallback) if return_fallback else radii
 
 
@@ -341,7 +338,7 @@ def weighted_points(atoms, radii, r_c: float = 0.0) -> tuple[np.ndarray, np.ndar
 
 
 # --------------------------------------------------------------------------- filtrations and bars
-def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0):
+def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0) -> Filtration:
     """Weighted alpha filtration of the atoms' balls with weights w = r² − r_c² (values ε²).
 
     Thesis: §2.2.2 and §2.4.2 (the union of the balls B(x, sqrt(w + ε²)) is homotopy equivalent to
@@ -355,7 +352,9 @@ def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0):
     return alpha(points, weights)
 
 
-def discretise_intervals(intervals: np.ndarray, increment: float, window: tuple[float, float] = (0.0, np.inf)) -> np.ndarray:
+def discretise_intervals(
+    intervals: np.ndarray, increment: float, window: tuple[float, float] = (0.0, np.inf)
+) -> np.ndarray:
     """Intervals of the filtration sampled at ``lo, lo + increment, lo + 2·increment, ...`` within a window.
 
     Thesis: §2.4.2, Example 2.43 ("filtration increments" of 0.02, 0.005 and 0.05).

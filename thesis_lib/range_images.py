@@ -3,9 +3,13 @@ of Adams & Carlsson (2009), *On the nonlinear statistics of range image patches*
 
 The Brown range image database (about 200 laser range scans of outdoor scenes) cannot be downloaded
 on this machine, so :func:`synthetic_range_image` renders range images of random scenes with a small
-vectorised ray caster: a ground plane, upright and tilted boxes, vertical cylinders and spheres at
-several distances, seen by a pinhole camera at eye height.  Rays that hit nothing within
-``max_range`` (the sky) are out of range and returned as NaN, as the scanner's missing data.
+vectorised ray caster: a ground plane, boxes (buildings, crates, randomly oriented rocks), trees
+and posts (cylinders, some with round crowns) and clumps of foliage (spheres) at several
+distances, seen by a pinhole camera at eye height, with multiplicative range noise for surface
+roughness.  Rays that hit nothing within ``max_range`` (the sky) or meet the ground at a grazing
+angle are out of range and returned as NaN, as the scanner's missing data.  These images are a
+model, not data: results on them say what the pipeline does on such scenes, not what the Brown
+scans contain.
 
 The pipeline then follows Adams–Carlsson (after Lee–Pedersen–Mumford 2003):
 
@@ -135,12 +139,13 @@ def synthetic_range_image(
     Thesis: §2.4.3, Figure 2.21 (a range image; here a synthetic substitute for the Brown database).
 
     The scene has a ground plane y = 0, ``n_boxes`` boxes (buildings, walls, tilted crates),
-    ``n_cylinders`` upright cylinders (posts, or tree trunks carrying a round crown) and ``n_spheres`` spheres (bushes, boulders, clumps of foliage up to 7 m high)
-    and ``n_rocks`` boxes in uniformly random 3-D orientations half sunk into the ground, placed
-    between 3 and 40 m in front of a pinhole camera at ``camera_height`` with a random small
-    yaw and pitch.  ``noise`` is the relative standard deviation of multiplicative Gaussian range noise.
-    Like a laser scanner, the camera gets no return from the ground at grazing incidence: rays that
-    meet the ground at less than ``min_grazing_degrees`` are out of range.
+    ``n_cylinders`` upright cylinders (posts, or tree trunks carrying a round crown), ``n_spheres``
+    spheres (bushes, boulders, clumps of foliage up to 7 m high) and ``n_rocks`` boxes in uniformly
+    random 3-D orientations partly sunk into the ground, placed between 3 and 40 m in front of a
+    pinhole camera at ``camera_height`` with a random small yaw and pitch.  ``noise`` is the
+    relative standard deviation of multiplicative Gaussian range noise.  Like a laser scanner, the
+    camera gets no return from the ground at grazing incidence: rays that meet the ground at less
+    than ``min_grazing_degrees`` are out of range.
 
     The defaults describe a cluttered, mostly vegetated outdoor scene (many clumps of foliage, a few
     trees, posts, buildings and rocks) at a fine angular resolution (46° over 256 columns, 0.18° per
@@ -182,32 +187,44 @@ def synthetic_range_image(
 
     t = _hit_plane_y(orig, dirs, 0.0)
     t = np.where(-dirs[:, 1] >= np.sin(np.radians(min_grazing_degrees)), t, np.inf)
+
+    def add(hit, bound_centre, bound_radius, *args):
+        """Intersect only the rays that meet the object's bounding sphere; keep the nearest hit."""
+        oc = bound_centre - orig
+        proj = dirs @ oc
+        perp2 = oc @ oc - proj * proj
+        idx = np.flatnonzero((perp2 <= bound_radius**2) & (proj > -bound_radius))
+        if idx.size:
+            t[idx] = np.minimum(t[idx], hit(orig, dirs[idx], *args))
+
     for _ in range(n_boxes):
         c = place(5.0, 40.0, 6.0)
         half = rng.uniform([0.3, 0.3, 0.3], [4.0, 3.0, 2.0])
         tilted = rng.random() < 0.4
         rot = _rotation(rng.uniform(0, np.pi), *(rng.uniform(-0.6, 0.6, 2) if tilted else (0.0, 0.0)))
         c[1] = half[1] if not tilted else half.max() * 0.8
-        t = np.minimum(t, _hit_box(orig, dirs, c, half, rot))
+        add(_hit_box, c, np.linalg.norm(half), c, half, rot)
     for _ in range(n_rocks):
         c = place(3.0, 30.0, 5.0)
         half = rng.uniform(0.2, 1.2, 3)
         q, r = np.linalg.qr(rng.standard_normal((3, 3)))
         rot = q * np.sign(np.diag(r))  # a uniformly random orthogonal matrix
         c[1] = rng.uniform(0.0, 0.6) * half.min()
-        t = np.minimum(t, _hit_box(orig, dirs, c, half, rot))
+        add(_hit_box, c, np.linalg.norm(half), c, half, rot)
     for _ in range(n_cylinders):
         c = place(3.0, 30.0, 5.0)
         height = rng.uniform(1.0, 8.0)
-        t = np.minimum(t, _hit_cylinder(orig, dirs, c, rng.uniform(0.1, 0.6), height))
+        radius = rng.uniform(0.1, 0.6)
+        add(_hit_cylinder, c + np.array([0.0, height / 2, 0.0]), np.hypot(radius, height / 2), c, radius, height)
         if rng.random() < 0.6:  # a tree: a round crown on the trunk
             crown = rng.uniform(1.0, 3.0)
-            t = np.minimum(t, _hit_sphere(orig, dirs, c + np.array([0.0, height + 0.7 * crown, 0.0]), crown))
+            top = c + np.array([0.0, height + 0.7 * crown, 0.0])
+            add(_hit_sphere, top, crown, top, crown)
     for _ in range(n_spheres):
         c = place(3.0, 30.0, 5.0)
         r = rng.uniform(0.3, 1.5)
         c[1] = rng.uniform(0.6 * r, max(0.6 * r, 7.0))  # bushes on the ground up to foliage clumps in the air
-        t = np.minimum(t, _hit_sphere(orig, dirs, c, r))
+        add(_hit_sphere, c, r, c, r)
     if noise > 0:
         t = t * (1.0 + noise * rng.standard_normal(t.shape))
     t = np.where((t <= max_range) & (t > 0), t, np.nan)
@@ -231,10 +248,17 @@ def patches(image: np.ndarray, size: int = 5, log: bool = True) -> np.ndarray:
     Thesis: §2.4.3 (5 × 5 patches thought of as vectors in R^25; Adams–Carlsson 2009 use the
     logarithm of the range).  Patches touching a NaN (out-of-range) or non-positive pixel are dropped.
     """
+    size = _check_patch_size(size)
+    img, valid = _valid_windows(image, size, log)
+    win = np.lib.stride_tricks.sliding_window_view(img, (size, size))
+    return np.ascontiguousarray(win[valid].reshape(-1, size * size))
+
+
+def _valid_windows(image: np.ndarray, size: int, log: bool) -> tuple[np.ndarray, np.ndarray]:
+    """The image as used for patches (log range or raw) and the mask of valid top-left corners."""
     img = np.asarray(image, dtype=np.float64)
     if img.ndim != 2:
         raise ValueError(f"a range image is a 2-D array, got shape {img.shape}")
-    size = _check_patch_size(size)
     if img.shape[0] < size or img.shape[1] < size:
         raise ValueError(f"image of shape {img.shape} is smaller than a {size}x{size} patch")
     if np.any(np.isinf(img)):
@@ -242,24 +266,41 @@ def patches(image: np.ndarray, size: int = 5, log: bool = True) -> np.ndarray:
     if log:
         with np.errstate(invalid="ignore", divide="ignore"):
             img = np.where(img > 0, np.log(np.where(img > 0, img, 1.0)), np.nan)
-    win = np.lib.stride_tricks.sliding_window_view(img, (size, size)).reshape(-1, size * size)
-    return np.ascontiguousarray(win[np.all(np.isfinite(win), axis=1)])
+    bad = (~np.isfinite(img)).astype(np.int64)
+    # number of bad pixels in every size x size window, from a summed-area table
+    sat = np.pad(bad.cumsum(0).cumsum(1), ((1, 0), (1, 0)))
+    count = sat[size:, size:] - sat[:-size, size:] - sat[size:, :-size] + sat[:-size, :-size]
+    return img, count == 0
 
 
 def sample_patches(images: Sequence[np.ndarray], n: int, size: int = 5, seed: int = 0, log: bool = True) -> np.ndarray:
     """``n`` patches drawn uniformly without replacement from the valid patches of all ``images``.
 
-    Thesis: §2.4.3 (4·10⁵ random 5 × 5 patches from about 200 range images).
+    Thesis: §2.4.3 (4·10⁵ random 5 × 5 patches from about 200 range images).  The same rows, in
+    the same order, as drawing ``n`` rows from the concatenated :func:`patches` of the images.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
     if len(images) == 0:
         raise ValueError("no images given")
-    pool = np.concatenate([patches(im, size, log=log) for im in images], axis=0)
-    if n > pool.shape[0]:
-        raise ValueError(f"asked for {n} patches, the images have only {pool.shape[0]} valid ones")
-    idx = np.random.default_rng(seed).choice(pool.shape[0], size=n, replace=False)
-    return pool[np.sort(idx)]
+    size = _check_patch_size(size)
+    prepared = [_valid_windows(im, size, log) for im in images]
+    corners = [np.flatnonzero(valid) for _, valid in prepared]
+    offsets = np.cumsum([0] + [c.size for c in corners])
+    total = int(offsets[-1])
+    if n > total:
+        raise ValueError(f"asked for {n} patches, the images have only {total} valid ones")
+    chosen = np.sort(np.random.default_rng(seed).choice(total, size=n, replace=False))
+    which = np.searchsorted(offsets, chosen, side="right") - 1
+    out = np.empty((n, size * size))
+    dr, dc = np.divmod(np.arange(size * size), size)
+    for i, (img, valid) in enumerate(prepared):
+        rows = chosen[which == i] - offsets[i]
+        if rows.size == 0:
+            continue
+        r, c = np.divmod(corners[i][rows], valid.shape[1])
+        out[which == i] = img[r[:, None] + dr, c[:, None] + dc]
+    return out
 
 
 def _check_patch_size(size) -> int:
@@ -339,11 +380,27 @@ def kth_neighbour_distance(X: np.ndarray, k: int) -> np.ndarray:
         raise ValueError(f"k must be a positive integer, got {k!r}")
     if k >= arr.shape[0]:
         raise ValueError(f"k = {k} needs more than {k} points, got {arr.shape[0]}")
-    dist, _ = cKDTree(arr).query(arr, k=[int(k) + 1])  # the first neighbour is the point itself
-    return dist[:, 0]
+    k = int(k)
+    if arr.shape[1] <= 8:
+        dist, _ = cKDTree(arr).query(arr, k=[k + 1])  # the first neighbour is the point itself
+        return dist[:, 0]
+    # High dimension (25 for 5 x 5 patches): k-d trees degrade, blocks of a Gram matrix do not.
+    n = arr.shape[0]
+    sq = np.einsum("ij,ij->i", arr, arr)
+    out = np.empty(n)
+    step = max(1, min(n, 2**23 // max(n, 1)))
+    for start in range(0, n, step):
+        stop = min(n, start + step)
+        d2 = sq[start:stop, None] + sq[None, :] - 2.0 * (arr[start:stop] @ arr.T)
+        d2[np.arange(stop - start), np.arange(start, stop)] = -np.inf  # the point itself comes first
+        j = np.argpartition(d2, k, axis=1)[:, k]
+        out[start:stop] = np.linalg.norm(arr[start:stop] - arr[j], axis=1)  # exact distance
+    return out
 
 
-def density_filter(X: np.ndarray, k: int, p: float, return_index: bool = False):
+def density_filter(
+    X: np.ndarray, k: int, p: float, return_index: bool = False
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """X(k, p): the p percent of points with the smallest distance to their k-th nearest neighbour.
 
     Thesis: §2.4.3 (the top 30 % densest points by the 300th neighbour give X⁵(300, 30)).
