@@ -341,7 +341,7 @@ def test_closed_vpath_detected_and_reported():
     for i in range(0, len(path) - 2, 2):
         s, t, s2 = path[i], path[i + 1], path[i + 2]
         assert (s, t) in CYCLIC and set(s2) < set(t) and s2 != s  # Definition 4.34
-    with pytest.raises(ValueError, match="closed V-path"):
+    with pytest.raises(ValueError, match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\) > \(1, 2\) > \(2,\) > \(0, 2\) > \(0,\)"):
         morse_homology(CIRCLE, CYCLIC)
     with pytest.raises(ValueError, match="closed V-path"):
         morse_boundary(CIRCLE, CYCLIC)
@@ -550,3 +550,23 @@ def test_matching_deterministic_and_seeded():
     assert morse_matching(cx) == morse_matching(cx)
     assert morse_matching(cx, seed=5) == morse_matching(cx, seed=5)
     assert critical_counts(cx, morse_matching(cx, "collapse", seed=2))[0] == 1
+
+
+def test_public_contract_of_design_md():
+    """The signatures DESIGN.md fixes for thesis_lib.morse."""
+    import inspect
+
+    import thesis_lib.morse as m
+
+    def params(f):
+        return list(inspect.signature(f).parameters)
+
+    assert params(m.is_discrete_morse_function) == ["values"]
+    assert params(m.critical_simplices) == ["values"]
+    assert params(m.gradient_pairs) == ["values"]
+    assert params(m.is_acyclic)[:2] == ["simplices", "pairs"]
+    assert params(m.morse_matching)[0] == "simplices"
+    assert params(m.morse_homology) == ["simplices", "pairs", "coefficients"]
+    assert inspect.signature(m.morse_homology).parameters["coefficients"].default == 0
+    pairs = m.morse_matching(rp2())
+    assert m.is_acyclic(rp2(), pairs) and m.morse_homology(rp2(), pairs) == homology(rp2())

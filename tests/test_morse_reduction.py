@@ -13,6 +13,8 @@ from thesis_lib.datasets import example_filtration, torus
 from thesis_lib.homology import homology
 from thesis_lib.morse import (
     chain_persistence,
+    critical_counts,
+    morse_matching,
     filtration_matching,
     is_acyclic,
     lower_star_filtration,
@@ -67,6 +69,21 @@ def test_lower_star_reduction_is_small_and_exact(seed):
     assert reduced_persistence(red) == persistence(filt, 2)
     # a lower-star matching leaves few cells: here less than half
     assert red.critical_fraction < 0.5
+
+
+@settings(deadline=None, max_examples=8)
+@given(seeds)
+def test_reduction_with_lower_star_pairs(seed):
+    """ProcessLowerStars pairs lie in one lower star, so they are filtration-compatible."""
+    rng = np.random.default_rng(seed)
+    n = 6
+    tris = grid_triangles(n)
+    values = rng.random(n * n)
+    filt = lower_star_filtration(tris, values)
+    pairs = morse_matching(tris, "lower-star", values=values)
+    red = morse_reduce(filt, 3, pairs=pairs)
+    assert red.n_critical == sum(critical_counts(tris, pairs))
+    assert reduced_persistence(red) == persistence(filt, 3)
 
 
 def test_filtration_matching_pairs_equal_values_and_is_acyclic():
@@ -126,3 +143,8 @@ def test_reduction_errors():
         lower_star_filtration([(0, 2)], [0.0, 1.0])
     with pytest.raises(ValueError, match="Filtration"):
         morse_reduce(3.0)
+    with pytest.raises(ValueError, match="joins different filtration values"):
+        morse_reduce(filt, 2, pairs=[((0,), (0, 1))])  # a enters at 0, ab at 1
+    with pytest.raises(ValueError, match="closed V-path"):
+        lower = lower_star_filtration([(0, 1), (1, 2), (0, 2)], [0.0, 0.0, 0.0])
+        morse_reduce(lower, 2, pairs=[((0,), (0, 1)), ((1,), (1, 2)), ((2,), (0, 2))])

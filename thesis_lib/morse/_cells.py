@@ -20,12 +20,15 @@ Simplex = tuple[int, ...]
 class CellComplex:
     """Closure of some simplices with global ids, facet lists and the signed boundary (Definition 2.18)."""
 
-    def __init__(self, simplices: Iterable[Sequence[int]] | list[np.ndarray]):
+    def __init__(self, simplices: Iterable[Sequence[int]] | list[np.ndarray], closed: bool = False):
         if isinstance(simplices, CellComplex):  # pragma: no cover - defensive
             simplices = simplices.arrays
         if not isinstance(simplices, list) or not all(isinstance(a, np.ndarray) for a in simplices):
             simplices = [tuple(s) for s in simplices]
-        self.arrays: list[np.ndarray] = closure(simplices)
+        if closed:  # per-dimension arrays of a complex, rows sorted, no duplicates: only reorder
+            self.arrays = [a[np.lexsort(a.T[::-1])] if a.shape[0] else a for a in simplices]
+        else:
+            self.arrays: list[np.ndarray] = closure(simplices)
         self.counts = np.array([a.shape[0] for a in self.arrays], dtype=np.int64)
         self.offsets = np.concatenate([[0], np.cumsum(self.counts)]).astype(np.int64)
         self.n = int(self.offsets[-1])

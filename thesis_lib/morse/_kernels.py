@@ -108,8 +108,10 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
 
     Up-paired k-cells are eliminated in topological order of the V-path graph; the coefficients
     left on critical cells are the sums of multiplicities ±1 over gradient paths (mod p if p > 0).
-    Returns COO triples (rows, cols, vals) in global ids.
+    Returns COO triples (rows, cols, vals) in global ids and an overflow flag (|entry| > 2^60 over Z).
     """
+    limit = np.int64(1) << 60
+    overflow = False
     acc = np.zeros(n, dtype=np.int64)
     inheap = np.zeros(n, dtype=np.bool_)
     out_r = []
@@ -148,6 +150,8 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
                 acc[s2] += factor * data[e]
                 if p > 0:
                     acc[s2] = acc[s2] % p
+                elif acc[s2] > limit or acc[s2] < -limit:
+                    overflow = True
                 if not inheap[s2]:
                     inheap[s2] = True
                     touched[nt] = s2
@@ -165,4 +169,6 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
                 out_v.append(a)
             acc[s] = 0
             inheap[s] = False
-    return np.array(out_r, dtype=np.int64), np.array(out_c, dtype=np.int64), np.array(out_v, dtype=np.int64)
+    return (
+        np.array(out_r, dtype=np.int64), np.array(out_c, dtype=np.int64), np.array(out_v, dtype=np.int64), overflow
+    )

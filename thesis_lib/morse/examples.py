@@ -78,10 +78,10 @@ def experiment_complex(name: str, seed: int = 0):
     ``positions`` maps vertices to the plane for point-cloud complexes (else ``None``); ``chart`` is
     the disc picture of RP² (else ``None``).  ``random-flag``: the flag complex of 14 uniform points
     in the unit square at ε = 0.2 (edges of length ≤ 0.4); ``rips``: the Rips complex of
-    ``two_circles(12, seed)`` at ε = 0.3, both up to dimension 2.
+    ``two_circles(30, seed)`` at ε = 0.3, both up to dimension 2.
     """
     from ..complexes.rips import rips
-    from ..datasets import dunce_hat, klein_bottle, rp2, torus, two_circles
+    from ..datasets import dunce_hat, klein_bottle, torus, two_circles
 
     if name == "rp2":
         return list(RP2_FACETS), None, rp2_chart()
@@ -98,7 +98,7 @@ def experiment_complex(name: str, seed: int = 0):
             pts = np.random.default_rng(seed).random((14, 2))
             filt = rips(pts, 0.2, 2)
         else:
-            pts = two_circles(12, seed=seed)
+            pts = two_circles(30, seed=seed)
             filt = rips(pts, 0.3, 2)
         facets = [s for s, _ in filt]
         return facets, {i: (float(x), float(y)) for i, (x, y) in enumerate(pts)}, None

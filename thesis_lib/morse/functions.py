@@ -9,6 +9,7 @@ import numpy as np
 
 from ._cells import CellComplex, Simplex, as_complex, partner_array
 from ._kernels import topological_rank
+from .vector_field import _cyclic_field_error, _ranks
 
 __all__ = [
     "is_discrete_morse_function",
@@ -157,6 +158,7 @@ def discrete_morse_function(simplices, pairs) -> dict[Simplex, float]:
     ptr = np.concatenate([[0], np.cumsum(np.bincount(src, minlength=cx.n))]).astype(np.int64)
     rank = topological_rank(cx.n, ptr, dst[order])
     if (rank < 0).any():
-        raise ValueError("the vector field has a non-trivial closed V-path: no discrete Morse function (Theorem 4.36)")
+        vrank, g = _ranks(cx, partner)
+        raise _cyclic_field_error(cx, partner, vrank, g)
     f = cx.n - rank
     return {cx.simplex(g): float(f[g]) for g in range(cx.n)}

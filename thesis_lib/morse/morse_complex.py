@@ -11,23 +11,25 @@ from ..simplicial import check_coefficients
 from ..smith import rank_mod_p, smith_normal_form
 from ._cells import CellComplex, Simplex, as_complex, partner_array
 from ._kernels import morse_columns
-from .vector_field import Pairs, _ranks
+from .vector_field import Pairs, _ranks, _cyclic_field_error
 
 __all__ = ["morse_boundary", "morse_homology", "chain_complex_homology"]
 
 
 def _morse_boundary_ids(cx: CellComplex, partner: np.ndarray, coefficients: int = 0):
     """Critical global ids per dimension and Morse boundary matrices (internal, on global ids)."""
-    rank, _ = _ranks(cx, partner)
+    rank, g = _ranks(cx, partner)
     if not (rank >= 0).all():
-        raise ValueError("the vector field has a non-trivial closed V-path: it is not a gradient (Theorem 4.36)")
+        raise _cyclic_field_error(cx, partner, rank, g)
     is_crit = partner < 0
     crit = np.flatnonzero(is_crit)
     sources = crit[cx.dim_of[crit] >= 1]
-    rows, cols, vals = morse_columns(
+    rows, cols, vals, overflow = morse_columns(
         cx.n, cx.D.indptr.astype(np.int64), cx.D.indices.astype(np.int64), cx.D.data.astype(np.int64),
         partner, rank, is_crit, sources, int(coefficients),
     )
+    if overflow:
+        raise ValueError("Morse boundary coefficients exceed int64 over Z; use a prime p (coefficients=p)")
     local = np.full(cx.n, -1, dtype=np.int64)
     crit_by_dim = []
     for d in range(cx.dimension + 1):

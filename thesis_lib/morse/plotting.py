@@ -104,7 +104,8 @@ def draw_gradient_field(
 
 def draw_hasse_diagram(ax, simplices, pairs=(), names: Mapping[tuple[int, ...], str] | None = None):
     """The (modified) Hasse diagram: one row per dimension, an edge τ → σ for each facet, reversed
-    (red, upwards) for the pairs of the vector field; critical simplices boxed in red.
+    (red, upwards) for the pairs of the vector field; critical simplices boxed in red (only when
+    a field is given).
 
     Thesis: §4.2.6, Figures 4.7–4.8 and Theorem 4.44.
     """
@@ -126,7 +127,7 @@ def draw_hasse_diagram(ax, simplices, pairs=(), names: Mapping[tuple[int, ...], 
     for g, (x, y) in pos.items():
         s = cx.simplex(g)
         text = names.get(s) if names and s in names else "".join(str(v) for v in s)
-        critical = partner[g] < 0
+        critical = bool(partner[g] < 0) and bool((partner >= 0).any())
         ax.text(x, y, text, ha="center", va="center", zorder=2,
                 bbox=dict(boxstyle="round", fc="white", ec="crimson" if critical else "0.6", lw=2 if critical else 1))
     ax.set_xlim(min(p[0] for p in pos.values()) - 0.7, max(p[0] for p in pos.values()) + 0.7)

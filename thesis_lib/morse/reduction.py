@@ -16,7 +16,7 @@ import scipy.sparse as sp
 
 from ..complexes.filtration import Filtration
 from ..simplicial import check_coefficients, find_rows
-from ._cells import CellComplex
+from ._cells import CellComplex, partner_array
 from .matching import _greedy_partner
 from .morse_complex import _morse_boundary_ids
 
@@ -33,9 +33,7 @@ def _as_filtration(filtration) -> Filtration:
 
 
 def _cells_and_values(filt: Filtration) -> tuple[CellComplex, np.ndarray]:
-    cx = CellComplex([np.asarray(s) for s in filt.simplices])
-    if cx.n != len(filt):
-        raise ValueError("the filtration is not closed under faces")
+    cx = CellComplex([np.asarray(s, dtype=np.int64) for s in filt.simplices], closed=True)
     vals = np.empty(cx.n)
     for d, (s, v) in enumerate(zip(filt.simplices, filt.values)):
         vals[cx.offsets[d] + find_rows(cx.arrays[d], s)] = v
@@ -82,6 +80,8 @@ def filtration_matching(filtration) -> list[tuple[tuple[int, ...], tuple[int, ..
 class MorseReduction:
     """The Morse (reduced) filtered chain complex of a filtration.
 
+    Thesis: Theorem 4.41 (the Morse complex M_k on the critical simplices).
+
     Attributes
     ----------
     critical : ``critical[d]`` the ``(m_d, d + 1)`` array of critical d-simplices.
@@ -107,7 +107,7 @@ class MorseReduction:
         return self.n_critical / self.n_cells
 
 
-def morse_reduce(filtration, p: int = 2) -> MorseReduction:
+def morse_reduce(filtration, p: int = 2, pairs=None) -> MorseReduction:
     """Reduce a filtration to its filtered Morse complex (critical simplices + Morse boundary).
 
     Thesis: Theorems 4.41–4.42 (Morse complex on critical cells, boundary by gradient paths).
@@ -116,11 +116,25 @@ def morse_reduce(filtration, p: int = 2) -> MorseReduction:
     ----------
     filtration : a :class:`~thesis_lib.complexes.Filtration` (or ``(simplex, value)`` pairs).
     p : 0 for integer boundaries, a prime for Z/p.
+    pairs : optional acyclic matching to use instead of :func:`filtration_matching`, e.g. the
+        ``"lower-star"`` matching of a lower-star filtration; every pair must have equal values
+        (ValueError naming the first pair that does not).
     """
     p = check_coefficients(p)
     filt = _as_filtration(filtration)
     cx, vals = _cells_and_values(filt)
-    partner = _greedy_partner(cx, "coreduction", vals=vals)
+    if pairs is None:
+        partner = _greedy_partner(cx, "coreduction", vals=vals)
+    else:
+        partner = partner_array(cx, pairs)
+        paired = np.flatnonzero(partner >= 0)
+        bad = paired[vals[partner[paired]] != vals[paired]]
+        if bad.size:
+            g = int(bad.min())
+            raise ValueError(
+                f"pair {cx.simplex(g)} - {cx.simplex(int(partner[g]))} joins different filtration values "
+                f"{vals[g]} and {vals[partner[g]]}: the reduced complex would change the barcode"
+            )
     crit, mats = _morse_boundary_ids(cx, partner, p)
     critical = [cx.arrays[d][ids - cx.offsets[d]] for d, ids in enumerate(crit)]
     values = [vals[ids] for ids in crit]

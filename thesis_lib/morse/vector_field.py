@@ -126,16 +126,7 @@ def is_acyclic(simplices, pairs: Pairs, method: str = "vpaths") -> bool:
     raise ValueError(f"method must be 'vpaths' or 'hasse', got {method!r}")
 
 
-def find_closed_vpath(simplices, pairs: Pairs) -> list[Simplex] | None:
-    """A non-trivial closed V-path σ_0, τ_0, σ_1, ..., τ_r, σ_0 if one exists, else ``None``.
-
-    Thesis: Definition 4.34 (non-trivial closed V-path), Theorem 4.36.
-    """
-    cx = as_complex(simplices)
-    partner = partner_array(cx, pairs)
-    rank, g = _ranks(cx, partner)
-    if (rank >= 0).all():
-        return None
+def _closed_vpath(cx: CellComplex, partner: np.ndarray, rank: np.ndarray, g: sp.csr_matrix) -> list[Simplex]:
     alive = rank < 0
     # restricted to cells Kahn could not order, every cell has a predecessor: walk backwards
     gt = g.T.tocsr()
@@ -149,14 +140,34 @@ def find_closed_vpath(simplices, pairs: Pairs) -> list[Simplex] | None:
         preds = preds[alive[preds]]
         v = int(preds[0])
         walk.append(v)
-    cycle = walk[seen[v] :]  # backwards: cycle[i+1] -> cycle[i]
-    cycle = cycle[::-1]  # forwards, first == last
+    cycle = walk[seen[v] :][::-1]  # forwards, first == last
     out: list[Simplex] = []
     for s in cycle[:-1]:
         out.append(cx.simplex(s))
         out.append(cx.simplex(int(partner[s])))
     out.append(cx.simplex(cycle[-1]))
     return out
+
+
+def _cyclic_field_error(cx: CellComplex, partner: np.ndarray, rank: np.ndarray, g: sp.csr_matrix) -> ValueError:
+    """The ValueError raised for a vector field with a closed V-path, naming one such path."""
+    path = " > ".join(str(s) for s in _closed_vpath(cx, partner, rank, g))
+    return ValueError(
+        f"the vector field has a non-trivial closed V-path {path}: it is not a gradient (Theorem 4.36)"
+    )
+
+
+def find_closed_vpath(simplices, pairs: Pairs) -> list[Simplex] | None:
+    """A non-trivial closed V-path σ_0, τ_0, σ_1, ..., τ_r, σ_0 if one exists, else ``None``.
+
+    Thesis: Definition 4.34 (non-trivial closed V-path), Theorem 4.36.
+    """
+    cx = as_complex(simplices)
+    partner = partner_array(cx, pairs)
+    rank, g = _ranks(cx, partner)
+    if (rank >= 0).all():
+        return None
+    return _closed_vpath(cx, partner, rank, g)
 
 
 def vpaths(simplices, pairs: Pairs, start: Sequence[int], max_paths: int = 100_000) -> list[list[Simplex]]:
@@ -168,9 +179,9 @@ def vpaths(simplices, pairs: Pairs, start: Sequence[int], max_paths: int = 100_0
     """
     cx = as_complex(simplices)
     partner = partner_array(cx, pairs)
-    rank, _ = _ranks(cx, partner)
+    rank, g = _ranks(cx, partner)
     if not (rank >= 0).all():
-        raise ValueError("the vector field has a closed V-path: V-paths are not finite (Theorem 4.36)")
+        raise _cyclic_field_error(cx, partner, rank, g)
     s0 = int(cx.ids([tuple(start)], "start simplex")[0])
     paths: list[list[int]] = []
 
@@ -203,9 +214,9 @@ def gradient_paths(simplices, pairs: Pairs, tau: Sequence[int], sigma: Sequence[
     t0, s_end = (int(x) for x in cx.ids([tuple(tau), tuple(sigma)]))
     if cx.dim_of[t0] != cx.dim_of[s_end] + 1:
         raise ValueError("tau must have dimension one more than sigma")
-    rank, _ = _ranks(cx, partner)
+    rank, g = _ranks(cx, partner)
     if not (rank >= 0).all():
-        raise ValueError("the vector field has a closed V-path (Theorem 4.36): gradient paths are infinite")
+        raise _cyclic_field_error(cx, partner, rank, g)
     out: list[tuple[list[Simplex], int]] = []
 
     def extend(path: list[int], m: int) -> None:
