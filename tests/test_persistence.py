@@ -230,6 +230,9 @@ def test_torsion_shows_over_z2_not_z3():
         assert b == compute_intervals(f, p=p) == gudhi_barcode(f, p)
         essential = [int(np.isinf(b.intervals(d)[:, 1]).sum()) for d in (0, 1, 2)]
         assert essential == [1, expected, expected]
+        assert (b.simplex_pairs(2)[:, 1] == -1).all()  # the lazily listed top dimension
+    fundamental = persistence(f, p=2).representative(2, 0)
+    assert len(fundamental) == 10 and {c for _, c in fundamental} == {1}  # RP² is a Z/2-cycle
 
 
 def test_pairs_input_and_vertices_only():
@@ -331,3 +334,46 @@ def test_bad_input(algo):
         algo(42)
     with pytest.raises(ValueError, match="face"):
         Filtration([np.array([[0], [1]]), np.array([[0, 1]])], [np.array([0.0, 0.0]), np.array([-1.0])])
+
+
+@settings(deadline=None, max_examples=10)
+@given(seed=st.integers(0, 10_000), p=st.sampled_from([2, 3]))
+def test_unvalidated_filtrations_take_the_fused_path(seed, p):
+    # thesis_lib's rips() skips validation, so the engine finds facets itself (fused dense lookup)
+    from thesis_lib.complexes import rips
+
+    pts = np.random.default_rng(seed).random((int(8 + seed % 12), 2))
+    f = rips(pts, 0.45, 3)
+    assert "_facet_cache" not in f.__dict__
+    ref = gudhi_barcode(f, p)
+    assert persistence(f, p=p).difference(ref) is None
+    g = random_filtration(seed)
+    raw = Filtration(g.simplices, g.values, validate=False)
+    assert persistence(raw, p=p).difference(gudhi_barcode(g, p)) is None
+
+
+def test_missing_edge_is_reported():
+    tri = Filtration(
+        [np.array([[0], [1], [2]]), np.array([[0, 1], [1, 2]]), np.array([[0, 1, 2]])],
+        [np.zeros(3), np.zeros(2), np.zeros(1)],
+        validate=False,
+    )
+    with pytest.raises(ValueError, match="missing"):
+        persistence(tri)
+
+
+def test_trace_matrices_of_example_2_41():
+    from thesis_lib.persistence import trace_matrices
+
+    trace: list = []
+    compute_intervals(example_filtration(), p=3, trace=trace)
+    before, after = trace_matrices(trace, p=3, names="abcde")
+    header = before[0]
+    assert header == ["*", "a", "b", "c", "d", "e", "ab", "cd", "ad", "bc", "de", "ce", "cde"]
+    col = {row[0]: row[header.index("cde")] for row in before[1:]}
+    # the thesis's column ced: cd −t³, ed t, ce t; we orient cde = −ced and de = −ed: same powers
+    assert (col["cd"], col["de"], col["ce"]) == ("t^3", "t", "-t")
+    assert {row[0] for row in after[1:]} == {"a", "b", "c", "d", "e", "bc", "ce"}  # marked rows only
+    assert [row[header.index("ad")] for row in after[1:4]] == ["-t^2", "0", "t"]  # da reduced: a, c
+    with pytest.raises(ValueError, match="trace"):
+        trace_matrices([], p=3)

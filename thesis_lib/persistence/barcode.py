@@ -70,6 +70,10 @@ class Barcode:
     filtration : the filtration the barcode was computed from (needed for :meth:`representative`).
     killers : optional mapping ``dim -> indices`` of every (dim+1)-simplex that kills a dim-class,
         zero-length pairs included (needed for :meth:`representative`).
+    essential : optional mapping ``dim -> (values, mask)``: the dimension's intervals are all
+        essential, born at ``values[mask]`` by the simplices where the boolean ``mask`` is true;
+        the arrays are only built (sorted) when first asked for (a truncated complex can have
+        millions of top-dimensional classes).  ``intervals`` must not also give that dimension.
     """
 
     def __init__(
@@ -81,6 +85,7 @@ class Barcode:
         simplices: Mapping[int, np.ndarray] | None = None,
         filtration: Any = None,
         killers: Mapping[int, np.ndarray] | None = None,
+        essential: Mapping[int, tuple[np.ndarray, np.ndarray]] | None = None,
     ):
         dims = sorted(set(int(d) for d in (intervals.keys() if dimensions is None else dimensions)))
         if any(d < 0 for d in dims):
@@ -103,6 +108,17 @@ class Barcode:
                 if extra.shape[0] != arr.shape[0]:
                     raise ValueError(f"dimension {d}: {arr.shape[0]} intervals but {extra.shape[0]} simplex pairs")
             self._raw[d] = (arr, extra)
+        self._lazy: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self._lazy_pairs: dict[int, np.ndarray] = {}
+        for d, (vals, mask) in (essential or {}).items():
+            d = int(d)
+            if d in intervals or d not in dims:
+                raise ValueError(f"dimension {d} is given both as intervals and as essential classes")
+            vals, mask = np.asarray(vals, dtype=np.float64), np.asarray(mask, dtype=bool)
+            if vals.shape != mask.shape:
+                raise ValueError(f"dimension {d}: {vals.shape[0]} values but a mask of {mask.shape[0]}")
+            self._raw.pop(d, None)
+            self._lazy[d] = (vals, mask)
         self._killers = None if killers is None else {int(d): np.asarray(k, dtype=np.int64) for d, k in killers.items()}
         self._representatives: dict[int, Any] = {}
 
@@ -121,10 +137,27 @@ class Barcode:
     # ------------------------------------------------------------------ queries
     @property
     def dimensions(self) -> tuple[int, ...]:
-        """The homology dimensions this barcode covers (0 .. dim K for a computed barcode)."""
+        """The homology dimensions this barcode covers (0 .. dim K for a computed barcode).
+
+        Thesis: Algorithm 2 (one list L_p of P-intervals for p = 0 .. dim K).
+        """
         return self._dims
 
     def _get(self, dim: int) -> tuple[np.ndarray, np.ndarray | None]:
+        if dim in self._lazy:
+            vals, mask = self._lazy.pop(dim)
+            births = vals[mask]
+            # all deaths are ∞: equal births are interchangeable intervals, so an unstable (faster)
+            # sort still gives the canonical array; the simplices follow the same permutation
+            order = np.argsort(births)
+            arr = np.empty((births.shape[0], 2))
+            arr[:, 0] = births[order]
+            arr[:, 1] = np.inf
+            del births
+            self._lazy_pairs[dim] = np.flatnonzero(mask)[order]  # the creating simplices, sorted
+            del order
+            arr.setflags(write=False)
+            self._done[dim] = (arr, None)
         if dim not in self._done:
             if dim not in self._raw:
                 return np.empty((0, 2), dtype=np.float64), np.empty((0, 2), dtype=np.int64)
@@ -170,7 +203,10 @@ class Barcode:
         return int(sum(self.intervals(d).shape[0] for d in self._dims))
 
     def as_pairs(self) -> list[tuple[int, tuple[float, float]]]:
-        """All intervals as ``(dim, (birth, death))`` pairs (GUDHI's format), by dimension then birth."""
+        """All intervals as ``(dim, (birth, death))`` pairs (GUDHI's format), by dimension then birth.
+
+        Thesis: Definition 2.34 (the P-intervals of every dimension).
+        """
         return [(d, (float(b), float(e))) for d in self._dims for b, e in self.intervals(d).tolist()]
 
     def longest(self, dim: int, n: int = 1) -> np.ndarray:
@@ -198,7 +234,10 @@ class Barcode:
         return self.difference(other, atol=atol) is None
 
     def difference(self, other: Barcode, atol: float = 0.0) -> str | None:
-        """``None`` if both barcodes agree up to ``atol``, else a message naming the first difference."""
+        """``None`` if both barcodes agree up to ``atol``, else a message naming the first difference.
+
+        Thesis: Corollary 2.35 (equal barcodes ⇔ isomorphic persistence modules).
+        """
         for d in sorted(set(self._dims) | set(other.dimensions)):
             a, b = self.intervals(d), other.intervals(d)
             if a.shape != b.shape:
@@ -231,7 +270,15 @@ class Barcode:
         """
         if not self._has_simplices:
             raise ValueError("this barcode does not know its simplices (it was not computed from a filtration)")
-        return self._get(int(dim))[1]
+        dim = int(dim)
+        arr, extra = self._get(dim)
+        if extra is None:  # a lazily listed dimension of essential classes
+            extra = np.empty((arr.shape[0], 2), dtype=np.int64)
+            extra[:, 0] = self._lazy_pairs.pop(dim)
+            extra[:, 1] = -1
+            extra.setflags(write=False)
+            self._done[dim] = (arr, extra)
+        return extra
 
     def representative(self, dim: int, i: int) -> list[tuple[tuple[int, ...], int]]:
         """A cycle representing interval ``i`` of :meth:`intervals` ``(dim)``: ``[(simplex, coefficient), ...]``.
@@ -256,3 +303,4 @@ class Barcode:
             )
         sigma, tau = self.simplex_pairs(dim)[i]
         return self._representatives[dim].cycle(int(sigma), int(tau))
+

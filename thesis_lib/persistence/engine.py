@@ -6,14 +6,16 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
 
 * the order of each dimension by one stable ``argsort`` (only the order *within* a dimension
   matters: a column of dimension d only ever meets rows of dimension d ± 1);
-* facets found by hashing, the coboundary matrix assembled as compressed sparse columns by a
-  counting sort whose fill pass visits the cofaces in filtration order (so every column comes out
-  sorted, no per-column sort);
+* facets found through a dense edge table (triangles; fused with the matrix assembly, so no facet
+  array is stored) or a hash table (higher dimensions), and the coboundary matrix assembled as
+  compressed sparse columns by a counting sort (two sequential passes over the cofaces, which also
+  find each column's pivot);
 * H0 by union–find with the elder rule (the pairs of Reduce on the edge columns);
 * dimensions d ≥ 1 on the cohomology side, latest simplex first, pivot = earliest coface;
   columns of simplices already paired one dimension lower are cleared (skipped), columns whose
-  pivot is still free (apparent/emergent pairs, the common case) are paired without being copied,
-  and only colliding columns are reduced, by sorted merges over Z/p in a numba loop.
+  pivot is still free (apparent/emergent pairs, the common case) are paired without any work,
+  and only colliding columns are reduced, lazily as in Ripser (Bauer 2021): a heap of coface
+  entries, added columns kept as combinations V of original coboundaries, in a numba loop.
 """
 
 from __future__ import annotations
@@ -54,7 +56,7 @@ def _facet_lookup(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.nd
             h = (h + 1) & mask
         keys[h] = key
         vals[h] = r
-    out = np.empty((m1, k + 1), dtype=np.int64)
+    out = np.empty((m1, k + 1), dtype=np.int32)
     for r in range(m1):
         for i in range(k + 1):
             key = np.int64(0)
@@ -72,6 +74,80 @@ def _facet_lookup(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.nd
     return out
 
 
+@numba.njit(cache=True)
+def _edge_facets_dense(edges: np.ndarray, tris: np.ndarray, n: np.int64) -> np.ndarray:
+    """Facets of triangles through a dense n × n table of edge indices (small n: cache friendly)."""
+    table = np.full(n * n, -1, dtype=np.int32)
+    for r in range(edges.shape[0]):
+        table[edges[r, 0] * n + edges[r, 1]] = r
+    out = np.empty((tris.shape[0], 3), dtype=np.int32)
+    for r in range(tris.shape[0]):
+        a, b, c = tris[r, 0], tris[r, 1], tris[r, 2]
+        out[r, 0] = table[b * n + c]
+        out[r, 1] = table[a * n + c]
+        out[r, 2] = table[a * n + b]
+    return out
+
+
+@numba.njit(cache=True)
+def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_values: np.ndarray):
+    """:func:`_coboundary` of the edges, fused with the dense facet lookup (no facet array at all)."""
+    m_d = edges.shape[0]
+    table = np.full(n * n, -1, dtype=np.int32)
+    for r in range(m_d):
+        table[edges[r, 0] * n + edges[r, 1]] = r
+    indptr = np.zeros(m_d + 1, dtype=np.int64)
+    for t in range(tris.shape[0]):
+        a, b, c = tris[t, 0], tris[t, 1], tris[t, 2]
+        e0, e1, e2 = table[b * n + c], table[a * n + c], table[a * n + b]
+        if e0 < 0 or e1 < 0 or e2 < 0:
+            return indptr, np.empty(0, dtype=np.int32), np.empty(0, dtype=np.int8), indptr, indptr, t
+        indptr[e0 + 1] += 1
+        indptr[e1 + 1] += 1
+        indptr[e2 + 1] += 1
+    for c in range(m_d):
+        indptr[c + 1] += indptr[c]
+    fill = indptr[:-1].copy()
+    rows = np.empty(indptr[m_d], dtype=np.int32)
+    signs = np.empty(indptr[m_d], dtype=np.int8)
+    pivot = np.full(m_d, -1, dtype=np.int64)
+    pivot_sign = np.zeros(m_d, dtype=np.int64)
+    pivot_value = np.full(m_d, np.inf)
+    for t in range(tris.shape[0]):
+        v = up_values[t]
+        a, b, c = tris[t, 0], tris[t, 1], tris[t, 2]
+        for i in range(3):
+            if i == 0:
+                e = table[b * n + c]
+            elif i == 1:
+                e = table[a * n + c]
+            else:
+                e = table[a * n + b]
+            rows[fill[e]] = t
+            signs[fill[e]] = 1 - 2 * (i & 1)
+            fill[e] += 1
+            if pivot[e] == -1 or v < pivot_value[e]:
+                pivot[e] = t
+                pivot_sign[e] = 1 - 2 * (i & 1)
+                pivot_value[e] = v
+    return indptr, rows, signs, pivot, pivot_sign, -1
+
+
+def _coboundary_matrix(K, d: int, up_values: np.ndarray):
+    """(indptr, rows, signs, pivot, pivot_sign) of δ on the d-simplices of K."""
+    m_d = K.simplices[d].shape[0]
+    if d == 1 and "_facet_cache" not in K.__dict__:
+        lower, upper = K.simplices[1], K.simplices[2]
+        n = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
+        if n * n <= max(1 << 22, 8 * lower.shape[0]):
+            out = _coboundary_triangles(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(n), up_values)
+            if out[5] >= 0:
+                t = upper[out[5]]
+                raise ValueError(f"an edge of the triangle {tuple(int(v) for v in t)} is missing from the filtration")
+            return out[:5]
+    return _coboundary(_facets(K, d + 1), up_values, m_d)
+
+
 def _facets(K, d: int) -> np.ndarray:
     """(m_d, d + 1) indices into ``K.simplices[d - 1]``; column i omits vertex i (as ``facet_indices``)."""
     cache = K.__dict__.get("_facet_cache")
@@ -81,7 +157,10 @@ def _facets(K, d: int) -> np.ndarray:
     base = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
     if d * np.log2(base) >= 62:  # keys would overflow: use the generic lookup
         return K.facet_indices(d)
-    out = _facet_lookup(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
+    if d == 2 and base * base <= max(1 << 22, 8 * lower.shape[0]):
+        out = _edge_facets_dense(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
+    else:
+        out = _facet_lookup(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
     if (out < 0).any():
         r, i = np.argwhere(out < 0)[0]
         face = tuple(int(v) for j, v in enumerate(upper[r]) if j != i)
@@ -135,12 +214,6 @@ def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
 
 # ---------------------------------------------------------------------------- coboundary matrix
 @numba.njit(cache=True)
-def _before(va: float, a: np.int64, vb: float, b: np.int64) -> bool:
-    """Filtration order within one dimension: by value, ties by index (the stable sort)."""
-    return va < vb or (va == vb and a < b)
-
-
-@numba.njit(cache=True)
 def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     """Compressed columns of δ on the d-simplices (by index): entries are indices of the (d+1)-cofaces.
 
@@ -160,6 +233,7 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     rows = np.empty(indptr[m_d], dtype=np.int32)
     signs = np.empty(indptr[m_d], dtype=np.int8)
     pivot = np.full(m_d, -1, dtype=np.int64)
+    pivot_sign = np.zeros(m_d, dtype=np.int64)
     pivot_value = np.full(m_d, np.inf)
     for t in range(m_up):
         v = up_values[t]
@@ -170,22 +244,9 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
             fill[c] += 1
             if pivot[c] == -1 or v < pivot_value[c]:  # t ascending: ties keep the smaller index
                 pivot[c] = t
+                pivot_sign[c] = 1 - 2 * (i & 1)
                 pivot_value[c] = v
-    return indptr, rows, signs, pivot
-
-
-@numba.njit(cache=True)
-def _sort_column(rows, signs, a, b, up_values):
-    """Sort the slice a:b (already ascending by index) by value, stably: the filtration order."""
-    vals = np.empty(b - a)
-    for k in range(b - a):
-        vals[k] = up_values[rows[a + k]]
-    perm = np.argsort(vals, kind="mergesort")
-    r = rows[a:b].copy()
-    s = signs[a:b].copy()
-    for k in range(b - a):
-        rows[a + k] = r[perm[k]]
-        signs[a + k] = s[perm[k]]
+    return indptr, rows, signs, pivot, pivot_sign
 
 
 # ---------------------------------------------------------------------------- reduction over Z/p
@@ -201,30 +262,79 @@ def _inv(a: np.int64, p: np.int64) -> np.int64:
 
 
 @numba.njit(cache=True)
-def _reduce_cohomology(indptr, rows, signs, pivot, order_d, cleared, up_values, p):
-    """Reduce the coboundary columns, latest d-simplex first, with clearing.
+def _heap_push(hv, ht, hc, n, v, t, c):
+    """Push (value v, index t, coefficient c) on the binary min-heap keyed by (value, index)."""
+    i = n
+    hv[i] = v
+    ht[i] = t
+    hc[i] = c
+    while i > 0:
+        par = (i - 1) >> 1
+        if hv[i] < hv[par] or (hv[i] == hv[par] and ht[i] < ht[par]):
+            hv[i], hv[par] = hv[par], hv[i]
+            ht[i], ht[par] = ht[par], ht[i]
+            hc[i], hc[par] = hc[par], hc[i]
+            i = par
+        else:
+            break
+    return n + 1
+
+
+@numba.njit(cache=True)
+def _heap_pop(hv, ht, hc, n):
+    """Remove the top of the heap of size n (returns the new size); read the top before calling."""
+    n -= 1
+    hv[0] = hv[n]
+    ht[0] = ht[n]
+    hc[0] = hc[n]
+    i = 0
+    while True:
+        left = 2 * i + 1
+        if left >= n:
+            break
+        m = left
+        right = left + 1
+        if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and ht[right] < ht[left])):
+            m = right
+        if hv[m] < hv[i] or (hv[m] == hv[i] and ht[m] < ht[i]):
+            hv[i], hv[m] = hv[m], hv[i]
+            ht[i], ht[m] = ht[m], ht[i]
+            hc[i], hc[m] = hc[m], hc[i]
+            i = m
+        else:
+            break
+    return n
+
+
+@numba.njit(cache=True)
+def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared, up_values, p):
+    """Reduce the coboundary columns, latest d-simplex first, with clearing (Ripser's scheme).
 
     ``order_d``: the d-simplices in filtration order; ``cleared[c]``: skip column c (its simplex was
     paired one dimension lower).  The pivot of a column is its earliest coface.  A column whose
-    pivot is still free is paired as it stands (no copy); the others are sorted into filtration
-    order and reduced by sorted merges over Z/p.  Returns (pair columns, pair rows, essential
-    columns, number of column additions), all as simplex indices.
+    pivot is still free is paired as it stands (apparent/emergent pair: no work at all).  A
+    colliding column is reduced lazily: the working column is a heap of coface entries, the added
+    columns are stored as their combinations V of original coboundaries (never as reduced columns,
+    which fill in), and only entries up to the next pivot are ever combined.  Returns (pair
+    columns, pair rows, essential columns, number of column additions), all as simplex indices.
     """
     m_d = indptr.shape[0] - 1
     m_up = up_values.shape[0]
-    owner = np.full(m_up, -1, dtype=np.int64)
-    start = np.full(m_d, -1, dtype=np.int64)  # -1: the reduced column is the original one
-    length = np.zeros(m_d, dtype=np.int64)
-    is_sorted = np.zeros(m_d, dtype=np.bool_)
-    cap = 1024
-    pool_r = np.empty(cap, dtype=np.int32)
-    pool_v = np.empty(cap, dtype=np.int64)
-    used = 0
-    wcap = 1024
-    w_r = np.empty(wcap, dtype=np.int32)
-    w_v = np.empty(wcap, dtype=np.int64)
-    t_r = np.empty(wcap, dtype=np.int32)
-    t_v = np.empty(wcap, dtype=np.int64)
+    owner = np.full(m_up, -1, dtype=np.int32)  # column owning each pivot
+    pcoef = np.zeros(m_d, dtype=np.int64)  # coefficient of its pivot in each reduced column
+    vstart = np.full(m_d, -1, dtype=np.int64)  # -1: V_c = c (the column was not reduced)
+    vlen = np.zeros(m_d, dtype=np.int64)
+    vcap = 1024
+    pool_k = np.empty(vcap, dtype=np.int64)
+    pool_c = np.empty(vcap, dtype=np.int64)
+    vused = 0
+    hcap = 1024
+    hv = np.empty(hcap)
+    ht = np.empty(hcap, dtype=np.int64)
+    hc = np.empty(hcap, dtype=np.int64)
+    wcap = 64
+    wk = np.empty(wcap, dtype=np.int64)
+    wc = np.empty(wcap, dtype=np.int64)
     npmax = min(m_d, m_up)
     pair_c = np.empty(npmax, dtype=np.int64)
     pair_r = np.empty(npmax, dtype=np.int64)
@@ -243,113 +353,121 @@ def _reduce_cohomology(indptr, rows, signs, pivot, order_d, cleared, up_values, 
         piv = pivot[c]
         if owner[piv] == -1:  # pivot still free: the column is already reduced (apparent/emergent pair)
             owner[piv] = c
+            pcoef[c] = pivot_sign[c] % p
             pair_c[npairs] = c
             pair_r[npairs] = piv
             npairs += 1
             continue
+        # ---- lazy reduction: heap of (value, coface, coefficient); V as a list of (simplex, coef)
+        hn = 0
+        wn = 0
+        wk[0] = c
+        wc[0] = 1
+        wn = 1
         a, b = indptr[c], indptr[c + 1]
-        if not is_sorted[c]:
-            _sort_column(rows, signs, a, b, up_values)
-            is_sorted[c] = True
-        wl = b - a
-        if wl > wcap:
-            while wcap < wl:
-                wcap *= 2
-            w_r = np.empty(wcap, dtype=np.int32)
-            w_v = np.empty(wcap, dtype=np.int64)
-            t_r = np.empty(wcap, dtype=np.int32)
-            t_v = np.empty(wcap, dtype=np.int64)
-        for k in range(wl):
-            w_r[k] = rows[a + k]
-            w_v[k] = signs[a + k] % p
-        while wl > 0:
-            piv = np.int64(w_r[0])
-            o = owner[piv]
+        if b - a > hcap:
+            while hcap < b - a:
+                hcap *= 2
+            hv = np.empty(hcap)
+            ht = np.empty(hcap, dtype=np.int64)
+            hc = np.empty(hcap, dtype=np.int64)
+        for k in range(a, b):
+            t = np.int64(rows[k])
+            hn = _heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
+        piv = -1
+        pc = 0
+        while True:
+            # pop the pivot: the earliest coface whose coefficients do not cancel
+            piv = -1
+            while hn > 0:
+                t = ht[0]
+                cc = hc[0]
+                hn = _heap_pop(hv, ht, hc, hn)
+                while hn > 0 and ht[0] == t:
+                    cc += hc[0]
+                    hn = _heap_pop(hv, ht, hc, hn)
+                cc %= p
+                if cc != 0:
+                    piv = t
+                    pc = cc
+                    break
+            if piv == -1:
+                break
+            o = np.int64(owner[piv])
             if o == -1:
                 break
+            # add factor · (reduced column of o) = factor · Σ_k V_o[k] δ(σ_k)
             additions += 1
-            # the reduced column of o: the original one (sorted on demand) or a stored one
-            if start[o] == -1:
-                oa, ol, stored = indptr[o], indptr[o + 1] - indptr[o], False
-                if not is_sorted[o]:
-                    _sort_column(rows, signs, oa, oa + ol, up_values)
-                    is_sorted[o] = True
+            factor = (p - pc * _inv(pcoef[o], p) % p) % p
+            # the pivot entry cancels exactly: drop it rather than pushing it back
+            if vstart[o] == -1:
+                ol = 1
             else:
-                oa, ol, stored = start[o], length[o], True
-            q = np.int64(pool_v[oa]) if stored else np.int64(signs[oa]) % p
-            factor = w_v[0] * _inv(q, p) % p
-            need = wl + ol
-            if need > wcap:
-                while wcap < need:
-                    wcap *= 2
-                n_r = np.empty(wcap, dtype=np.int32)
-                n_v = np.empty(wcap, dtype=np.int64)
-                n_r[:wl] = w_r[:wl]
-                n_v[:wl] = w_v[:wl]
-                w_r, w_v = n_r, n_v
-                t_r = np.empty(wcap, dtype=np.int32)
-                t_v = np.empty(wcap, dtype=np.int64)
-            # t = w - factor * R_o  (sorted merge in filtration order, zero coefficients dropped)
-            i = 0
-            j = 0
-            n = 0
-            while i < wl and j < ol:
-                ri = np.int64(w_r[i])
-                rj = np.int64(pool_r[oa + j]) if stored else np.int64(rows[oa + j])
-                if ri == rj:
-                    vj = pool_v[oa + j] if stored else np.int64(signs[oa + j]) % p
-                    v = (w_v[i] - factor * vj) % p
-                    if v != 0:
-                        t_r[n] = ri
-                        t_v[n] = v
-                        n += 1
-                    i += 1
-                    j += 1
-                elif _before(up_values[ri], ri, up_values[rj], rj):
-                    t_r[n] = ri
-                    t_v[n] = w_v[i]
-                    n += 1
-                    i += 1
+                ol = vlen[o]
+            for q in range(ol):
+                if vstart[o] == -1:
+                    k_s, k_c = o, np.int64(1)
                 else:
-                    vj = pool_v[oa + j] if stored else np.int64(signs[oa + j]) % p
-                    t_r[n] = rj
-                    t_v[n] = (p - factor * vj % p) % p
-                    n += 1
-                    j += 1
-            while i < wl:
-                t_r[n] = w_r[i]
-                t_v[n] = w_v[i]
-                n += 1
-                i += 1
-            while j < ol:
-                vj = pool_v[oa + j] if stored else np.int64(signs[oa + j]) % p
-                t_r[n] = pool_r[oa + j] if stored else rows[oa + j]
-                t_v[n] = (p - factor * vj % p) % p
-                n += 1
-                j += 1
-            w_r, t_r = t_r, w_r
-            w_v, t_v = t_v, w_v
-            wl = n
-        if wl == 0:
+                    k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
+                f = factor * k_c % p
+                if wn == wcap:
+                    wcap *= 2
+                    nk = np.empty(wcap, dtype=np.int64)
+                    nc = np.empty(wcap, dtype=np.int64)
+                    nk[:wn] = wk[:wn]
+                    nc[:wn] = wc[:wn]
+                    wk, wc = nk, nc
+                wk[wn] = k_s
+                wc[wn] = f
+                wn += 1
+                a, b = indptr[k_s], indptr[k_s + 1]
+                if hn + (b - a) > hcap:
+                    while hcap < hn + (b - a):
+                        hcap *= 2
+                    nv = np.empty(hcap)
+                    nt = np.empty(hcap, dtype=np.int64)
+                    ncf = np.empty(hcap, dtype=np.int64)
+                    nv[:hn] = hv[:hn]
+                    nt[:hn] = ht[:hn]
+                    ncf[:hn] = hc[:hn]
+                    hv, ht, hc = nv, nt, ncf
+                for k in range(a, b):
+                    t = np.int64(rows[k])
+                    if t == piv:  # σ_k's entry at the pivot: it cancels with the popped one
+                        continue
+                    hn = _heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
+        if piv == -1:
             ess[ness] = c
             ness += 1
             continue
-        # store the reduced column
-        if used + wl > cap:
-            while cap < used + wl:
-                cap *= 2
-            n_r = np.empty(cap, dtype=np.int32)
-            n_v = np.empty(cap, dtype=np.int64)
-            n_r[:used] = pool_r[:used]
-            n_v[:used] = pool_v[:used]
-            pool_r, pool_v = n_r, n_v
-        pool_r[used : used + wl] = w_r[:wl]
-        pool_v[used : used + wl] = w_v[:wl]
-        start[c] = used
-        length[c] = wl
-        used += wl
-        piv = np.int64(w_r[0])
+        # store V_c (duplicates merged, zeros dropped) and the pair
+        order = np.argsort(wk[:wn], kind="mergesort")
+        if vused + wn > vcap:
+            while vcap < vused + wn:
+                vcap *= 2
+            nk = np.empty(vcap, dtype=np.int64)
+            nc = np.empty(vcap, dtype=np.int64)
+            nk[:vused] = pool_k[:vused]
+            nc[:vused] = pool_c[:vused]
+            pool_k, pool_c = nk, nc
+        vstart[c] = vused
+        q = 0
+        i = 0
+        while i < wn:
+            k_s = wk[order[i]]
+            s_c = np.int64(0)
+            while i < wn and wk[order[i]] == k_s:
+                s_c += wc[order[i]]
+                i += 1
+            s_c %= p
+            if s_c != 0:
+                pool_k[vused + q] = k_s
+                pool_c[vused + q] = s_c
+                q += 1
+        vlen[c] = q
+        vused += q
         owner[piv] = c
+        pcoef[c] = pc
         pair_c[npairs] = c
         pair_r[npairs] = piv
         npairs += 1
@@ -367,6 +485,12 @@ def persistence(filtration, p: int = 2, *, stats: dict | None = None) -> Barcode
     filtration : a :class:`~thesis_lib.complexes.Filtration` or an iterable of ``(simplex, value)`` pairs.
     p : a prime; the coefficients are the field Z/p.
     stats : optional dict, filled with counts (columns reduced, column additions) per dimension.
+
+    Notes
+    -----
+    The top dimension's essential classes (a truncated Rips complex has millions) are listed lazily:
+    they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
+    matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
     """
     K = as_filtration(filtration)
     p = check_prime(p)
@@ -407,17 +531,22 @@ def persistence(filtration, p: int = 2, *, stats: dict | None = None) -> Barcode
     # ---- dimensions 1 .. D-1 by cohomology with clearing
     for d in range(1, D):
         m_d = K.simplices[d].shape[0]
-        if K.simplices[d + 1].shape[0] >= 2**31:
+        if max(K.simplices[d + 1].shape[0], m_d) >= 2**31 - 1:
             raise ValueError("more than 2**31 simplices in one dimension are not supported")
         up_values = np.ascontiguousarray(K.values[d + 1])
-        indptr, rows, signs, pivot = _coboundary(_facets(K, d + 1), up_values, m_d)
-        born, dies, essential, adds = _reduce_cohomology(indptr, rows, signs, pivot, orders[d], cleared, up_values, np.int64(p))
-        del indptr, rows, signs, pivot
+        indptr, rows, signs, pivot, pivot_sign = _coboundary_matrix(K, d, up_values)
+        born, dies, essential, adds = _reduce_cohomology(
+            indptr, rows, signs, pivot, pivot_sign, orders[d], cleared, up_values, np.int64(p)
+        )
+        del indptr, rows, signs, pivot, pivot_sign
         finish(d, born, dies, essential)
         if stats is not None:
             stats[d] = {"columns": int(m_d - cleared.sum()), "additions": int(adds)}
         cleared = np.zeros(K.simplices[d + 1].shape[0], dtype=np.bool_)
         cleared[dies] = True
-    # ---- top dimension: every simplex not killing a class creates an essential one
-    finish(D, empty, empty, np.flatnonzero(~cleared))
-    return Barcode(intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers)
+    # ---- top dimension: every simplex not killing a class creates an essential one (listed lazily:
+    # often millions of classes of a truncated complex, which nobody reads)
+    essential_top = {D: (K.values[D], ~cleared)}
+    return Barcode(
+        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top
+    )

@@ -8,14 +8,15 @@ import numpy as np
 
 from .barcode import Barcode
 
-__all__ = ["plot_barcode", "plot_diagram", "DIM_COLORS"]
-
-#: one colour per homology dimension, shared by barcodes and diagrams
-DIM_COLORS = ("#1f4e9c", "#c0392b", "#2e8b57", "#8e44ad", "#d68910")
+__all__ = ["plot_barcode", "plot_diagram"]
 
 
 def _color(dim: int) -> str:
-    return DIM_COLORS[dim % len(DIM_COLORS)]
+    """One colour per homology dimension, shared by barcodes and diagrams (the book's style)."""
+    from ..style import COLORS  # imports matplotlib: only when plotting
+
+    dims = COLORS["dims"]
+    return dims[dim % len(dims)]
 
 
 def _dims(barcode: Barcode, dims: Sequence[int] | None) -> list[int]:
