@@ -56,6 +56,21 @@ def test_rips_equals_gudhi(dim, eps, max_dim):
     assert_valid(f)
 
 
+def test_rips_kd_tree_path_equals_gudhi():
+    # more than 2000 points in low dimension: edges come from a k-d tree instead of all pairs
+    from thesis_lib.complexes._flag import edges_within, pairwise_edges
+
+    pts = np.random.default_rng(9).random((2500, 3))
+    a, b = edges_within(pts, 0.06), pairwise_edges(pts, 0.06)
+    np.testing.assert_array_equal(a[0], b[0])
+    np.testing.assert_array_equal(a[1], b[1])
+    f = rips(pts, 0.04, 3)
+    ref = gudhi_dict(gudhi.RipsComplex(points=pts, max_edge_length=0.08).create_simplex_tree(max_dimension=3))
+    ours = as_dict(f)
+    assert set(ours) == set(ref)
+    assert max(abs(2 * ours[s] - ref[s]) for s in ref) < 1e-12
+
+
 def test_rips_distance_matrix_and_rows_sorted():
     pts = np.random.default_rng(1).random((30, 2))
     a = rips(pts, 0.3, 3)
@@ -150,6 +165,12 @@ def test_delaunay_cospherical_is_the_nerve():
     grid = np.array([[i, j] for i in range(3) for j in range(3)], float)
     out = delaunay(grid)
     assert sum(len(s) == 4 for s in out) == 4  # one 3-simplex per unit square
+    # a 3 × 3 × 3 grid: eight unit cubes, each with its 8 corners on one sphere -> eight 7-simplices
+    cube = np.array(list(itertools.product(range(3), repeat=3)), float)
+    out = delaunay(cube)
+    tops = [s for s in out if len(s) == 8]
+    assert len(tops) == 8 and max(len(s) for s in out) == 8
+    assert all(np.ptp(cube[list(s)], axis=0).max() == 1 for s in tops)
     with pytest.raises(ValueError, match="one empty sphere"):
         t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
         delaunay(np.column_stack([np.cos(t), np.sin(t)]))
@@ -241,6 +262,34 @@ def test_witness_full_complex_uses_shortcuts_correctly():
     ours = as_dict(f)
     assert len(ours) == len(ref) == 14 + 91 + 364 + 1001
     assert max(abs(ours[s] - ref[s]) for s in ref) == 0.0
+
+
+@settings(deadline=None, max_examples=15)
+@given(st.integers(0, 10_000), st.integers(20, 150), st.integers(3, 9), st.integers(0, 2), st.floats(0.0, 0.6))
+def test_witness_random_against_brute_force(seed, n, n_landmarks, nu, eps):
+    pts = np.random.default_rng(seed).random((n, 3))
+    lm = random_landmarks(pts, n_landmarks, seed=seed)
+    ours = as_dict(witness(pts, lm, eps, 3, nu=nu))
+    ref = _brute_witness(witness_offsets(pts, lm, nu), eps, 3)
+    assert ours == ref
+
+
+def test_witness_kernel_paths_agree():
+    # the sorted-prefix scan, the gathered scan and the full scan give identical children and values
+    from thesis_lib.complexes.witness import _edge_values, _witness_level
+
+    pts = np.random.default_rng(8).random((3000, 4))
+    lm = maxmin_landmarks(pts, 16, seed=0)
+    D = np.ascontiguousarray(witness_offsets(pts, lm, 1))
+    ev, arg = _edge_values(D)
+    order = np.argsort(D, axis=1, kind="stable")
+    sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
+    tri = np.array(list(itertools.combinations(range(16), 3)))
+    for eps in (np.inf, 0.3):
+        a = _witness_level(tri, D, ev, arg, eps, order, sorted_d, True, 7)
+        b = _witness_level(tri, D, ev, arg, eps, order, sorted_d, False, 1)
+        np.testing.assert_array_equal(a[0], b[0])
+        np.testing.assert_array_equal(a[1], b[1])
 
 
 def test_witness_matches_gudhi_strong_witness_at_zero():
@@ -364,3 +413,38 @@ GOOD = np.random.default_rng(0).random((10, 2))
 def test_bad_input(call, msg):
     with pytest.raises(ValueError, match=msg):
         call()
+
+
+@settings(deadline=None, max_examples=10)
+@given(st.integers(0, 10_000), st.integers(8, 60), st.sampled_from([2, 3]), st.booleans())
+def test_alpha_random_against_gudhi(seed, n, dim, weighted):
+    rng = np.random.default_rng(seed)
+    pts = rng.random((n, dim))
+    w = rng.random(n) * 0.01 if weighted else None
+    ours = as_dict(alpha(pts, w))
+    ref = gudhi_dict(gudhi.AlphaComplex(points=pts, weights=w, precision="exact").create_simplex_tree())
+    assert set(ours) == set(ref)
+    for s, v in ref.items():
+        assert ours[s] == pytest.approx(v, rel=1e-6, abs=1e-12)
+
+
+# ------------------------------------------------------------------------------------ landmarks
+def test_landmarks():
+    pts = np.random.default_rng(4).random((300, 2))
+    lm = maxmin_landmarks(pts, 25, seed=2)
+    assert len(set(lm.tolist())) == 25
+    np.testing.assert_array_equal(lm, maxmin_landmarks(pts, 25, seed=2))
+    d = np.sqrt(((pts[:, None, :] - pts[None]) ** 2).sum(-1))
+    for i in range(1, 25):
+        # the sequential maxmin rule (§2.1.2): the i-th landmark is farthest from the first i - 1
+        nearest = d[:, lm[:i]].min(axis=1)
+        assert nearest[lm[i]] == pytest.approx(nearest.max())
+    rnd = random_landmarks(pts, 25, seed=2)
+    assert np.all(np.diff(rnd) > 0) and rnd.max() < 300
+    from thesis_lib.complexes import covering_radius
+
+    assert covering_radius(pts, lm) == pytest.approx(d[:, lm].min(axis=1).max())
+    # maxmin covers better than random here, as the thesis observes (Figure 2.13)
+    assert covering_radius(pts, lm) < covering_radius(pts, rnd)
+    with pytest.raises(ValueError, match="positive integer"):
+        random_landmarks(pts, 0, seed=0)

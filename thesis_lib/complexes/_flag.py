@@ -185,3 +185,25 @@ def flag_levels(n: int, edges: np.ndarray, edge_values: np.ndarray, max_dim: int
             simplices.append(s)
             values.append(v)
     return simplices, values
+
+
+def edges_within(points: np.ndarray, threshold: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lexicographic pairs ``i < j`` at distance <= ``threshold`` and their lengths.
+
+    Brute force in numba for small inputs; a k-d tree (scipy) when there are many points in low
+    dimension and the threshold is finite (then far pairs are never looked at).
+    """
+    n, dim = points.shape
+    if n > 2000 and dim <= 8 and np.isfinite(threshold):
+        from scipy.spatial import cKDTree
+
+        pairs = cKDTree(points).query_pairs(threshold * (1 + 1e-12), output_type="ndarray").astype(np.int64)
+        if pairs.shape[0]:
+            pairs.sort(axis=1)
+            lengths = np.sqrt(((points[pairs[:, 0]] - points[pairs[:, 1]]) ** 2).sum(axis=1))
+            keep = lengths <= threshold
+            pairs, lengths = pairs[keep], lengths[keep]
+            order = np.lexsort((pairs[:, 1], pairs[:, 0]))
+            return np.ascontiguousarray(pairs[order]), lengths[order]
+        return np.empty((0, 2), np.int64), np.empty(0)
+    return pairwise_edges(points, threshold)

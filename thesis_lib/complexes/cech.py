@@ -8,7 +8,7 @@ import numpy as np
 from ..points import as_points
 from ..simplicial import facets, find_rows
 from ._checks import check_max_dim, check_radius
-from ._flag import expand_level, pairwise_edges, upper_csr
+from ._flag import edges_within, expand_level, upper_csr
 from .filtration import Filtration
 from .miniball import meb_radius_small
 
@@ -52,7 +52,7 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
     simplices = [np.arange(n, dtype=np.int64).reshape(n, 1)]
     values = [np.zeros(n)]
     if max_dim >= 1:
-        edges, lengths = pairwise_edges(pts, 2.0 * eps)
+        edges, lengths = edges_within(pts, 2.0 * eps)
         simplices.append(edges)
         values.append(lengths * 0.5)
         indptr, indices, vals = upper_csr(n, edges, lengths * 0.5)

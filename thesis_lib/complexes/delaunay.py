@@ -88,8 +88,8 @@ def delaunay(points, weights=None, *, tol: float = 1e-10) -> list[tuple[int, ...
     ----------
     points : (n, d) array, n >= d + 1, no duplicate points, not all on a hyperplane.
     weights : optional (n,) squared radii w_x >= 0.
-    tol : relative tolerance deciding that d + 2 points are co-spherical (lie on one hyperplane
-        after lifting).  Co-spherical cells are kept whole, as the nerve demands: d + 2 points on a
+    tol : tolerance on the (unit-normal) hyperplane equations of neighbouring lifted facets deciding
+        that they are one facet, i.e. that d + 2 or more points are co-spherical.  Co-spherical cells are kept whole, as the nerve demands: d + 2 points on a
         common sphere give a (d + 1)-simplex (Voronoi cells meeting in one vertex).
 
     Returns
@@ -97,19 +97,19 @@ def delaunay(points, weights=None, *, tol: float = 1e-10) -> list[tuple[int, ...
     The simplices as ascending vertex tuples, sorted by dimension, then lexicographically.
     Points with an empty weighted Voronoi cell are left out.
     """
-    tri, eqs, nb, lifted = regular_triangulation(points, weights)
+    tri, eqs, nb, _ = regular_triangulation(points, weights)
     m, width = tri.shape
-    # merge neighbouring lower facets lying on one hyperplane (co-spherical points)
+    # merge neighbouring lower facets lying on one hyperplane (co-spherical points).  Compare the
+    # hyperplanes themselves, not "the opposite vertex lies on my plane": qhull's triangulation of a
+    # co-spherical cell may hold flat simplices inside a face shared with the next cell, whose
+    # vertices lie on both cells' spheres.
     rows, cols = [], []
-    hom = np.column_stack([lifted, np.ones(lifted.shape[0])])
     for j in range(width):
         g = nb[:, j]
         has = g >= 0
         f_ids = np.flatnonzero(has)
         g_ids = g[has]
-        opposite_in_g = tri[g_ids][~np.any(tri[g_ids][:, :, None] == tri[f_ids][:, None, :], axis=2)]
-        dist = np.abs(np.einsum("ij,ij->i", eqs[f_ids], hom[opposite_in_g]))
-        same = dist <= tol
+        same = np.max(np.abs(eqs[f_ids] - eqs[g_ids]), axis=1) <= tol
         rows.append(f_ids[same])
         cols.append(g_ids[same])
     rows, cols = np.concatenate(rows), np.concatenate(cols)

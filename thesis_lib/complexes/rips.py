@@ -6,7 +6,7 @@ import numpy as np
 
 from ..points import as_points
 from ._checks import check_max_dim, check_radius
-from ._flag import flag_levels, matrix_edges, pairwise_edges
+from ._flag import edges_within, flag_levels, matrix_edges
 from .filtration import Filtration
 
 __all__ = ["rips"]
@@ -53,6 +53,6 @@ def rips(points=None, max_radius: float = np.inf, max_dim: int = 2, *, distance_
     else:
         pts = np.ascontiguousarray(as_points(points))
         n = pts.shape[0]
-        edges, lengths = pairwise_edges(pts, 2.0 * eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
+        edges, lengths = edges_within(pts, 2.0 * eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
     simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
     return Filtration(simplices, values, validate=False)

@@ -23,7 +23,7 @@ import numpy as np
 
 from ..points import as_points
 from ._checks import check_max_dim, check_radius
-from ._flag import _grow, flag_levels, matrix_edges
+from ._flag import flag_levels, matrix_edges
 from .filtration import Filtration
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
@@ -73,6 +73,7 @@ def witness_offsets(points, landmarks, nu: int = 1) -> np.ndarray:
     return dist - m[None, :]
 
 
+_SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted witness lists are kept
 _BIG = 1e300  # stands for "not a witness" (finite, so the fastmath reductions stay valid)
 
 
@@ -98,78 +99,150 @@ def _minmax_gather(cur, idx, cnt, row):
 
 
 @numba.njit(cache=True)
-def _witness_level(parents, D, ev, arg, eps):
+def _count_below(row, value):
+    lo, hi = 0, row.shape[0]
+    while lo < hi:
+        mid = (lo + hi) >> 1
+        if row[mid] < value:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+@numba.njit(cache=True)
+def _candidate_counts(parents, ev, eps):
+    """Per parent: the landmarks w > last vertex whose edges to every vertex have value <= eps."""
+    m, width = parents.shape
+    n_l = ev.shape[0]
+    counts = np.zeros(m, dtype=np.int64)
+    for r in range(m):
+        c = 0
+        for w in range(parents[r, width - 1] + 1, n_l):
+            ok = True
+            for i in range(width):
+                if ev[parents[r, i], w] > eps:
+                    ok = False
+                    break
+            if ok:
+                c += 1
+        counts[r] = c
+    return counts
+
+
+@numba.njit(cache=True)
+def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid, start,
+                    cur, ccur, idx):
+    """Children of parent ``r`` written into rows ``start, start + 1, ...`` (one per candidate)."""
+    width = parents.shape[1]
+    n_l, n_x = D.shape
+    cnt = 0
+    pv = _BIG
+    xp = 0
+    for x in range(n_x):
+        mx = D[parents[r, 0], x]
+        for i in range(1, width):
+            v = D[parents[r, i], x]
+            if v > mx:
+                mx = v
+        if mx <= eps:
+            cur[x] = mx
+            ccur[cnt] = mx
+            idx[cnt] = x
+            cnt += 1
+            if mx < pv:
+                pv = mx
+                xp = x
+        else:
+            cur[x] = _BIG
+    slot = start
+    last = parents[r, width - 1]
+    compressed = 4 * cnt < n_x
+    for w in range(last + 1, n_l):
+        lb = pv
+        ok = True
+        for i in range(width):
+            e = ev[parents[r, i], w]
+            if e > eps:
+                ok = False
+                break
+            if e > lb:
+                lb = e
+        if not ok:
+            continue
+        # (the parent is in the complex, so cnt > 0 and xp is a real witness)
+        ub = max(cur[xp], D[w, xp])
+        for i in range(width):
+            x = arg[parents[r, i], w]
+            v = max(cur[x], D[w, x])
+            if v < ub:
+                ub = v
+        n_scan = n_x + 1
+        u_best = 0
+        if use_sorted and ub > lb:
+            for i in range(width + 1):
+                u = parents[r, i] if i < width else w
+                c = _count_below(sorted_d[u], ub)
+                if c < n_scan:
+                    n_scan = c
+                    u_best = u
+        if ub <= lb:
+            best = ub
+        elif 3 * n_scan < (cnt if compressed else n_x):
+            best = ub
+            for k in range(n_scan):
+                if sorted_d[u_best, k] >= best:
+                    break
+                x = order[u_best, k]
+                v = cur[x]
+                if D[w, x] > v:
+                    v = D[w, x]
+                if v < best:
+                    best = v
+        elif compressed:
+            best = _minmax_gather(ccur, idx, cnt, D[w])
+        else:
+            best = _minmax_full(cur, D[w])
+        for i in range(width):
+            out[slot, i] = parents[r, i]
+        out[slot, width] = w
+        out_v[slot] = max(best, 0.0)
+        valid[slot] = best <= eps
+        slot += 1
+
+
+@numba.njit(cache=True, parallel=True)
+def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chunks):
     """Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.
 
     ``ev[a, b]`` is the (unclamped) value of edge ab and ``arg[a, b]`` a witness realising it; they
     give a lower bound and candidate witnesses, so many simplices need no scan over all points.
+    With ``use_sorted``, ``order[l]`` lists the points by increasing ``D[l, x]`` (``sorted_d[l]``):
+    a witness beating the current best b has D[u, x] < b for every vertex u, so only the prefix of
+    the shortest such list is scanned.  Parents are processed in parallel, each writing its
+    candidates into its own rows (so the output order does not depend on the threads).
     """
     m, width = parents.shape
-    n_l, n_x = D.shape
-    cap = max(16, 2 * m)
-    out = np.empty((cap, width + 1), dtype=np.int64)
-    out_v = np.empty(cap, dtype=np.float64)
-    count = 0
-    cur = np.empty(n_x)
-    ccur = np.empty(n_x)
-    idx = np.empty(n_x, dtype=np.int64)
+    n_x = D.shape[1]
+    counts = _candidate_counts(parents, ev, eps)
+    starts = np.zeros(m + 1, dtype=np.int64)
     for r in range(m):
-        cnt = 0
-        pv = _BIG
-        xp = 0
-        for x in range(n_x):
-            mx = D[parents[r, 0], x]
-            for i in range(1, width):
-                v = D[parents[r, i], x]
-                if v > mx:
-                    mx = v
-            if mx <= eps:
-                cur[x] = mx
-                ccur[cnt] = mx
-                idx[cnt] = x
-                cnt += 1
-                if mx < pv:
-                    pv = mx
-                    xp = x
-            else:
-                cur[x] = _BIG
-        if cnt == 0:
-            continue
-        compressed = 4 * cnt < n_x
-        last = parents[r, width - 1]
-        for w in range(last + 1, n_l):
-            lb = pv
-            ok = True
-            for i in range(width):
-                e = ev[parents[r, i], w]
-                if e > eps:
-                    ok = False
-                    break
-                if e > lb:
-                    lb = e
-            if not ok:
-                continue
-            ub = max(cur[xp], D[w, xp])
-            for i in range(width):
-                x = arg[parents[r, i], w]
-                v = max(cur[x], D[w, x])
-                if v < ub:
-                    ub = v
-            if ub <= lb:
-                best = ub
-            elif compressed:
-                best = _minmax_gather(ccur, idx, cnt, D[w])
-            else:
-                best = _minmax_full(cur, D[w])
-            if best <= eps:
-                if count == out.shape[0]:
-                    out, out_v = _grow(out, out_v, count)
-                for i in range(width):
-                    out[count, i] = parents[r, i]
-                out[count, width] = w
-                out_v[count] = max(best, 0.0)
-                count += 1
-    return out[:count].copy(), out_v[:count].copy()
+        starts[r + 1] = starts[r] + counts[r]
+    total = starts[m]
+    out = np.empty((total, width + 1), dtype=np.int64)
+    out_v = np.empty(total, dtype=np.float64)
+    valid = np.zeros(total, dtype=np.bool_)
+    n_chunks = max(1, min(m, n_chunks))
+    for c in numba.prange(n_chunks):
+        cur = np.empty(n_x)
+        ccur = np.empty(n_x)
+        idx = np.empty(n_x, dtype=np.int64)
+        for r in range(c * m // n_chunks, (c + 1) * m // n_chunks):
+            if counts[r] > 0:
+                _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid,
+                                starts[r], cur, ccur, idx)
+    keep = np.flatnonzero(valid)
+    return out[keep], out_v[keep]
 
 
 @numba.njit(cache=True)
@@ -231,10 +304,17 @@ def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> 
         edges, vals = matrix_edges(np.maximum(ev, 0.0), eps)
         simplices.append(edges)
         values.append(vals)
+        use_sorted = max_dim >= 2 and D.size <= _SORTED_LIMIT
+        if use_sorted:
+            order = np.argsort(D, axis=1, kind="stable")
+            sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
+        else:
+            order, sorted_d = np.zeros((1, 1), np.int64), np.zeros((1, 1))
         for _ in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break
-            s, v = _witness_level(simplices[-1], D, ev, arg, eps)
+            s, v = _witness_level(simplices[-1], D, ev, arg, eps, order, sorted_d, use_sorted,
+                                  64 * numba.get_num_threads())
             simplices.append(s)
             values.append(v)
     return Filtration(simplices, values, validate=False)
