@@ -22,6 +22,9 @@ def test_tables_from_rows(tmp_path, monkeypatch):
         "| a | 0.5 | 1 | 0.5 |  |",
         "| b | 2 |  |  | 3 |",
     ]
+    assert bench.markdown("x", ["ratio", "case"]).splitlines()[2] == "| 0.5 | a |"
+    with pytest.raises(ValueError, match="no columns"):
+        bench.markdown("x", ["nothing"])
     with pytest.raises(FileNotFoundError, match="make bench"):
         bench.load("missing")
 

@@ -37,12 +37,17 @@ def _cell(value) -> str:
     return "" if value is None else str(value)
 
 
-def markdown(topic: str) -> str:
-    """One benchmark as a Markdown table, columns in first-seen order."""
+def markdown(topic: str, columns: list[str] | None = None) -> str:
+    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order."""
     rows = load(topic)
-    columns: list[str] = []
-    for row in rows:
-        columns += [k for k in row if k not in columns and not isinstance(row[k], (list, dict))]
+    if columns is None:
+        columns = []
+        for row in rows:
+            columns += [k for k in row if k not in columns and not isinstance(row[k], (list, dict))]
+    else:
+        missing = [c for c in columns if all(c not in r for r in rows)]
+        if missing:
+            raise ValueError(f"benchmark {topic!r} has no columns {missing}")
     lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     lines += ["| " + " | ".join(_cell(r.get(c)) for c in columns) + " |" for r in rows]
     return "\n".join(lines) + "\n"
