@@ -123,8 +123,9 @@ def test_large_sparse_unit_matrix_and_skip():
 
 
 def test_large_prime_uses_exact_engine():
-    p = 2**61 - 1  # a Mersenne prime, too big for the int64 kernel
+    p = 2147483659  # the first prime above 2**31: too big for the int64 kernel
     assert rank_mod_p(THESIS_M2, p) == 10
+    assert rank_mod_p([[p, 0], [0, 1]], p) == 1
     assert rank_mod_p([[p, 0], [0, 1]], 2**31 - 1) == 2
 
 
@@ -156,3 +157,18 @@ def test_bad_coefficients_and_masks():
         reduce_matrix(THESIS_M2, skip_columns=np.zeros(3, bool))
     with pytest.raises(ValueError, match="2-D"):
         dense_smith_diagonal(np.zeros(3))
+    with pytest.raises(ValueError, match="integers"):
+        dense_smith_diagonal(np.array([[0.5]]))
+    with pytest.raises(ValueError, match="integers"):
+        dense_smith_diagonal(np.array([[1, "x"]], dtype=object))
+    assert dense_smith_diagonal(np.array([[6, 0], [0, 4]], dtype=object)) == [2, 12]
+
+
+@settings(deadline=None, max_examples=6)
+@given(st.integers(0, 2**32 - 1))
+def test_sparse_matrices_with_postponed_rows_match_sympy(seed):
+    # sparse entries in {-3..3}: many non-unit entries, so rows get postponed and a core remains
+    rng = np.random.default_rng(seed)
+    a = rng.integers(-3, 4, (18, 22)) * (rng.random((18, 22)) < 0.25)
+    red = reduce_matrix(sp.csc_matrix(a))
+    assert [1] * (red.rank - len(red.invariants)) + red.invariants == sympy_invariants(a)

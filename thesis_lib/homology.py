@@ -5,10 +5,10 @@ matrices (Definition 2.18) and reads the groups off their Smith normal forms:
 rank Z_p = m_p − k_p, rank B_p = k_{p+1}, β_p = m_p − k_p − k_{p+1}, and the diagonal entries ≥ 2
 of ∂_{p+1} are the torsion coefficients of H_p.
 
-The boundary matrices are reduced from the top dimension down with *clearing*: a p-simplex that is
-the lowest entry, with coefficient ±1, of a reduced column of ∂_{p+1} can be exchanged for that
-cycle by a unimodular change of basis of C_p, and ∂_p kills the cycle; so its column of ∂_p is
-skipped without changing rank or torsion.
+The boundary matrices are reduced from the top dimension down with *clearing*: a p-simplex that
+carries the pivot ±1 of a reduced column of ∂_{p+1} (a p-cycle) can be exchanged for that cycle by
+a unimodular change of basis of C_p (the pivots form a triangular block with unit diagonal), and
+∂_p kills the cycle; so its column of ∂_p is skipped without changing rank or torsion.
 """
 
 from __future__ import annotations
@@ -19,15 +19,45 @@ import numpy as np
 import scipy.sparse as sp
 
 from .simplicial import boundary_matrix, check_coefficients, closure
-from .smith import reduce_matrix
+from .smith import reduce_matrix, smith_normal_form
 
-__all__ = ["homology", "boundary_matrices", "betti_numbers", "euler_characteristic", "simplex_counts"]
+__all__ = [
+    "homology",
+    "boundary_matrices",
+    "betti_numbers",
+    "euler_characteristic",
+    "simplex_counts",
+    "smith_normal_form",  # re-exported: DESIGN.md lists it under thesis_lib.homology
+]
 
 
 def _complex(simplices) -> list[np.ndarray]:
+    """Closure of the input; vertex tuples are grouped by length with numpy (fast path)."""
     if isinstance(simplices, (str, bytes)):
         raise ValueError("simplices must be an iterable of vertex tuples")
-    return closure(simplices)
+    if isinstance(simplices, list) and simplices and all(isinstance(a, np.ndarray) for a in simplices):
+        return closure(simplices)  # per-dimension arrays
+    if isinstance(simplices, np.ndarray) and simplices.ndim == 2 and simplices.dtype.kind in "iu":
+        groups = {simplices.shape[1]: simplices}
+    else:
+        items = list(simplices)
+        try:
+            lens = np.fromiter(map(len, items), dtype=np.int64, count=len(items))
+        except TypeError:
+            return closure(items)  # raises the appropriate error
+        if lens.size == 0 or lens.min() == 0:
+            return closure(items)
+        groups = {}
+        for width in np.unique(lens):
+            arr = np.array([items[i] for i in np.flatnonzero(lens == width)])
+            if arr.ndim != 2 or arr.dtype.kind not in "iu":
+                return closure(items)  # unusual entries: the general path validates them
+            groups[int(width)] = arr
+    top = max(groups) - 1
+    cx = closure([groups.get(d + 1, np.empty((0, d + 1), np.int64)) for d in range(top + 1)])
+    if cx[0].shape[0] == 0:
+        raise ValueError("the complex is empty")
+    return cx
 
 
 def boundary_matrices(complex_arrays: list[np.ndarray], coefficients: int = 0) -> list[sp.csc_matrix]:
@@ -97,7 +127,9 @@ def homology(simplices: Iterable[Sequence[int]], coefficients: int = 0) -> list[
     Returns
     -------
     list of ``(betti, torsion)`` indexed by dimension 0..top: ``H_k ≅ Z^betti ⊕ ⊕_t Z/t`` over Z,
-    ``(Z/p)^betti`` over Z/p (``torsion`` is then empty).  ``torsion`` is sorted ascending.
+    ``(Z/p)^betti`` over Z/p (``torsion`` is then empty).  ``torsion`` lists the torsion
+    coefficients in the sense of the Smith normal form: the invariant factors ``> 1``, ascending,
+    each dividing the next (Z/2 ⊕ Z/4 ⊕ Z/6 is reported as ``[2, 2, 12]``).
 
     Raises
     ------

@@ -3,18 +3,26 @@
 The thesis (§2.2.1) reads homology off the Smith normal form of the boundary matrices: the number
 of nonzero diagonal entries is the rank, entries ``>= 2`` are torsion.  Boundary matrices are huge
 and sparse, and almost all of their elimination can be done with pivots ``±1``; so the engine here
-works in three stages:
+works in two stages:
 
-1. a sparse column echelon reduction (the "lowest nonzero row" reduction of persistence, in numba,
-   int64 with overflow detection): a column whose lowest entry meets a pivot is reduced by it,
-   exactly when the pivot is a unit, with an extended-gcd pair of column operations otherwise;
-2. the few pivots that are not units are reduced against all unit pivots (clearing their rows),
-   which splits the matrix, up to unimodular row/column operations, as ``I ⊕ core``;
-3. a dense exact Smith normal form of the small ``core`` (int64 with overflow checks, falling back
-   to Python integers).
+1. a sparse column reduction in numba (int64, overflow detected) that pivots on units only: each
+   column is reduced at its lowest entry, by the pivot of that row (always ±1); an entry that is
+   not a unit in a row without pivot makes that row "postponed" and the reduction goes on above
+   it.  The unit pivots form a unimodular triangular block, so up to unimodular row and column
+   operations the matrix is ``I ⊕ core``, where the core is the columns left with entries in
+   postponed rows only;
+2. the small core: more unit-pivot passes on its transpose (SNF(A) = SNF(Aᵀ)) while they find
+   pivots, then a dense exact Smith normal form (int64 with overflow checks, else Python integers).
 
-If an int64 bound is hit in stage 1 or 2, the same algorithm is rerun on dictionaries of Python
-integers (exact, slower).  Over Z/p every nonzero pivot is a unit and stage 1 alone gives the rank.
+A column whose stage-1 reduction would overflow int64 is finished with Python integers from the
+kernel's state (exact, slower).  Over Z/p every nonzero entry is a unit and stage 1 alone gives the
+rank.
+
+Limits: boundary matrices of Rips, alpha and triangulated manifolds leave no or a tiny core.
+Random Linial–Meshulam 2-complexes near their homological threshold are the hard case: their core
+is dense with entries ~10⁶ (n = 100 vertices: 130 × 1645, about 2 s; n = 150: 337 × 3994, which
+the naive dense elimination in Python integers does not finish in minutes).  A modular
+(determinant-based) dense Smith normal form would be the remedy there.
 """
 
 from __future__ import annotations
@@ -30,8 +38,8 @@ from .simplicial import check_coefficients
 
 __all__ = ["smith_normal_form", "rank_mod_p", "reduce_matrix", "Reduction", "dense_smith_diagonal"]
 
-#: Largest absolute value kept in int64 during sparse elimination: products of two such numbers plus
-#: another product stay below 2**62, so one check per stored entry detects every overflow.
+#: Largest absolute value kept in int64 during sparse elimination: an update w + c * pivot with
+#: |w|, |c|, |pivot| <= 2**30 stays below 2**61, so one check per stored entry detects overflow.
 INT64_LIMIT = 2**30
 #: Largest prime handled by the numba Z/p kernel (products of residues must fit in int64).
 _MAX_NUMBA_PRIME = 2**31
@@ -40,13 +48,15 @@ _MAX_NUMBA_PRIME = 2**31
 class Reduction(NamedTuple):
     """Outcome of :func:`reduce_matrix` for one matrix.
 
+    Thesis: §2.2.1 (k_p = number of nonzero SNF entries; entries ≥ 2 give torsion).
+
     rank : rank over Z (or over Z/p).
     invariants : invariant factors ``>= 2`` of the Smith normal form over Z (empty over Z/p),
         ascending, each dividing the next (Python ints).
-    unit_pivot_rows : boolean mask over the rows: rows that are the lowest entry of a reduced
-        column with value ``±1`` (over Z/p: every pivot row).  Used for clearing.
-    core_shape : shape of the dense core handed to the exact dense Smith normal form.
-    exact_fallback : True if int64 overflowed and Python integers were used.
+    unit_pivot_rows : boolean mask over the rows that carry a pivot ±1 (a reduced column that is
+        ±1 there and zero on the non-postponed rows below).  Used for clearing.
+    core_shape : shape of the core left by the sparse unit-pivot stage (postponed rows x columns).
+    exact_fallback : True if some columns were finished with Python integers (int64 would overflow).
     """
 
     rank: int
@@ -131,18 +141,25 @@ def _store(pool_i, pool_v, top, src_i, src_v, n, scale, p):
 
 @numba.njit(cache=True)
 def _echelon_kernel(indptr, indices, data, n_rows, skip, p, lim):
-    """Column echelon form by lowest-row reduction; pivots are stored per lowest row.
+    """Unit-pivot column reduction; pivots are stored per pivot row.
 
-    Over Z only unit pivots (and exact multiples) are used to reduce: a column whose lowest entry
-    is ±1 takes over a non-unit pivot (which is then reduced further), and a column that meets a
-    non-unit pivot it cannot reduce exactly is set aside ("leftover") for the dense core.
-    Over Z/p pivots are scaled to 1.
+    A column is reduced at its lowest entry that is not in a "postponed" row.  If that row has a
+    pivot (always ±1) the entry is eliminated; if not and the entry is ±1 the column becomes the
+    pivot of that row; otherwise the row is postponed (marked bad) and the reduction continues
+    above it.  A column supported on postponed rows only is kept as a core column.  Pivot rows are
+    never postponed, and every pivot column vanishes on the non-postponed rows below its pivot, so
+    the unit pivots form a unimodular triangular block and SNF = I ⊕ SNF(core columns on the
+    postponed rows).  Over Z/p every nonzero entry is a unit: nothing is postponed, pivots are 1.
 
-    Returns (piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, overflow).
+    A column whose reduction would leave int64 is abandoned and listed in ``deferred``; the
+    caller finishes it with Python integers (any column order gives a valid reduction).
+
+    Returns (piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, bad, deferred).
     """
     n_cols = indptr.shape[0] - 1
     piv_start = np.full(n_rows, -1, dtype=np.int64)
     piv_len = np.zeros(n_rows, dtype=np.int64)
+    bad = np.zeros(n_rows, dtype=np.bool_)
     pool_i = np.empty(max(16, 2 * indices.shape[0]), dtype=np.int64)
     pool_v = np.empty(pool_i.shape[0], dtype=np.int64)
     left_start = np.empty(16, dtype=np.int64)
@@ -153,28 +170,49 @@ def _echelon_kernel(indptr, indices, data, n_rows, skip, p, lim):
     w_v = np.empty(n_rows + 1, dtype=np.int64)
     t_i = np.empty(n_rows + 1, dtype=np.int64)
     t_v = np.empty(n_rows + 1, dtype=np.int64)
+    deferred = np.empty(16, dtype=np.int64)
+    n_def = 0
     for j in range(n_cols):
         if skip[j]:
             continue
         n = 0
+        over = False
         for k in range(indptr[j], indptr[j + 1]):
             v = data[k]
             if p != 0:
                 v = v % p
             elif v > lim or v < -lim:
-                return piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, True
+                over = True
             if v != 0:
                 w_i[n] = indices[k]
                 w_v[n] = v
                 n += 1
-        while n > 0:
-            r = w_i[n - 1]
-            v = w_v[n - 1]
+        pos = n - 1
+        while not over:
+            while pos >= 0 and bad[w_i[pos]]:
+                pos -= 1
+            if pos < 0:
+                if n > 0:  # supported on postponed rows only: a core column
+                    pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, 1, 0)
+                    left_start = _grow(left_start, n_left + 1)
+                    left_len = _grow(left_len, n_left + 1)
+                    left_start[n_left] = top
+                    left_len[n_left] = n
+                    n_left += 1
+                    top += n
+                break
+            r = w_i[pos]
+            v = w_v[pos]
             if piv_len[r] == 0:
-                scale = 1
                 if p != 0:
                     _, scale, _ = _egcd(v, p)
-                pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, scale, p)
+                    pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, scale, p)
+                elif v == 1 or v == -1:
+                    pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, 1, 0)
+                else:
+                    bad[r] = True
+                    pos -= 1
+                    continue
                 piv_start[r] = top
                 piv_len[r] = n
                 top += n
@@ -183,98 +221,28 @@ def _echelon_kernel(indptr, indices, data, n_rows, skip, p, lim):
             L = piv_len[r]
             pv = pool_v[s + L - 1]
             if p != 0:
+                # the pivot is 1 at row r; its last entry is its lowest, which is row r
                 n, over = _combine(w_i, w_v, n, 1, pool_i, pool_v, s, L, p - v, p, lim, t_i, t_v, 0)
-            elif pv == 1 or pv == -1:
-                n, over = _combine(w_i, w_v, n, 1, pool_i, pool_v, s, L, -v * pv, 0, lim, t_i, t_v, 0)
-            elif v == 1 or v == -1:
-                # the unit column becomes the pivot; the old pivot column is reduced by it
-                pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, 1, 0)
-                piv_start[r] = top
-                piv_len[r] = n
-                n, over = _combine(pool_i[s : s + L], pool_v[s : s + L], L, 1, pool_i, pool_v, top, n,
-                                   -pv * v, 0, lim, t_i, t_v, 0)
-                top += piv_len[r]
-            elif v % pv == 0:
-                n, over = _combine(w_i, w_v, n, 1, pool_i, pool_v, s, L, -(v // pv), 0, lim, t_i, t_v, 0)
             else:
-                pool_i, pool_v = _store(pool_i, pool_v, top, w_i, w_v, n, 1, 0)
-                left_start = _grow(left_start, n_left + 1)
-                left_len = _grow(left_len, n_left + 1)
-                left_start[n_left] = top
-                left_len[n_left] = n
-                n_left += 1
-                top += n
-                break
+                pv = pool_v[s + _find(pool_i, s, L, r)]
+                n, over = _combine(w_i, w_v, n, 1, pool_i, pool_v, s, L, -v * pv, 0, lim, t_i, t_v, 0)
             if over:
-                return piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, True
+                break
             w_i, t_i = t_i, w_i
             w_v, t_v = t_v, w_v
-    return piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, False
+            # entries below row r are unchanged and the entry at r vanished
+            pos = np.searchsorted(w_i[:n], r) - 1
+        if over:  # int64 would overflow: this column is finished exactly in Python
+            deferred = _grow(deferred, n_def + 1)
+            deferred[n_def] = j
+            n_def += 1
+    return piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, bad, deferred[:n_def]
 
 
 @numba.njit(cache=True)
-def _clear_core_kernel(piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, lim):
-    """Reduce every non-unit pivot column and every leftover column against all unit pivots (stage 2).
-
-    Returns (core_indptr, core_i, core_v, unit_mask, overflow); the core columns have no entry in
-    a unit pivot row.
-    """
-    n_rows = piv_start.shape[0]
-    unit = np.zeros(n_rows, dtype=np.bool_)
-    todo_s = np.empty(n_rows + n_left, dtype=np.int64)
-    todo_l = np.empty(n_rows + n_left, dtype=np.int64)
-    n_todo = 0
-    for r in range(n_rows):
-        if piv_len[r] > 0:
-            v = pool_v[piv_start[r] + piv_len[r] - 1]
-            if v == 1 or v == -1:
-                unit[r] = True
-            else:
-                todo_s[n_todo] = piv_start[r]
-                todo_l[n_todo] = piv_len[r]
-                n_todo += 1
-    for k in range(n_left):
-        todo_s[n_todo] = left_start[k]
-        todo_l[n_todo] = left_len[k]
-        n_todo += 1
-    core_indptr = np.zeros(n_todo + 1, dtype=np.int64)
-    core_i = np.empty(16, dtype=np.int64)
-    core_v = np.empty(16, dtype=np.int64)
-    w_i = np.empty(n_rows + 1, dtype=np.int64)
-    w_v = np.empty(n_rows + 1, dtype=np.int64)
-    t_i = np.empty(n_rows + 1, dtype=np.int64)
-    t_v = np.empty(n_rows + 1, dtype=np.int64)
-    c = 0
-    for q in range(n_todo):
-        n = todo_l[q]
-        s0 = todo_s[q]
-        for k in range(n):
-            w_i[k] = pool_i[s0 + k]
-            w_v[k] = pool_v[s0 + k]
-        pos = n - 1
-        while pos >= 0:
-            row = w_i[pos]
-            if not unit[row]:
-                pos -= 1
-                continue
-            s = piv_start[row]
-            L = piv_len[row]
-            pv = pool_v[s + L - 1]
-            n, over = _combine(w_i, w_v, n, 1, pool_i, pool_v, s, L, -w_v[pos] * pv, 0, lim, t_i, t_v, 0)
-            if over:
-                return core_indptr, core_i, core_v, unit, True
-            w_i, t_i = t_i, w_i
-            w_v, t_v = t_v, w_v
-            # entries at rows above ``row`` are unchanged and the entry at ``row`` vanished
-            pos = np.searchsorted(w_i[:n], row) - 1
-        start = core_indptr[c]
-        core_i = _grow(core_i, start + n)
-        core_v = _grow(core_v, start + n)
-        core_i[start : start + n] = w_i[:n]
-        core_v[start : start + n] = w_v[:n]
-        core_indptr[c + 1] = start + n
-        c += 1
-    return core_indptr, core_i, core_v, unit, False
+def _find(arr, start, length, value):
+    """Offset of ``value`` in the sorted slice ``arr[start : start + length]``."""
+    return np.searchsorted(arr[start : start + length], value)
 
 
 # --------------------------------------------------------------------------------------------
@@ -293,68 +261,48 @@ def _axpy(a: dict, ca: int, b: dict, cb: int, p: int) -> dict:
     return out
 
 
-def _echelon_python(columns: list[dict], p: int) -> tuple[dict, list[dict]]:
-    """Same reduction as :func:`_echelon_kernel` on dict columns of Python ints.
+def _echelon_python(columns: list[dict], p: int, fetch=None, bad: set | None = None) -> tuple[dict, list[dict]]:
+    """The reduction of :func:`_echelon_kernel` on dict columns of Python ints.
 
-    Returns (pivots by lowest row, leftover columns).
+    ``fetch(r)`` (optional) returns an existing pivot column of row ``r`` as a dict, or None, and
+    ``bad`` the rows already postponed: the reduction then continues the kernel's.
+    Returns (pivot columns created or used, by row; core columns supported on postponed rows).
     """
     pivots: dict[int, dict] = {}
-    left: list[dict] = []
+    bad = set() if bad is None else bad
+    core: list[dict] = []
+
+    def pivot(r: int):
+        if r not in pivots and fetch is not None:
+            col = fetch(r)
+            if col is not None:
+                pivots[r] = col
+        return pivots.get(r)
+
     for col in columns:
         w = {k: (v % p if p else v) for k, v in col.items()}
         w = {k: v for k, v in w.items() if v}
-        while w:
-            r = max(w)
-            v = w[r]
-            if r not in pivots:
-                if p:
-                    inv = pow(v, -1, p)
-                    w = {k: (x * inv) % p for k, x in w.items()}
-                pivots[r] = w
+        while True:
+            live = [k for k in w if k not in bad]
+            if not live:
+                if w:
+                    core.append(w)
                 break
-            pc = pivots[r]
-            pv = pc[r]
-            if p:
-                w = _axpy(w, 1, pc, p - v, p)
-            elif pv in (1, -1):
-                w = _axpy(w, 1, pc, -v * pv, 0)
+            r = max(live)
+            v = w[r]
+            pc = pivot(r)
+            if pc is not None:
+                w = _axpy(w, 1, pc, (p - v) if p else -v * pc[r], p)
+            elif p:
+                inv = pow(v, -1, p)
+                pivots[r] = {k: (x * inv) % p for k, x in w.items()}
+                break
             elif v in (1, -1):
                 pivots[r] = w
-                w = _axpy(pc, 1, w, -pv * v, 0)
-            elif v % pv == 0:
-                w = _axpy(w, 1, pc, -(v // pv), 0)
+                break
             else:
-                left.append(w)
-                break
-    return pivots, left
-
-
-def _egcd_py(a: int, b: int) -> tuple[int, int, int]:
-    x0, y0, x1, y1 = 1, 0, 0, 1
-    while b:
-        q = a // b
-        a, b = b, a - q * b
-        x0, x1 = x1, x0 - q * x1
-        y0, y1 = y1, y0 - q * y1
-    if a < 0:
-        a, x0, y0 = -a, -x0, -y0
-    return a, x0, y0
-
-
-def _clear_core_python(pivots: dict, left: list[dict]) -> tuple[list[dict], set]:
-    unit = {r for r, c in pivots.items() if c[r] in (1, -1)}
-    core = []
-    for col in [c for r, c in pivots.items() if r not in unit] + left:
-        w = dict(col)
-        while True:
-            hits = [k for k in w if k in unit]
-            if not hits:
-                break
-            s = max(hits)
-            pc = pivots[s]
-            w = _axpy(w, 1, pc, -w[s] * pc[s], 0)
-        core.append(w)
-    return core, unit
+                bad.add(r)
+    return pivots, core
 
 
 # --------------------------------------------------------------------------------------------
@@ -362,56 +310,62 @@ def _clear_core_python(pivots: dict, left: list[dict]) -> tuple[list[dict], set]
 # --------------------------------------------------------------------------------------------
 
 
-def _dense_diagonal(a: np.ndarray) -> list[int]:
-    """Diagonalise ``a`` (int64 or object) by unimodular operations; return |diagonal| entries.
+def _step_is_safe(q: np.ndarray, vec: np.ndarray, block: np.ndarray) -> bool:
+    """Whether ``block - outer(q, vec)`` stays within int64."""
+    if q.size == 0 or vec.size == 0:
+        return True
+    return int(np.abs(q).max()) * int(np.abs(vec).max()) + int(np.abs(block).max()) < 2**62
 
-    Raises OverflowError (int64 input only) when an update could leave int64.
+
+def _dense_diagonal(a: np.ndarray) -> list[int]:
+    """Diagonalise ``a`` by unimodular operations; return the |diagonal| entries.
+
+    Pivots on an entry of least absolute value (ties: least Markowitz cost), clears its row and
+    column by integer division, and repeats with the remainders; zero rows and columns are dropped
+    as they appear.  Works in int64 while every update provably fits, then switches the (partly
+    reduced) matrix to Python integers.
     """
     a = a.copy()
-    m, n = a.shape
-    checked = a.dtype != object
     diag: list[int] = []
-    t = 0
-    while t < min(m, n):
-        sub = a[t:, t:]
-        nz = np.nonzero(sub)
-        if nz[0].size == 0:
+    while a.size:
+        nz = a != 0
+        rows, cols = nz.any(axis=1), nz.any(axis=0)
+        a, nz = a[rows][:, cols], nz[rows][:, cols]
+        if a.size == 0:
             break
-        absv = np.abs(sub[nz])
-        k = int(np.argmin(absv))
-        i, j = nz[0][k] + t, nz[1][k] + t
-        a[[t, i], :] = a[[i, t], :]
-        a[:, [t, j]] = a[:, [j, t]]
+        absa = np.abs(a)
+        smallest = absa[nz].min()
+        cand = np.argwhere(absa == smallest)
+        cost = (nz.sum(axis=1)[cand[:, 0]] - 1) * (nz.sum(axis=0)[cand[:, 1]] - 1)
+        i, j = cand[int(np.argmin(cost))]
+        a[[0, i], :] = a[[i, 0], :]
+        a[:, [0, j]] = a[:, [j, 0]]
         while True:
-            piv = a[t, t]
-            q = a[t + 1 :, t] // piv
-            if checked and (np.abs(q).max(initial=0) > INT64_LIMIT or np.abs(a).max() > INT64_LIMIT):
-                raise OverflowError
-            a[t + 1 :, t:] -= np.outer(q, a[t, t:]).astype(a.dtype)
-            q = a[t, t + 1 :] // piv
-            if checked and (np.abs(q).max(initial=0) > INT64_LIMIT or np.abs(a).max() > INT64_LIMIT):
-                raise OverflowError
-            a[t:, t + 1 :] -= np.outer(a[t:, t], q).astype(a.dtype)
-            col_nz = np.nonzero(a[t + 1 :, t])[0]
-            row_nz = np.nonzero(a[t, t + 1 :])[0]
-            if col_nz.size == 0 and row_nz.size == 0:
+            piv = a[0, 0]
+            q = a[1:, 0] // piv
+            if a.dtype != object and not _step_is_safe(q, a[0], a[1:]):
+                a, q = a.astype(object), q.astype(object)
+            a[1:] -= np.outer(q, a[0]).astype(a.dtype)
+            q = a[0, 1:] // piv
+            if a.dtype != object and not _step_is_safe(q, a[:, 0], a[:, 1:]):
+                a, q = a.astype(object), q.astype(object)
+            a[:, 1:] -= np.outer(a[:, 0], q).astype(a.dtype)
+            rest_c = np.abs(a[1:, 0])
+            rest_r = np.abs(a[0, 1:])
+            if not rest_c.any() and not rest_r.any():
                 break
-            # move the smallest remainder into the pivot position; |pivot| strictly decreases
-            best, where = None, None
-            for ii in col_nz:
-                v = abs(int(a[t + 1 + ii, t]))
-                if best is None or v < best:
-                    best, where = v, ("r", t + 1 + ii)
-            for jj in row_nz:
-                v = abs(int(a[t, t + 1 + jj]))
-                if best is None or v < best:
-                    best, where = v, ("c", t + 1 + jj)
-            if where[0] == "r":
-                a[[t, where[1]], :] = a[[where[1], t], :]
+            # bring the smallest remainder to the pivot position: |pivot| strictly decreases
+            big = max(int(rest_c.max(initial=0)), int(rest_r.max(initial=0))) + 1
+            mc = np.where(rest_c != 0, rest_c, big)
+            mr = np.where(rest_r != 0, rest_r, big)
+            ic = int(np.argmin(mc)) if mc.size else -1
+            ir = int(np.argmin(mr)) if mr.size else -1
+            if ir < 0 or (ic >= 0 and mc[ic] <= mr[ir]):
+                a[[0, ic + 1], :] = a[[ic + 1, 0], :]
             else:
-                a[:, [t, where[1]]] = a[:, [where[1], t]]
-        diag.append(abs(int(a[t, t])))
-        t += 1
+                a[:, [0, ir + 1]] = a[:, [ir + 1, 0]]
+        diag.append(abs(int(a[0, 0])))
+        a = a[1:, 1:]
     return diag
 
 
@@ -430,19 +384,23 @@ def dense_smith_diagonal(matrix: np.ndarray) -> list[int]:
 
     Thesis: Theorem 2.20 (Smith normal form by elementary row and column operations).
 
-    Exact: works in int64 while entries are small and redoes the work with Python integers otherwise.
+    Exact: works in int64 while every update provably fits, then continues with Python integers.
     """
     a = np.asarray(matrix)
     if a.ndim != 2:
         raise ValueError(f"matrix must be 2-D, got shape {a.shape}")
     if a.size == 0:
         return []
-    if a.dtype != object:
-        try:
-            return _divisibility_chain(_dense_diagonal(a.astype(np.int64)))
-        except OverflowError:
-            pass
-    return _divisibility_chain(_dense_diagonal(np.array([[int(x) for x in row] for row in a], dtype=object)))
+    if a.dtype == object:
+        if not all(isinstance(x, (int, np.integer)) and not isinstance(x, bool) for x in a.flat):
+            raise ValueError("matrix entries must be integers")
+        a = np.array([[int(x) for x in row] for row in a], dtype=object)
+        if all(abs(x) <= INT64_LIMIT for x in a.flat):
+            a = a.astype(np.int64)
+    else:
+        _check_integer_entries(a)
+        a = a.astype(np.int64)
+    return _divisibility_chain(_dense_diagonal(a))
 
 
 # --------------------------------------------------------------------------------------------
@@ -501,18 +459,47 @@ def _csc_to_dicts(mat: sp.csc_matrix) -> list[dict]:
     return out
 
 
-def _reduce_python(n_rows: int, columns: list[dict], p: int) -> Reduction:
-    pivots, left = _echelon_python(columns, p)
-    mask = np.zeros(n_rows, dtype=bool)
-    if p:
+def _sparse_stage(mat: sp.csc_matrix, p: int, skip: np.ndarray, limit: int) -> tuple[int, list[dict], np.ndarray, bool]:
+    """Unit-pivot stage on a validated int64 CSC matrix: (n_pivots, core columns, pivot-row mask, exact)."""
+    n_rows = mat.shape[0]
+    if p >= _MAX_NUMBA_PRIME:
+        cols = [c for c, s in zip(_csc_to_dicts(mat), skip) if not s]
+        return _python_stage(n_rows, cols, p)
+    piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, bad, deferred = _echelon_kernel(
+        mat.indptr.astype(np.int64), mat.indices.astype(np.int64), mat.data.astype(np.int64),
+        n_rows, skip, np.int64(p), np.int64(limit),
+    )
+    core = [
+        {int(i): int(v) for i, v in zip(pool_i[s : s + n], pool_v[s : s + n])}
+        for s, n in zip(left_start[:n_left], left_len[:n_left])
+    ]
+    mask = piv_len > 0
+    if deferred.size:  # finish the columns that would overflow int64 with Python integers
+
+        def fetch(r: int):
+            if piv_len[r] == 0:
+                return None
+            s, n = piv_start[r], piv_len[r]
+            return {int(i): int(v) for i, v in zip(pool_i[s : s + n], pool_v[s : s + n])}
+
+        cols = []
+        for j in deferred:
+            lo, hi = mat.indptr[j], mat.indptr[j + 1]
+            cols.append({int(i): int(v) for i, v in zip(mat.indices[lo:hi], mat.data[lo:hi])})
+        pivots, more = _echelon_python(cols, p, fetch, set(np.flatnonzero(bad).tolist()))
         mask[list(pivots)] = True
-        return Reduction(len(pivots), [], mask, (0, 0), True)
-    core, unit = _clear_core_python(pivots, left)
-    mask[list(unit)] = True
-    return _finish(len(unit), core, mask, True)
+        core += more
+    return int(mask.sum()), core, mask, bool(deferred.size)
 
 
-def _finish(n_unit: int, core: list[dict], mask: np.ndarray, fallback: bool) -> Reduction:
+def _python_stage(n_rows: int, columns: list[dict], p: int) -> tuple[int, list[dict], np.ndarray, bool]:
+    pivots, core = _echelon_python(columns, p)
+    mask = np.zeros(n_rows, dtype=bool)
+    mask[list(pivots)] = True
+    return len(pivots), core, mask, True
+
+
+def _core_to_dense(core: list[dict]) -> np.ndarray:
     rows = sorted(set().union(*core)) if core else []
     pos = {r: i for i, r in enumerate(rows)}
     big = any(abs(v) > INT64_LIMIT for c in core for v in c.values())
@@ -520,10 +507,28 @@ def _finish(n_unit: int, core: list[dict], mask: np.ndarray, fallback: bool) -> 
     for j, c in enumerate(core):
         for r, v in c.items():
             dense[pos[r], j] = v
-    inv = dense_smith_diagonal(dense) if core else []
-    rank = n_unit + len(inv)
+    return dense
+
+
+def _core_invariants(dense: np.ndarray, limit: int) -> list[int]:
+    """Invariant factors of the core: more unit-pivot passes on its transpose, then dense SNF."""
+    ones = 0
+    while dense.size and dense.dtype != object:
+        t = sp.csc_matrix(np.ascontiguousarray(dense.T))
+        n_unit, core, _, _ = _sparse_stage(t, 0, np.zeros(t.shape[1], dtype=np.bool_), limit)
+        if n_unit == 0:
+            break
+        ones += n_unit
+        dense = _core_to_dense(core)
+    return [1] * ones + (dense_smith_diagonal(dense) if dense.size else [])
+
+
+def _finish(stage: tuple[int, list[dict], np.ndarray, bool], limit: int) -> Reduction:
+    n_unit, core, mask, fallback = stage
+    dense = _core_to_dense(core)
+    inv = _core_invariants(dense, limit)
     torsion = [int(x) for x in inv if x > 1]
-    return Reduction(rank, torsion, mask, dense.shape, fallback)
+    return Reduction(n_unit + len(inv), torsion, mask, dense.shape, fallback)
 
 
 def reduce_matrix(
@@ -552,43 +557,19 @@ def reduce_matrix(
     """
     p = check_coefficients(coefficients)
     checked = _as_integer_csc(matrix)
-    if isinstance(checked, tuple):
+    if isinstance(checked, tuple):  # entries beyond int64: exact engine throughout
         n_rows, cols = checked
         if skip_columns is not None:
             cols = [c for c, s in zip(cols, np.asarray(skip_columns, bool)) if not s]
-        return _reduce_python(n_rows, cols, p)
-    mat = checked
-    n_rows, n_cols = mat.shape
+        return _finish(_python_stage(n_rows, cols, p), int64_limit)
+    n_cols = checked.shape[1]
     if skip_columns is None:
         skip = np.zeros(n_cols, dtype=np.bool_)
     else:
         skip = np.asarray(skip_columns, dtype=np.bool_)
         if skip.shape != (n_cols,):
             raise ValueError(f"skip_columns must be a boolean mask of length {n_cols}, got shape {skip.shape}")
-    if p >= _MAX_NUMBA_PRIME:
-        cols = [c for c, s in zip(_csc_to_dicts(mat), skip) if not s]
-        return _reduce_python(n_rows, cols, p)
-    indptr = mat.indptr.astype(np.int64)
-    indices = mat.indices.astype(np.int64)
-    data = mat.data.astype(np.int64)
-    piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, over = _echelon_kernel(
-        indptr, indices, data, n_rows, skip, np.int64(p), np.int64(int64_limit)
-    )
-    if not over and p:
-        mask = piv_len > 0
-        return Reduction(int(mask.sum()), [], mask, (0, 0), False)
-    if not over:
-        cptr, ci, cv, unit, over = _clear_core_kernel(
-            piv_start, piv_len, pool_i, pool_v, left_start, left_len, n_left, np.int64(int64_limit)
-        )
-    if over:
-        cols = [c for c, s in zip(_csc_to_dicts(mat), skip) if not s]
-        return _reduce_python(n_rows, cols, p)
-    core = [
-        {int(i): int(v) for i, v in zip(ci[cptr[c] : cptr[c + 1]], cv[cptr[c] : cptr[c + 1]])}
-        for c in range(cptr.shape[0] - 1)
-    ]
-    return _finish(int(unit.sum()), core, unit, False)
+    return _finish(_sparse_stage(checked, p, skip, int64_limit), int64_limit)
 
 
 def smith_normal_form(matrix) -> np.ndarray:

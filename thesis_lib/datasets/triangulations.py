@@ -35,7 +35,7 @@ def rp2(oriented: bool = False) -> list[tuple[int, ...]]:
 def torus() -> list[tuple[int, ...]]:
     """Möbius' 7-vertex torus (the Császár torus): triangles {i, i+1, i+3} and {i, i+2, i+3} mod 7.
 
-    Thesis: §2.2.1 (a triangulated surface; H_0 = Z, H_1 = Z², H_2 = Z).
+    Thesis: §2.4 / Figure 2.16 (the torus has β = 1, 2, 1; here H_0 = Z, H_1 = Z², H_2 = Z).
     Every pair of the 7 vertices is an edge (21 edges, 14 triangles).
     """
     tris = [(i, (i + 1) % 7, (i + 3) % 7) for i in range(7)]
@@ -74,8 +74,8 @@ def klein_bottle(n: int = 4, m: int = 4) -> list[tuple[int, ...]]:
 def dunce_hat() -> list[tuple[int, ...]]:
     """An 8-vertex, 17-triangle dunce hat: contractible, yet no edge is free (not collapsible).
 
-    Thesis: §4.2 (discrete Morse theory; the dunce hat is the classic contractible complex with
-    no collapse).  Vertices 0, 1, 2 lie on the glued edge 0–1–2–0 (each of its 3 edges is in 3
+    Thesis: §4.2.2 / §4.2.6 (collapses and optimal discrete Morse functions; the dunce hat is the
+    classic contractible complex that admits no collapse).  Vertices 0, 1, 2 lie on the glued edge 0–1–2–0 (each of its 3 edges is in 3
     triangles); every other edge is in exactly 2 triangles.  Found by link-condition edge
     contractions of a subdivided triangle with sides a, a, a⁻¹ glued.
     """
