@@ -60,3 +60,13 @@ def test_console_script_and_citation():
     cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
     assert cff["preferred-citation"]["authors"][0]["family-names"] == "Botnan"
     assert cff["preferred-citation"]["year"] == 2011
+
+
+def test_readme_library_example_runs_and_prints_what_it_says(capsys):
+    text = (ROOT / "README.md").read_text()
+    code = re.search(r"```python\n(.*?)```", text, re.S).group(1)
+    exec(compile(code, "README.md", "exec"), {})
+    out = capsys.readouterr().out
+    assert "[(1, []), (0, [2]), (0, [])]" in out
+    expected = re.search(r"# (\[\(1, \[\]\), \(0, \[2\]\), \(0, \[\]\)\])", code).group(1)
+    assert expected in out
