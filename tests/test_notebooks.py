@@ -29,6 +29,8 @@ def test_notebook_is_stored_executed_with_outputs(path):
     assert any(c.outputs for c in code), "stored without outputs"
     errors = [o for c in code for o in c.outputs if o.get("output_type") == "error"]
     assert not errors, "stored with an error output"
+    text = nbformat.writes(nb)
+    assert str(ROOT) not in text, "outputs name this checkout's path (they would differ on a clean clone)"
 
 
 @pytest.mark.parametrize("name", runner.list_experiments())

@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from thesis_lib.results import Recorder, load
+from thesis_lib.results import DEFAULT_RUN_ENV, Recorder, load
 
 
 def test_record_writes_flat_numbers(tmp_path):
@@ -60,6 +60,7 @@ def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
     from thesis_lib.results import figure
 
     monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.delenv(DEFAULT_RUN_ENV, raising=False)
     rec = Recorder("demo", "")
     fig, ax = plt.subplots()
     rec.savefig(fig, "plot")
@@ -67,3 +68,13 @@ def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
     assert figure("demo", "plot").filename.endswith("experiments/results/demo/plot.png")
     with pytest.raises(FileNotFoundError, match="make experiments"):
         figure("demo", "nothing")
+
+
+def test_default_run_redirect_leaves_stored_results_alone(tmp_path, monkeypatch):
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path / "root"))
+    monkeypatch.delenv(DEFAULT_RUN_ENV, raising=False)
+    Recorder("demo", "").record(stored=1)
+    monkeypatch.setenv(DEFAULT_RUN_ENV, str(tmp_path / "scratch"))
+    Recorder("demo", "").record(rerun=2)
+    assert load("demo") == {"stored": 1}
+    assert load("demo", tmp_path / "scratch" / "demo") == {"rerun": 2}

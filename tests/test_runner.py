@@ -9,6 +9,7 @@ import nbformat
 import pytest
 
 from thesis_lib import cli, runner
+from thesis_lib.results import DEFAULT_RUN_ENV
 from thesis_lib.runner import ParameterError
 
 TOY_PARAMETERS = """\
@@ -148,7 +149,8 @@ def test_cli_sweep_exit_code_reports_failures(root, capsys):
     assert "failed" in capsys.readouterr().err
 
 
-def test_store_executes_in_place_with_defaults(root):
+def test_store_executes_in_place_with_defaults(root, monkeypatch, tmp_path):
+    monkeypatch.setenv(DEFAULT_RUN_ENV, str(tmp_path / "elsewhere"))  # storing is never redirected
     path = runner.store("toy")
     nb = nbformat.read(path, as_version=4)
     assert all(c.execution_count for c in nb.cells if c.cell_type == "code")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import warnings
 
 __all__ = ["pyvista_offscreen"]
 
@@ -10,7 +11,11 @@ __all__ = ["pyvista_offscreen"]
 def pyvista_offscreen():
     """Return the ``pyvista`` module set up to render off-screen through EGL into static images."""
     os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
-    import pyvista as pv
+    with warnings.catch_warnings():
+        # pyvista imports tqdm.auto, which warns (with this machine's path) when ipywidgets is absent;
+        # the warning would land in notebook stderr and make stored outputs machine-dependent.
+        warnings.filterwarnings("ignore", message="IProgress not found")
+        import pyvista as pv
 
     pv.OFF_SCREEN = True
     pv.set_jupyter_backend("static")

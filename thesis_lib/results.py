@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import numbers
+import os
 from pathlib import Path
 
 from .paths import repo_root
@@ -18,6 +19,9 @@ __all__ = ["Recorder", "load", "figure", "results_dir", "RESULTS_FILE", "TIMINGS
 RESULTS_FILE = "results.json"
 #: wall-clock times vary from run to run: kept apart from the results, and not committed
 TIMINGS_FILE = "timings.json"
+#: when set, a Recorder's stored default run is written under this folder instead (the test suite
+#: sets it, so that re-executing the notebooks never rewrites committed results that others read)
+DEFAULT_RUN_ENV = "THESIS_LAB_DEFAULT_RUN_DIR"
 
 
 def results_dir(name: str) -> Path:
@@ -42,14 +46,17 @@ class Recorder:
     ----------
     name : experiment name (``two-circles-landmarks``, ...).
     output_dir : folder to write into; ``""`` or ``None`` means the stored default run
-        ``experiments/results/<name>/``.  Starting a recorder clears the previous ``results.json``.
+        ``experiments/results/<name>/`` (``$THESIS_LAB_DEFAULT_RUN_DIR/<name>/`` when that is set).
+        Starting a recorder clears the previous ``results.json``.
     """
 
     def __init__(self, name: str, output_dir: str | Path | None = ""):
         if not name or "/" in name:
             raise ValueError(f"invalid experiment name {name!r}")
         self.name = name
-        self.path = Path(output_dir) if output_dir else results_dir(name)
+        redirect = os.environ.get(DEFAULT_RUN_ENV)
+        default = Path(redirect) / name if redirect else results_dir(name)
+        self.path = Path(output_dir) if output_dir else default
         self.path.mkdir(parents=True, exist_ok=True)
         self.results: dict[str, float | int] = {}
         self._write()

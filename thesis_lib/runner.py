@@ -15,6 +15,7 @@ import hashlib
 import io
 import itertools
 import json
+import os
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
@@ -23,7 +24,7 @@ from pathlib import Path
 import nbformat
 
 from .paths import repo_root
-from .results import RESULTS_FILE, results_dir
+from .results import DEFAULT_RUN_ENV, RESULTS_FILE, results_dir
 
 __all__ = [
     "ParameterError",
@@ -342,7 +343,10 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
     if nb_path.suffix != ".ipynb":
         nb_path = _notebook_path(str(path))
     nb = nbformat.read(nb_path, as_version=4)
-    NotebookClient(nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(nb_path.parent)}}).execute()
+    # the stored default run is the point of storing: never redirected (see results.DEFAULT_RUN_ENV)
+    env = {k: v for k, v in os.environ.items() if k != DEFAULT_RUN_ENV}
+    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(nb_path.parent)}})
+    client.execute(env=env)
     for cell in nb.cells:
         cell.metadata.pop("execution", None)
     nbformat.write(nb, nb_path)
