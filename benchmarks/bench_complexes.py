@@ -25,15 +25,7 @@ Pairs compared (same input for both tools):
 
 from __future__ import annotations
 
-import argparse
-import json
-import resource
-import subprocess
-import sys
-import time
-from pathlib import Path
-
-HERE = Path(__file__).resolve().parent
+import harness
 
 CASES = {
     "rips-two-circles-20": {"kind": "rips", "data": ("two_circles", 20), "eps": 2.0, "max_dim": 2},
@@ -74,10 +66,6 @@ def _points(case: dict):
         return flat_torus(case["data"][1], noise=0.02, seed=0)
     _, n, dim = case["data"]
     return np.random.default_rng(0).random((n, dim))
-
-
-def _rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
 def worker(tool: str, name: str, repeat: int) -> dict:
@@ -129,74 +117,53 @@ def worker(tool: str, name: str, repeat: int) -> dict:
         count = lambda s: s.num_simplices()  # noqa: E731
     else:
         raise ValueError(f"unknown tool {tool!r}")
-    base = _rss_mb()
-    best = float("inf")
-    n = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = run()
-        best = min(best, time.perf_counter() - t0)
-        n = count(out)
-        del out
-    peak = _rss_mb()
-    return {"time_s": best, "base_mb": base, "peak_mb": peak, "work_mb": peak - base, "n_simplices": n}
+    stats, n = harness.measure_rss(run, repeat, summary=count)  # each output counted, then dropped
+    return {**stats, "n_simplices": n}
 
 
 def run_case(tool: str, name: str, repeat: int) -> dict:
-    cmd = [sys.executable, str(Path(__file__).resolve()), "--worker", tool, name, "--repeat", str(repeat)]
-    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
-    if proc.returncode != 0:
-        raise RuntimeError(f"{tool} on {name} failed:\n{proc.stderr}")
-    return json.loads(proc.stdout.strip().splitlines()[-1])
+    return harness.run_worker(__file__, tool, name, "--repeat", repeat)
+
+
+COLUMNS = [
+    ("case", "{case}"),
+    ("simplices (ours / GUDHI)", "{ours_simplices} / {ref_simplices}"),
+    ("ours s", "{ours_s:.4f}"),
+    ("GUDHI s", "{ref_s:.4f}"),
+    ("time ratio", "{ratio:.2f}"),
+    ("ours MB", "{ours_mb:.1f}"),
+    ("GUDHI MB", "{ref_mb:.1f}"),
+    ("memory ratio", lambda r: "n/a" if r["mem_ratio"] is None else f"{r['mem_ratio']:.2f}"),
+]
+
+
+def make_row(name: str, repeat: int) -> dict:
+    """One table row: every tool on case ``name`` (each in its own subprocess)."""
+    ours = run_case("ours", name, repeat)
+    ref = run_case("gudhi", name, repeat)
+    return {
+        "case": name,
+        "kind": CASES[name]["kind"],
+        "ours_s": ours["time_s"],
+        "ref_s": ref["time_s"],
+        "ratio": ours["time_s"] / ref["time_s"],
+        "ours_mb": ours["work_mb"],
+        "ref_mb": ref["work_mb"],
+        "mem_ratio": ours["work_mb"] / ref["work_mb"] if ref["work_mb"] > 0 else None,
+        "ours_peak_mb": ours["peak_mb"],
+        "ref_peak_mb": ref["peak_mb"],
+        "ours_simplices": ours["n_simplices"],
+        "ref_simplices": ref["n_simplices"],
+        "reference": "gudhi " + ("DelaunayCechComplex (different complex)" if CASES[name]["kind"] == "cech" else
+                                 "EuclideanStrongWitnessComplex (squared rule)" if CASES[name]["kind"] == "witness"
+                                 else "same complex"),
+        "repeat": repeat,
+    }
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="small cases only (smoke test)")
-    ap.add_argument("--repeat", type=int, default=None, help="timed runs per case (best is kept)")
-    ap.add_argument("--worker", nargs=2, metavar=("TOOL", "CASE"), help=argparse.SUPPRESS)
-    args = ap.parse_args(argv)
-    repeat = args.repeat or (2 if args.quick else 5)
-    if args.worker:
-        print(json.dumps(worker(args.worker[0], args.worker[1], repeat)))
-        return []
-    rows = []
-    names = QUICK if args.quick else FULL
-    print("| case | simplices (ours / GUDHI) | ours s | GUDHI s | time ratio | ours MB | GUDHI MB | memory ratio |")
-    print("|---|---|---|---|---|---|---|---|", flush=True)
-    for name in names:
-        ours = run_case("ours", name, repeat)
-        ref = run_case("gudhi", name, repeat)
-        row = {
-            "case": name,
-            "kind": CASES[name]["kind"],
-            "ours_s": ours["time_s"],
-            "ref_s": ref["time_s"],
-            "ratio": ours["time_s"] / ref["time_s"],
-            "ours_mb": ours["work_mb"],
-            "ref_mb": ref["work_mb"],
-            "mem_ratio": ours["work_mb"] / ref["work_mb"] if ref["work_mb"] > 0 else None,
-            "ours_peak_mb": ours["peak_mb"],
-            "ref_peak_mb": ref["peak_mb"],
-            "ours_simplices": ours["n_simplices"],
-            "ref_simplices": ref["n_simplices"],
-            "reference": "gudhi " + ("DelaunayCechComplex (different complex)" if CASES[name]["kind"] == "cech" else
-                                     "EuclideanStrongWitnessComplex (squared rule)" if CASES[name]["kind"] == "witness"
-                                     else "same complex"),
-            "repeat": repeat,
-        }
-        rows.append(row)
-        mr = "n/a" if row["mem_ratio"] is None else f"{row['mem_ratio']:.2f}"
-        print(
-            f"| {name} | {row['ours_simplices']} / {row['ref_simplices']} | {row['ours_s']:.4f} | "
-            f"{row['ref_s']:.4f} | {row['ratio']:.2f} | {row['ours_mb']:.1f} | {row['ref_mb']:.1f} | {mr} |",
-            flush=True,
-        )
-    out = HERE / "results" / ("complexes_quick.json" if args.quick else "complexes.json")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=1) + "\n")
-    print(f"wrote {out}")
-    return rows
+    return harness.main_per_case("complexes", __doc__, argv, worker=worker, make_row=make_row, columns=COLUMNS,
+                                 cases=(QUICK, FULL), repeat=(2, 5))
 
 
 if __name__ == "__main__":

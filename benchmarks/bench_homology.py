@@ -23,16 +23,9 @@ Linial–Meshulam random 2-complex, the hard case for elimination over Z (large 
 
 from __future__ import annotations
 
-import argparse
 import itertools
-import json
-import resource
-import subprocess
-import sys
-import time
-from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
+import harness
 
 CASES = {
     "rips-2d-300": {"kind": "rips", "n": 300, "dim": 2, "r": 0.09, "max_dim": 2},
@@ -77,10 +70,6 @@ def complex_arrays(name: str) -> list:
     return [np.arange(n, dtype=np.int64)[:, None], edges, tris]
 
 
-def _rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-
-
 def worker(tool: str, name: str, repeat: int) -> dict:
     import numpy as np
 
@@ -110,24 +99,12 @@ def worker(tool: str, name: str, repeat: int) -> dict:
         summary = lambda b: {"betti": b, "torsion": None}  # noqa: E731
     else:
         raise ValueError(f"unknown tool {tool!r}")
-    base = _rss_mb()
-    best = float("inf")
-    out = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = run()
-        best = min(best, time.perf_counter() - t0)
-    peak = _rss_mb()
-    return {"time_s": best, "base_mb": base, "peak_mb": peak, "work_mb": peak - base,
-            "n_simplices": n_simplices, **summary(out)}
+    stats, out = harness.measure_rss(run, repeat)
+    return {**stats, "n_simplices": n_simplices, **summary(out)}
 
 
 def run_case(tool: str, name: str, repeat: int) -> dict:
-    cmd = [sys.executable, str(Path(__file__).resolve()), "--worker", tool, name, "--repeat", str(repeat)]
-    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
-    if proc.returncode != 0:
-        raise RuntimeError(f"{tool} on {name} failed:\n{proc.stderr}")
-    return json.loads(proc.stdout.strip().splitlines()[-1])
+    return harness.run_worker(__file__, tool, name, "--repeat", repeat)
 
 
 def _torsion_text(torsion: list) -> str:
@@ -135,55 +112,51 @@ def _torsion_text(torsion: list) -> str:
     return ", ".join(parts) or "none"
 
 
+COLUMNS = [
+    ("case", "{case}"),
+    ("simplices", "{n_simplices}"),
+    ("Betti (Z/2)", "{betti_z2}"),
+    ("torsion over Z", lambda r: _torsion_text(r["torsion_z"])),
+    ("ours Z s", "{ours_z_s:.3f}"),
+    ("ours Z/2 s", "{ours_s:.3f}"),
+    ("GUDHI Z/2 s", "{ref_s:.3f}"),
+    ("ratio Z/2", "{ratio:.2f}"),
+    ("ratio Z", "{ratio_z:.2f}"),
+    ("ours Z MB", "{ours_z_mb:.1f}"),
+    ("ours Z/2 MB", "{ours_mb:.1f}"),
+    ("GUDHI MB", "{ref_mb:.1f}"),
+]
+
+
+def make_row(name: str, repeat: int) -> dict:
+    """One table row: every tool on case ``name`` (each in its own subprocess)."""
+    oz = run_case("ours-z", name, repeat)
+    o2 = run_case("ours-z2", name, repeat)
+    ref = run_case("gudhi", name, repeat)
+    if o2["betti"] != ref["betti"]:
+        raise AssertionError(f"{name}: Betti numbers over Z/2 differ: ours {o2['betti']}, GUDHI {ref['betti']}")
+    return {
+        "case": name,
+        "n_simplices": oz["n_simplices"],
+        "betti_z2": ref["betti"],
+        "betti_z": oz["betti"],
+        "torsion_z": oz["torsion"],
+        "ours_s": o2["time_s"],
+        "ours_z_s": oz["time_s"],
+        "ref_s": ref["time_s"],
+        "ratio": o2["time_s"] / ref["time_s"],
+        "ratio_z": oz["time_s"] / ref["time_s"],
+        "ours_mb": o2["work_mb"],
+        "ours_z_mb": oz["work_mb"],
+        "ref_mb": ref["work_mb"],
+        "reference": "gudhi SimplexTree.compute_persistence(homology_coeff_field=2) + betti_numbers",
+        "repeat": repeat,
+    }
+
+
 def main(argv: list[str] | None = None) -> list[dict]:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="small cases only (smoke test)")
-    ap.add_argument("--repeat", type=int, default=None, help="timed runs per case (best is kept)")
-    ap.add_argument("--worker", nargs=2, metavar=("TOOL", "CASE"), help=argparse.SUPPRESS)
-    args = ap.parse_args(argv)
-    repeat = args.repeat or (2 if args.quick else 3)
-    if args.worker:
-        print(json.dumps(worker(args.worker[0], args.worker[1], repeat)))
-        return []
-    rows = []
-    print("| case | simplices | Betti (Z/2) | torsion over Z | ours Z s | ours Z/2 s | GUDHI Z/2 s "
-          "| ratio Z/2 | ratio Z | ours Z MB | ours Z/2 MB | GUDHI MB |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|", flush=True)
-    for name in QUICK if args.quick else FULL:
-        oz = run_case("ours-z", name, repeat)
-        o2 = run_case("ours-z2", name, repeat)
-        ref = run_case("gudhi", name, repeat)
-        if o2["betti"] != ref["betti"]:
-            raise AssertionError(f"{name}: Betti numbers over Z/2 differ: ours {o2['betti']}, GUDHI {ref['betti']}")
-        row = {
-            "case": name,
-            "n_simplices": oz["n_simplices"],
-            "betti_z2": ref["betti"],
-            "betti_z": oz["betti"],
-            "torsion_z": oz["torsion"],
-            "ours_s": o2["time_s"],
-            "ours_z_s": oz["time_s"],
-            "ref_s": ref["time_s"],
-            "ratio": o2["time_s"] / ref["time_s"],
-            "ratio_z": oz["time_s"] / ref["time_s"],
-            "ours_mb": o2["work_mb"],
-            "ours_z_mb": oz["work_mb"],
-            "ref_mb": ref["work_mb"],
-            "reference": "gudhi SimplexTree.compute_persistence(homology_coeff_field=2) + betti_numbers",
-            "repeat": repeat,
-        }
-        rows.append(row)
-        print(
-            f"| {name} | {row['n_simplices']} | {row['betti_z2']} | {_torsion_text(row['torsion_z'])} | "
-            f"{row['ours_z_s']:.3f} | {row['ours_s']:.3f} | {row['ref_s']:.3f} | {row['ratio']:.2f} | "
-            f"{row['ratio_z']:.2f} | {row['ours_z_mb']:.1f} | {row['ours_mb']:.1f} | {row['ref_mb']:.1f} |",
-            flush=True,
-        )
-    out = HERE / "results" / ("homology_quick.json" if args.quick else "homology.json")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=1) + "\n")
-    print(f"wrote {out}")
-    return rows
+    return harness.main_per_case("homology", __doc__, argv, worker=worker, make_row=make_row, columns=COLUMNS,
+                                 cases=(QUICK, FULL), repeat=(2, 3))
 
 
 if __name__ == "__main__":

@@ -1,7 +1,7 @@
 """Morse reduction before persistence (thesis §4.2.6: "simplify simplicial complexes that are too large").
 
 Usage: ``python benchmarks/bench_morse.py [--quick] [--repeat N] [--output FILE]`` (``--quick``
-writes nothing unless ``--output`` is given).
+writes ``benchmarks/results/morse_quick.json`` unless ``--output`` is given).
 
 For each case the filtration is built first (not timed).  Then, best of ``--repeat`` runs:
 
@@ -21,15 +21,8 @@ flat torus in R⁴ with dim ≤ 3, and a lower-star filtration of random vertex 
 
 from __future__ import annotations
 
-import argparse
-import json
-import time
-import tracemalloc
-from pathlib import Path
-
+import harness
 import numpy as np
-
-HERE = Path(__file__).resolve().parent
 
 
 def grid_triangles(n: int) -> np.ndarray:
@@ -56,35 +49,24 @@ def build(case: str):
     raise ValueError(case)
 
 
-def timed(fn, repeat: int):
-    best, out = float("inf"), None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    tracemalloc.start()
-    fn()
-    peak = tracemalloc.get_traced_memory()[1] / 2**20
-    tracemalloc.stop()
-    return best, out, peak
-
-
 def run_case(case: str, repeat: int) -> dict:
     from thesis_lib.morse import chain_persistence, morse_reduce, reduced_persistence
     from thesis_lib.persistence import persistence
     from thesis_lib.simplicial import boundary_matrix
 
     f = build(case)
-    reduce_s, red, reduce_mb = timed(lambda: morse_reduce(f, 2), repeat)
-    pers_s, bar, pers_mb = timed(lambda: reduced_persistence(red), repeat)
-    engine_s, ref_bar, engine_mb = timed(lambda: persistence(f, 2), repeat)
+    reduce_s, red, reduce_mb = harness.tracemalloc_timed(lambda: morse_reduce(f, 2), repeat)
+    pers_s, bar, pers_mb = harness.tracemalloc_timed(lambda: reduced_persistence(red), repeat)
+    engine_s, ref_bar, engine_mb = harness.tracemalloc_timed(lambda: persistence(f, 2), repeat)
     assert bar == ref_bar, bar.difference(ref_bar)
     bds = [np.zeros((0, f.simplices[0].shape[0]))]
     bds += [boundary_matrix(f.simplices[d - 1], f.simplices[d]) for d in range(1, f.dimension + 1)]
-    direct_s, direct_bar, direct_mb = timed(lambda: chain_persistence(f.values, bds, 2), max(1, repeat - 1))
+    direct_s, direct_bar, direct_mb = harness.tracemalloc_timed(
+        lambda: chain_persistence(f.values, bds, 2), max(1, repeat - 1)
+    )
     assert direct_bar == ref_bar
     st = f.to_simplex_tree()
-    ref_s, _, ref_mb = timed(
+    ref_s, _, ref_mb = harness.tracemalloc_timed(
         lambda: st.compute_persistence(homology_coeff_field=2, min_persistence=0, persistence_dim_max=True), repeat
     )
     ours = reduce_s + pers_s
@@ -109,12 +91,23 @@ def run_case(case: str, repeat: int) -> dict:
     }
 
 
+COLUMNS = [
+    ("case", "{case}"),
+    ("cells", "{n_cells}"),
+    ("critical", "{n_critical}"),
+    ("fraction", "{critical_fraction:.3f}"),
+    ("reduce s", "{reduce_s:.3f}"),
+    ("reduced pers s", "{reduced_pers_s:.3f}"),
+    ("ours s", "{ours_s:.3f}"),
+    ("direct column s", "{direct_column_s:.3f}"),
+    ("engine s", "{engine_s:.3f}"),
+    ("GUDHI s", "{ref_s:.3f}"),
+    ("ours/GUDHI", "{ratio:.2f}"),
+]
+
+
 def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="one small case (smoke test)")
-    ap.add_argument("--repeat", type=int, default=3)
-    ap.add_argument("--output", default=str(HERE / "results" / "morse.json"), help="JSON file for the rows")
-    args = ap.parse_args()
+    args = harness.arguments(__doc__, quick_help="one small case (smoke test)", repeat=3, output=True)
     from thesis_lib.morse import morse_reduce, reduced_persistence
     from thesis_lib.persistence import persistence
 
@@ -125,20 +118,8 @@ def main() -> None:
         "two-circles-20", "two-circles-40", "two-circles-60", "flat-torus-20", "lower-star-grid-100", "lower-star-grid-300"
     ]
     rows = [run_case(c, 1 if args.quick else args.repeat) for c in cases]
-    print("| case | cells | critical | fraction | reduce s | reduced pers s | ours s | direct column s | engine s | GUDHI s | ours/GUDHI |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
-    for r in rows:
-        print(
-            f"| {r['case']} | {r['n_cells']} | {r['n_critical']} | {r['critical_fraction']:.3f} | {r['reduce_s']:.3f} | "
-            f"{r['reduced_pers_s']:.3f} | {r['ours_s']:.3f} | {r['direct_column_s']:.3f} | {r['engine_s']:.3f} | "
-            f"{r['ref_s']:.3f} | {r['ratio']:.2f} |"
-        )
-    if args.quick and args.output == str(HERE / "results" / "morse.json"):
-        return  # a smoke test never overwrites the stored full results
-    out = Path(args.output)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=1) + "\n")
-    print(f"wrote {out}")
+    harness.print_table(COLUMNS, rows)
+    harness.write_rows("morse", rows, args.quick, args.output)  # --quick: morse_quick.json
 
 
 if __name__ == "__main__":

@@ -1,6 +1,7 @@
 """Persistent homology: thesis_lib's engine against GUDHI and Ripser (thesis §2.3, §2.4.1).
 
-Usage: ``python benchmarks/bench_persistence.py [--quick] [--repeat N]``.
+Usage: ``python benchmarks/bench_persistence.py [--quick] [--repeat N] [--output FILE]``; writes
+``benchmarks/results/persistence.json`` (``persistence_quick.json`` with ``--quick``).
 
 Every (case, tool) runs in its own subprocess, so that the peak resident set size
 (``resource.getrusage``, the high-water mark) belongs to that tool alone.  Inside a worker:
@@ -28,15 +29,10 @@ threshold to stay tractable).
 
 from __future__ import annotations
 
-import argparse
 import json
-import resource
-import subprocess
 import sys
-import time
-from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
+import harness
 
 CASES = {
     "two-circles-20": {"data": ("two_circles", 20), "eps": 2.0, "max_dim": 2},
@@ -54,10 +50,6 @@ def _points(case: dict):
 
     kind, n = case["data"]
     return two_circles(n, seed=0) if kind == "two_circles" else flat_torus(n, noise=0.02, seed=0)
-
-
-def _rss_mb() -> float:
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
 def _summary(pairs_by_dim: dict[int, list[tuple[float, float]]], scale: float) -> dict:
@@ -130,41 +122,26 @@ def worker(tool: str, name: str, repeat: int) -> dict:
 
     else:
         raise ValueError(f"unknown tool {tool!r}")
-    base = _rss_mb()
-    best = float("inf")
-    out = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = run()
-        best = min(best, time.perf_counter() - t0)
-    peak = _rss_mb()
+    stats, out = harness.measure_rss(run, repeat)
     all_s = peak_all = None
     if tool == "ours":
-        all_s = float("inf")
-        for _ in range(repeat):
-            t0 = time.perf_counter()
-            run_all()
-            all_s = min(all_s, time.perf_counter() - t0)
-        peak_all = _rss_mb()
+        all_s, _ = harness.best_of(run_all, repeat, summary=lambda b: None)  # results dropped at once
+        peak_all = harness.rss_mb()
     pairs, scale = result(out)
     return {
-        "time_s": best,
+        "time_s": stats["time_s"],
         "all_dims_s": all_s,
         "peak_all_mb": peak_all,
-        "base_mb": base,
-        "peak_mb": peak,
-        "work_mb": peak - base,
+        "base_mb": stats["base_mb"],
+        "peak_mb": stats["peak_mb"],
+        "work_mb": stats["work_mb"],
         "n_simplices": n_simplices,
         "summary": _summary(pairs, scale),
     }
 
 
 def run_case(tool: str, name: str, repeat: int) -> dict:
-    cmd = [sys.executable, str(Path(__file__).resolve()), "--worker", tool, name, "--repeat", str(repeat)]
-    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
-    if proc.returncode != 0:
-        raise RuntimeError(f"{tool} on {name} failed:\n{proc.stderr}")
-    return json.loads(proc.stdout.strip().splitlines()[-1])
+    return harness.run_worker(__file__, tool, name, "--repeat", repeat)
 
 
 def _agree(a: dict, b: dict) -> bool:
@@ -178,12 +155,8 @@ def _agree(a: dict, b: dict) -> bool:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="one small case (smoke test)")
-    ap.add_argument("--repeat", type=int, default=3, help="timed repetitions (best is kept)")
-    ap.add_argument("--worker", nargs=2, metavar=("TOOL", "CASE"), help=argparse.SUPPRESS)
-    ap.add_argument("--output", default=str(HERE / "results" / "persistence.json"))
-    args = ap.parse_args(argv)
+    args = harness.arguments(__doc__, argv, quick_help="one small case (smoke test)", repeat=3,
+                             worker=("TOOL", "CASE"), output=True)
     if args.worker:
         print(json.dumps(worker(args.worker[0], args.worker[1], args.repeat)))
         return []
@@ -221,13 +194,8 @@ def main(argv: list[str] | None = None) -> list[dict]:
         print(f"done {name}", file=sys.stderr, flush=True)
     cols = ["case", "n_simplices", "ours_s", "ours_all_dims_s", "ref_s", "ratio", "ripser_s", "ratio_ripser", "ours_mb", "ref_mb",
             "mem_ratio", "ripser_mb", "same_barcode"]  # fmt: skip
-    print("| " + " | ".join(cols) + " |")
-    print("|" + "---|" * len(cols))
-    for row in rows:
-        print("| " + " | ".join(f"{row[c]:.3g}" if isinstance(row[c], float) else str(row[c]) for c in cols) + " |")
-    if not args.quick or args.output != str(HERE / "results" / "persistence.json"):
-        Path(args.output).parent.mkdir(parents=True, exist_ok=True)
-        Path(args.output).write_text(json.dumps(rows, indent=1) + "\n")
+    harness.print_table(cols, rows)
+    harness.write_rows("persistence", rows, args.quick, args.output)
     return rows
 
 

@@ -8,9 +8,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from sympy import Matrix
-from sympy.matrices.normalforms import invariant_factors
 
+from helpers import THESIS_M2, sympy_invariants
 from thesis_lib.datasets import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
 from thesis_lib.homology import (
     betti_numbers,
@@ -21,30 +20,6 @@ from thesis_lib.homology import (
 )
 from thesis_lib.simplicial import closure
 from thesis_lib.smith import reduce_matrix
-
-# M_2 of Example 2.21, rows ab ac ad ae af bc bd be bf cd ce cf de df ef,
-# columns abd adf afc bcd ced cae abe bfe bcf def (copied from the thesis).
-THESIS_M2 = np.array(
-    [
-        [1, 0, 0, 0, 0, 0, 1, 0, 0, 0],
-        [0, 0, -1, 0, 0, -1, 0, 0, 0, 0],
-        [-1, 1, 0, 0, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 0, 1, -1, 0, 0, 0],
-        [0, -1, 1, 0, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 1, 0, 0, 0, 0, 1, 0],
-        [1, 0, 0, -1, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 0, 0, 1, -1, 0, 0],
-        [0, 0, 0, 0, 0, 0, 0, 1, -1, 0],
-        [0, 0, 0, 1, -1, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 1, -1, 0, 0, 0, 0],
-        [0, 0, -1, 0, 0, 0, 0, 0, 1, 0],
-        [0, 0, 0, 0, -1, 0, 0, 0, 0, 1],
-        [0, 1, 0, 0, 0, 0, 0, 0, 0, -1],
-        [0, 0, 0, 0, 0, 0, 0, -1, 0, 1],
-    ],
-    dtype=np.int64,
-)
-
 
 # ------------------------------------------------------------------ random complexes
 
@@ -93,7 +68,7 @@ def sympy_homology(simplices) -> list[tuple[int, list[int]]]:
     ranks, tors = [0] * (len(cx) + 1), [[] for _ in range(len(cx) + 1)]
     for k in range(1, len(cx)):
         d = mats[k].toarray()
-        inv = [abs(int(x)) for x in invariant_factors(Matrix(d.tolist())) if x != 0] if d.size else []
+        inv = sympy_invariants(d)
         ranks[k], tors[k] = len(inv), sorted(x for x in inv if x > 1)
     return [(len(cx[k]) - ranks[k] - ranks[k + 1], tors[k + 1]) for k in range(len(cx))]
 

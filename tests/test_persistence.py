@@ -50,27 +50,11 @@ def random_filtration(seed: int, n: int = 7, n_top: int = 6, top_dim: int = 3) -
     return Filtration(groups, values)
 
 
-def rank_mod_p(a: np.ndarray, p: int) -> int:
+def _row_reduce_mod_p(a: np.ndarray, p: int) -> tuple[np.ndarray, list[int]]:
+    """Reduced row echelon form of ``a`` over Z/p and its pivot columns (Gauss–Jordan)."""
     a = np.array(a, dtype=np.int64) % p
     rank, rows, cols = 0, a.shape[0], a.shape[1] if a.ndim == 2 else 0
-    for c in range(cols):
-        piv = next((r for r in range(rank, rows) if a[r, c]), None)
-        if piv is None:
-            continue
-        a[[rank, piv]] = a[[piv, rank]]
-        a[rank] = a[rank] * pow(int(a[rank, c]), p - 2, p) % p
-        for r in range(rows):
-            if r != rank and a[r, c]:
-                a[r] = (a[r] - a[r, c] * a[rank]) % p
-        rank += 1
-    return rank
-
-
-def nullspace_mod_p(a: np.ndarray, p: int) -> np.ndarray:
-    """Columns spanning {x : a x = 0} over Z/p."""
-    a = np.array(a, dtype=np.int64) % p
-    rows, cols = a.shape
-    pivots, rank = [], 0
+    pivots = []
     for c in range(cols):
         piv = next((r for r in range(rank, rows) if a[r, c]), None)
         if piv is None:
@@ -82,6 +66,17 @@ def nullspace_mod_p(a: np.ndarray, p: int) -> np.ndarray:
                 a[r] = (a[r] - a[r, c] * a[rank]) % p
         pivots.append(c)
         rank += 1
+    return a, pivots
+
+
+def rank_mod_p(a: np.ndarray, p: int) -> int:
+    return len(_row_reduce_mod_p(a, p)[1])
+
+
+def nullspace_mod_p(a: np.ndarray, p: int) -> np.ndarray:
+    """Columns spanning {x : a x = 0} over Z/p."""
+    a, pivots = _row_reduce_mod_p(a, p)
+    cols = a.shape[1]
     free = [c for c in range(cols) if c not in pivots]
     basis = np.zeros((cols, len(free)), dtype=np.int64)
     for k, fcol in enumerate(free):

@@ -5,45 +5,14 @@ import pytest
 import scipy.sparse as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from sympy import Matrix
-from sympy.matrices.normalforms import invariant_factors
 
+from helpers import THESIS_M2, sympy_invariants
 from thesis_lib.smith import (
     dense_smith_diagonal,
     rank_mod_p,
     reduce_matrix,
     smith_normal_form,
 )
-
-# M_2 of Example 2.21, rows ab ac ad ae af bc bd be bf cd ce cf de df ef,
-# columns abd adf afc bcd ced cae abe bfe bcf def (copied from the thesis).
-THESIS_M2 = np.array(
-    [
-        [1, 0, 0, 0, 0, 0, 1, 0, 0, 0],
-        [0, 0, -1, 0, 0, -1, 0, 0, 0, 0],
-        [-1, 1, 0, 0, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 0, 1, -1, 0, 0, 0],
-        [0, -1, 1, 0, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 1, 0, 0, 0, 0, 1, 0],
-        [1, 0, 0, -1, 0, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 0, 0, 1, -1, 0, 0],
-        [0, 0, 0, 0, 0, 0, 0, 1, -1, 0],
-        [0, 0, 0, 1, -1, 0, 0, 0, 0, 0],
-        [0, 0, 0, 0, 1, -1, 0, 0, 0, 0],
-        [0, 0, -1, 0, 0, 0, 0, 0, 1, 0],
-        [0, 0, 0, 0, -1, 0, 0, 0, 0, 1],
-        [0, 1, 0, 0, 0, 0, 0, 0, 0, -1],
-        [0, 0, 0, 0, 0, 0, 0, -1, 0, 1],
-    ],
-    dtype=np.int64,
-)
-
-
-def sympy_invariants(a) -> list[int]:
-    a = np.asarray(a, dtype=object)
-    if a.size == 0:
-        return []
-    return [abs(int(x)) for x in invariant_factors(Matrix(a.tolist())) if x != 0]
 
 
 def test_example_2_21_m2():

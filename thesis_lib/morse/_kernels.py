@@ -61,6 +61,7 @@ def greedy_matching(n, down_ptr, down_idx, up_ptr, up_idx, vals, order):
     partner = np.full(n, -1, dtype=np.int64)
     pointer = 0
     done = 0
+    gone = np.empty(2, dtype=np.int64)  # the cells removed in this step: a pair (σ, g), or one critical cell
     while done < n:
         if head < tail:
             g = queue[head]
@@ -75,21 +76,15 @@ def greedy_matching(n, down_ptr, down_idx, up_ptr, up_idx, vals, order):
                     break
             partner[g] = s
             partner[s] = g
-            pair = (s, g)
-            for c in pair:
-                removed[c] = True
-                done += 1
-                for e in range(up_ptr[c], up_ptr[c + 1]):
-                    h = up_idx[e]
-                    if not removed[h] and vals[h] == vals[c]:
-                        cnt[h] -= 1
-                        if cnt[h] == 1:
-                            queue[tail] = h
-                            tail += 1
+            gone[0], gone[1] = s, g
+            n_gone = 2
         else:
             while removed[order[pointer]]:
                 pointer += 1
-            c = order[pointer]
+            gone[0] = order[pointer]
+            n_gone = 1
+        for k in range(n_gone):
+            c = gone[k]
             removed[c] = True
             done += 1
             for e in range(up_ptr[c], up_ptr[c + 1]):

@@ -9,7 +9,7 @@ import numpy as np
 
 from ._cells import CellComplex, Simplex, as_complex, partner_array
 from ._kernels import topological_rank
-from .vector_field import _cyclic_field_error, _ranks
+from .vector_field import _cyclic_field_error, _hasse_edges, _ranks
 
 __all__ = [
     "is_discrete_morse_function",
@@ -149,11 +149,7 @@ def discrete_morse_function(simplices, pairs) -> dict[Simplex, float]:
     """
     cx = as_complex(simplices)
     partner = partner_array(cx, pairs)
-    coo = cx.D.tocoo()
-    face, cell = coo.row.astype(np.int64), coo.col.astype(np.int64)
-    flip = partner[face] == cell
-    src = np.where(flip, face, cell)
-    dst = np.where(flip, cell, face)
+    src, dst = _hasse_edges(cx, partner)
     order = np.argsort(src, kind="stable")
     ptr = np.concatenate([[0], np.cumsum(np.bincount(src, minlength=cx.n))]).astype(np.int64)
     rank = topological_rank(cx.n, ptr, dst[order])

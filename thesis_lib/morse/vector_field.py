@@ -89,6 +89,15 @@ def _ranks(cx: CellComplex, partner: np.ndarray) -> tuple[np.ndarray, sp.csr_mat
     return topological_rank(cx.n, g.indptr.astype(np.int64), g.indices.astype(np.int64)), g
 
 
+def _hasse_edges(cx: CellComplex, partner: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Edges (src, dst) of the modified Hasse diagram (Theorem 4.44), one per nonzero of the boundary
+    matrix: τ → σ for a face σ of τ, reversed to σ → τ when σ and τ are paired."""
+    coo = cx.D.tocoo()
+    face, cell = coo.row.astype(np.int64), coo.col.astype(np.int64)
+    flip = partner[face] == cell
+    return np.where(flip, face, cell), np.where(flip, cell, face)
+
+
 def hasse_diagram(simplices, pairs: Pairs = ()) -> tuple[list[Simplex], sp.csr_matrix]:
     """The (modified) Hasse diagram: edge τ → σ for every face σ < τ of codimension one, reversed
     to σ → τ for the pairs of the vector field.
@@ -97,11 +106,7 @@ def hasse_diagram(simplices, pairs: Pairs = ()) -> tuple[list[Simplex], sp.csr_m
     """
     cx = as_complex(simplices)
     partner = partner_array(cx, pairs)
-    coo = cx.D.tocoo()
-    face, cell = coo.row.astype(np.int64), coo.col.astype(np.int64)
-    flip = partner[face] == cell
-    src = np.where(flip, face, cell)
-    dst = np.where(flip, cell, face)
+    src, dst = _hasse_edges(cx, partner)
     g = sp.csr_matrix((np.ones(src.size, dtype=np.int8), (src, dst)), shape=(cx.n, cx.n))
     return cx.simplices(), g
 

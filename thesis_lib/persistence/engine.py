@@ -89,6 +89,26 @@ def _edge_facets_dense(edges: np.ndarray, tris: np.ndarray, n: np.int64) -> np.n
     return out
 
 
+# ---------------------------------------------------------------------------- coboundary columns
+@numba.njit(cache=True)
+def _column_storage(indptr: np.ndarray, m_d: int):
+    """Turn the per-column counts ``indptr[c + 1]`` into offsets (in place) and allocate the columns:
+    (fill cursors, rows, signs, pivot, pivot_sign, pivot_value), no pivot found yet.
+
+    The fill passes of :func:`_coboundary_triangles` and :func:`_coboundary` keep their entry code
+    inline: an @njit call per entry there measured 8x slower (even with ``inline="always"``).
+    """
+    for c in range(m_d):
+        indptr[c + 1] += indptr[c]
+    fill = indptr[:-1].copy()
+    rows = np.empty(indptr[m_d], dtype=np.int32)
+    signs = np.empty(indptr[m_d], dtype=np.int8)
+    pivot = np.full(m_d, -1, dtype=np.int64)
+    pivot_sign = np.zeros(m_d, dtype=np.int64)
+    pivot_value = np.full(m_d, np.inf)
+    return fill, rows, signs, pivot, pivot_sign, pivot_value
+
+
 @numba.njit(cache=True)
 def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_values: np.ndarray):
     """:func:`_coboundary` of the edges, fused with the dense facet lookup (no facet array at all)."""
@@ -105,14 +125,7 @@ def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_v
         indptr[e0 + 1] += 1
         indptr[e1 + 1] += 1
         indptr[e2 + 1] += 1
-    for c in range(m_d):
-        indptr[c + 1] += indptr[c]
-    fill = indptr[:-1].copy()
-    rows = np.empty(indptr[m_d], dtype=np.int32)
-    signs = np.empty(indptr[m_d], dtype=np.int8)
-    pivot = np.full(m_d, -1, dtype=np.int64)
-    pivot_sign = np.zeros(m_d, dtype=np.int64)
-    pivot_value = np.full(m_d, np.inf)
+    fill, rows, signs, pivot, pivot_sign, pivot_value = _column_storage(indptr, m_d)
     for t in range(tris.shape[0]):
         v = up_values[t]
         a, b, c = tris[t, 0], tris[t, 1], tris[t, 2]
@@ -227,14 +240,7 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     for t in range(m_up):
         for i in range(w):
             indptr[facets[t, i] + 1] += 1
-    for c in range(m_d):
-        indptr[c + 1] += indptr[c]
-    fill = indptr[:-1].copy()
-    rows = np.empty(indptr[m_d], dtype=np.int32)
-    signs = np.empty(indptr[m_d], dtype=np.int8)
-    pivot = np.full(m_d, -1, dtype=np.int64)
-    pivot_sign = np.zeros(m_d, dtype=np.int64)
-    pivot_value = np.full(m_d, np.inf)
+    fill, rows, signs, pivot, pivot_sign, pivot_value = _column_storage(indptr, m_d)
     for t in range(m_up):
         v = up_values[t]
         for i in range(w):
