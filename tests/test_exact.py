@@ -19,6 +19,7 @@ from thesis_lib.curvature.exact import (
     torus_mean_curvature_at,
     torus_point,
     torus_principal_curvatures,
+    torus_principal_curvatures_at,
     torus_shape_operator,
     torus_uv,
 )
@@ -49,6 +50,8 @@ def test_torus_closed_forms_match_trace_det_and_numerics(u, v):
     uu, vv = torus_uv(torus_point(u, v, R, r), R, r)
     assert np.isclose(np.cos(uu), np.cos(u)) and np.isclose(np.sin(vv), np.sin(v), atol=1e-12)
     assert np.isclose(torus_mean_curvature_at(torus_point(u, v, R, r), R, r), torus_mean_curvature(u, v, R, r))
+    k = torus_principal_curvatures_at(torus_point(u, v, R, r), R, r)
+    assert np.allclose(k, np.sort(np.linalg.eigvals(S).real)) and k[0] <= k[1]
     assert np.isclose(
         torus_gaussian_curvature_at(torus_point(u, v, R, r), R, r), torus_gaussian_curvature(u, v, R, r)
     )
@@ -111,3 +114,17 @@ def test_bad_input():
         hypersurface_normal(np.zeros((3, 2)))
     with pytest.raises(ValueError, match="shape"):
         hypersurface_normal(np.zeros((3, 3)))
+
+
+def test_relative_error_leaves_out_zeros():
+    from thesis_lib.curvature.exact import relative_error
+
+    exact = np.array([0.0, 1.0, -2.0, 1e-9])
+    est = np.array([0.1, 1.1, 1.8, 0.0])
+    e = relative_error(est, exact, zero_tol=1e-3)
+    assert np.isnan(e[0]) and np.isnan(e[3])
+    assert np.allclose(e[1:3], [0.1, 1.9])  # |est - exact| / |exact|
+    with pytest.raises(ValueError, match="shape"):
+        relative_error(est[:2], exact)
+    with pytest.raises(ValueError, match="zero_tol"):
+        relative_error(est, exact, zero_tol=2.0)

@@ -205,3 +205,12 @@ def test_bad_input():
         cross_stars(lambda a: a, np.zeros((2, 2)), 0.0)
     with pytest.raises(ValueError, match="interval"):
         sample_catenoid(10, (1, -1))
+
+
+def test_plotting_bad_input():
+    from thesis_lib.meshes import mesh_figure, render_mesh
+
+    with pytest.raises(ValueError, match="at least one image"):
+        mesh_figure([])
+    with pytest.raises(ValueError, match=r"\(n, 3\)"):
+        render_mesh(np.zeros((4, 2)), np.array([[0, 1, 2]]))

@@ -22,6 +22,7 @@ __all__ = [
     "torus_gaussian_curvature",
     "torus_mean_curvature_at",
     "torus_gaussian_curvature_at",
+    "torus_principal_curvatures_at",
     "hypersphere_point",
     "hypersphere_mean_curvature",
     "catenoid_point",
@@ -29,6 +30,7 @@ __all__ = [
     "catenoid_mean_curvature",
     "hypersurface_normal",
     "parametric_shape_operator",
+    "relative_error",
 ]
 
 
@@ -123,6 +125,14 @@ def torus_mean_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarr
     Thesis: §3.4.1, Figure 3.11 (exact |H| at the sampled points).
     """
     return torus_mean_curvature(*torus_uv(points, R, r), R, r)
+
+
+def torus_principal_curvatures_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+    """Principal curvatures κ₁ ≤ κ₂ of the torus at the parameters of ``points``, shape (..., 2).
+
+    Thesis: Definition 3.3 and §3.4.1.
+    """
+    return torus_principal_curvatures(*torus_uv(points, R, r), R, r)
 
 
 def torus_gaussian_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
@@ -265,3 +275,27 @@ def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float
     g = np.einsum("...ki,...kj->...ij", first, first)
     B = np.einsum("...k,...kij->...ij", N, second)
     return np.linalg.solve(g, B)
+
+
+def relative_error(estimate, exact, zero_tol: float = 1e-3) -> np.ndarray:
+    """|estimate - exact| / |exact| (pass |H| for H, signed K for K), NaN where |exact| < zero_tol · max|exact|.
+
+    The thesis plots |real - estimate| / real (Figure 3.5); the real value vanishes on whole circles
+    of the torus (H at cos v = -R/(2r), K at v = ±π/2), where the ratio is undefined: those points
+    are left out (NaN) and should be reported separately as absolute errors.
+    Thesis: §3.4.1, Figures 3.5 and 3.7.
+    """
+    est = np.asarray(estimate, dtype=np.float64)
+    ex = np.asarray(exact, dtype=np.float64)
+    if est.shape != ex.shape:
+        raise ValueError(f"estimate {est.shape} and exact {ex.shape} differ in shape")
+    if not np.all(np.isfinite(ex)):
+        raise ValueError("exact values contain NaN or infinite values")
+    zero_tol = float(zero_tol)
+    if not 0 <= zero_tol < 1:
+        raise ValueError(f"zero_tol must lie in [0, 1), got {zero_tol!r}")
+    scale = np.max(np.abs(ex)) if ex.size else 0.0
+    out = np.full(ex.shape, np.nan)
+    ok = np.abs(ex) > zero_tol * scale
+    out[ok] = np.abs(est[ok] - ex[ok]) / np.abs(ex[ok])
+    return out

@@ -54,8 +54,12 @@ class TriangleGeometry(NamedTuple):
 
 
 @numba.njit(cache=True)
-def _triangle_kernel(v, s, dot, sq, twice, pts):  # pragma: no cover - compiled
-    for t in range(s.shape[0]):
+def _triangle_kernel(v, s, dot, sq, twice, pts, keys, nv):  # pragma: no cover - compiled
+    m = s.shape[0]
+    for t in range(m):
+        for k in range(3):  # key lo * nv + hi of the edge opposite corner k
+            i, j = s[t, (k + 1) % 3], s[t, (k + 2) % 3]
+            keys[k * m + t] = min(i, j) * nv + max(i, j)
         for k in range(3):
             for a in range(3):
                 pts[k, a, t] = v[s[t, k], a]
@@ -89,11 +93,18 @@ def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
 
     One compiled pass over the triangles (numba); ``v`` float64 (nv, 3), ``s`` int64 (m, 3), in range.
     """
+    geometry, _ = _triangle_geometry_and_keys(v, s)
+    return geometry
+
+
+def _triangle_geometry_and_keys(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeometry, np.ndarray]:
+    """:func:`triangle_geometry` plus the edge keys lo * nv + hi (corner-major), needs nv^2 < 2^62."""
     m = len(s)
     dot, sq = np.empty((3, m)), np.empty((3, m))
     twice, pts = np.empty(m), np.empty((3, 3, m))
-    _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts)
-    return TriangleGeometry(dot, sq, twice, pts)
+    keys = np.empty(3 * m, dtype=np.int64)
+    _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts, keys, len(v))
+    return TriangleGeometry(dot, sq, twice, pts), keys
 
 
 class Mesh(NamedTuple):
@@ -260,9 +271,12 @@ def validate_mesh(vertices, simplices) -> Mesh:
         bad = int(np.flatnonzero(rep)[0])
         raise ValueError(f"simplex {bad} {s[bad].tolist()} has a repeated vertex")
     n = d - 1
-    tri = None
+    tri, key = None, None
     if n == 2:
-        tri = triangle_geometry(v, s)
+        if float(nv) ** 2 < 2.0**62:
+            tri, key = _triangle_geometry_and_keys(v, s)  # edge keys from the same compiled pass
+        else:
+            tri = triangle_geometry(v, s)
         areas = 0.5 * tri.twice_area
         longest = np.sqrt(np.maximum(np.maximum(tri.edge_sq[0], tri.edge_sq[1]), tri.edge_sq[2]))
     else:
@@ -277,7 +291,10 @@ def validate_mesh(vertices, simplices) -> Mesh:
             f"simplex {bad} {s[bad].tolist()} is degenerate (hyperarea {areas[bad]:.3g}); "
             f"{int(degenerate.sum())} degenerate simplices in all"
         )
-    key, integral = _ridge_keys(s, nv)
+    if key is None:
+        key, integral = _ridge_keys(s, nv)
+    else:
+        integral = True
     ks = np.sort(key)
     eq = ks[1:] == ks[:-1]  # a ridge in k simplices gives a run of k equal keys
     triple = eq[1:] & eq[:-1]

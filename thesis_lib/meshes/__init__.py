@@ -14,6 +14,7 @@ from .grids import (
     torus_grid,
 )
 from .hull import convex_hull_surface, orient_outward, sphere_hull
+from .plotting import mesh_figure, render_mesh
 from .pivoting import ball_pivoting, estimate_normals
 from .sampling import sample_catenoid, sample_sphere, sample_torus
 from .stencil import cross_stars, neighbour_grid_mean_curvature
@@ -36,9 +37,11 @@ __all__ = [
     "hypersphere_freudenthal",
     "is_closed_pseudomanifold",
     "merge_coincident",
+    "mesh_figure",
     "neighbour_grid_mean_curvature",
     "orient_outward",
     "poles",
+    "render_mesh",
     "sample_catenoid",
     "sample_sphere",
     "sample_torus",

@@ -14,6 +14,11 @@ Steps (ABK98, §4–5):
    incident triangles all lie in a wedge of angle < π/2), then extract the outer oriented
    2-manifold by walking from an outer triangle: across every edge go to the next triangle met
    when turning about the edge through the outside.
+
+Cost: the Delaunay triangulation of S ∪ P dominates.  The poles cluster along the medial axis (for
+the torus: its core circle and its axis), and the triangulation then has far more tetrahedra per
+point than one of S alone (about 34 per point at 6·10⁴ torus samples against 12), so the running
+time grows faster than linearly (see ``benchmarks/bench_crust.py``).
 """
 
 from __future__ import annotations
@@ -55,8 +60,9 @@ def _group_argmax(group: np.ndarray, value: np.ndarray, n_groups: int) -> np.nda
 def poles(points, far: float | None = None):
     """The poles p⁺ and p⁻ of every sample (ABK98, §4): arrays ``(n, 3)`` each.
 
-    ``far`` is the distance used for poles at infinity and caps all pole distances (default: four
-    times the diagonal of the bounding box).  p⁻ falls back to the reflection of p⁺ when a cell has
+    ``far`` is the distance used for poles at infinity and caps all pole distances (default: half
+    the diagonal of the bounding box; much farther caps make Qhull's triangulation of S ∪ P very slow
+    on large samples — at 10⁵ torus samples four diagonals took over five minutes against 70 s).  p⁻ falls back to the reflection of p⁺ when a cell has
     no Voronoi vertex on the opposite side.  Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
     """
     pts = as_points(points, min_points=5, allow_duplicates=False)
@@ -64,7 +70,9 @@ def poles(points, far: float | None = None):
         raise ValueError(f"crust needs points in R³, got dimension {pts.shape[1]}")
     n = len(pts)
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
-    far = 4.0 * diag if far is None else float(far)
+    far = 0.5 * diag if far is None else float(far)
+    if not np.isfinite(far) or far <= 0:
+        raise ValueError(f"far must be a positive distance, got {far!r}")
     tri = Delaunay(pts)
     tets = tri.simplices
     cc, ok = _circumcentres(pts[tets])
@@ -116,11 +124,18 @@ def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None)
     p_plus, p_minus = poles(pts, far)
     allp = np.vstack([p_plus, p_minus])
     allp = np.unique(np.round(allp, 12), axis=0)
-    tets = Delaunay(np.vstack([pts, allp])).simplices
-    tets = np.sort(tets, axis=1)
-    faces = np.concatenate([tets[:, [0, 1, 2]], tets[:, [0, 1, 3]], tets[:, [0, 2, 3]], tets[:, [1, 2, 3]]])
-    faces = faces[faces[:, 2] < n]  # sorted, so the largest index decides
-    faces = np.unique(faces, axis=0)
+    tets = np.sort(Delaunay(np.vstack([pts, allp])).simplices, axis=1)
+    # faces with three sample vertices: all four faces of all-sample tetrahedra, and the face
+    # (t0, t1, t2) of tetrahedra whose largest vertex only is a pole (rows are sorted)
+    tets = tets[tets[:, 2] < n]
+    full = tets[:, 3] < n
+    t4 = tets[full]
+    faces = np.concatenate([tets[~full, :3], t4[:, [0, 1, 2]], t4[:, [0, 1, 3]], t4[:, [0, 2, 3]], t4[:, [1, 2, 3]]])
+    if n < 2_000_000:  # n³ < 2⁶³: one int64 key per face
+        key = np.unique((faces[:, 0].astype(np.int64) * n + faces[:, 1]) * n + faces[:, 2])
+        faces = np.stack([key // (n * n), (key // n) % n, key % n], axis=1)
+    else:
+        faces = np.unique(faces, axis=0)
     # filtering by normal
     p = pts[faces]
     nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
@@ -344,7 +359,8 @@ def crust(points, theta: float = np.pi / 4, prune: bool = True, far: float | Non
         off for a surface with boundary, where it would eat the surface from its border).  When the
         sample is too sparse and trimming removes every triangle, the walk runs on the untrimmed
         candidates instead (the result then has holes and non-manifold edges).
-    far : distance of the poles at infinity (default 4 × bounding-box diagonal).
+    far : distance of the poles at infinity and cap of all pole distances (default half the
+        bounding-box diagonal).
 
     Returns
     -------

@@ -9,7 +9,6 @@ through a parametrisation X this triangulates the hypersurfaces of §3.4 in any 
 from __future__ import annotations
 
 import itertools
-from typing import Callable
 
 import numpy as np
 from scipy.sparse import coo_matrix

@@ -1,0 +1,86 @@
+"""Figures of triangulated surfaces: pyvista off-screen renders shown with matplotlib colour bars."""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["render_mesh", "mesh_figure"]
+
+
+def render_mesh(
+    vertices,
+    faces,
+    scalars=None,
+    clim=None,
+    cmap: str = "viridis",
+    points_only: bool = False,
+    window=(640, 480),
+    elevation: float = 35.0,
+    azimuth: float = 30.0,
+    edges: bool = False,
+    nan_color: str = "#bbbbbb",
+) -> np.ndarray:
+    """Render a triangle mesh (or its vertices) coloured by per-vertex ``scalars``; returns an RGB image.
+
+    Off-screen through :func:`thesis_lib.render.pyvista_offscreen`; no scalar bar (the matplotlib
+    figure of :func:`mesh_figure` draws it, so every figure shares one colour-bar style).
+    Thesis: Figures 3.4–3.14 (curvature shown on the triangulations).
+    """
+    v = np.asarray(vertices, dtype=np.float64)
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise ValueError(f"vertices must be (n, 3) to render, got shape {v.shape}")
+    f = np.asarray(faces, dtype=np.int64)
+    from ..render import pyvista_offscreen
+
+    pv = pyvista_offscreen()
+    plotter = pv.Plotter(off_screen=True, window_size=list(window))
+    plotter.set_background("white")
+    kwargs = dict(cmap=cmap, show_scalar_bar=False, nan_color=nan_color)
+    if clim is not None:
+        kwargs["clim"] = list(clim)
+    if points_only:
+        cloud = pv.PolyData(v)
+        if scalars is not None:
+            cloud["s"] = np.asarray(scalars, dtype=np.float64)
+            plotter.add_mesh(cloud, scalars="s", point_size=4, render_points_as_spheres=True, **kwargs)
+        else:
+            plotter.add_mesh(cloud, color="#555555", point_size=4, render_points_as_spheres=True)
+    else:
+        mesh = pv.PolyData(v, np.hstack([np.full((len(f), 1), 3), f]).ravel())
+        if scalars is not None:
+            mesh["s"] = np.asarray(scalars, dtype=np.float64)
+            plotter.add_mesh(mesh, scalars="s", show_edges=edges, smooth_shading=False, **kwargs)
+        else:
+            plotter.add_mesh(mesh, color="#d0d0d0", show_edges=edges)
+    plotter.camera_position = "iso"
+    plotter.camera.elevation = elevation
+    plotter.camera.azimuth = azimuth
+    plotter.reset_camera()
+    img = plotter.screenshot(return_img=True)
+    plotter.close()
+    return np.asarray(img)
+
+
+def mesh_figure(images, titles=None, clim=None, cmap: str = "viridis", label: str = "", figsize=None):
+    """A matplotlib figure showing rendered ``images`` side by side with one shared colour bar.
+
+    Thesis: Figures 3.4–3.14.
+    """
+    import matplotlib.pyplot as plt
+    from matplotlib.cm import ScalarMappable
+    from matplotlib.colors import Normalize
+
+    images = list(images)
+    if not images:
+        raise ValueError("need at least one image")
+    fig, axes = plt.subplots(1, len(images), figsize=figsize or (4.2 * len(images) + 0.8, 3.6))
+    axes = np.atleast_1d(axes)
+    for k, (ax, img) in enumerate(zip(axes, images)):
+        ax.imshow(img)
+        ax.set_axis_off()
+        if titles is not None:
+            ax.set_title(titles[k])
+    if clim is not None:
+        sm = ScalarMappable(norm=Normalize(*clim), cmap=cmap)
+        fig.colorbar(sm, ax=list(axes), shrink=0.8, label=label)
+    return fig
