@@ -16,6 +16,7 @@ from thesis_lib.meshes import (
     extract_manifold,
     facet_degrees,
     poles,
+    sample_catenoid,
     sample_sphere,
     sample_torus,
 )
@@ -74,6 +75,37 @@ def test_poles_lie_along_normals():
     inner = np.where(np.einsum("ij,ij->i", pp - pts, nrm)[:, None] < 0, pp, pm)
     core = np.hypot(np.hypot(inner[:, 0], inner[:, 1]) - 10, inner[:, 2])
     assert np.median(core) < 1.0
+
+
+def _candidates_by_definition(pts, theta=np.pi / 4):
+    """Steps 3-4 as ABK98 state them: Qhull's Delaunay of S ∪ P, triangles with sample vertices."""
+    from scipy.spatial import Delaunay
+
+    from thesis_lib.meshes.crust import _normal_filter
+
+    pp, pm = poles(pts)
+    n = len(pts)
+    tets = Delaunay(np.vstack([pts, np.unique(np.vstack([pp, pm]), axis=0)])).simplices
+    tri = np.concatenate([np.delete(tets, k, axis=1) for k in range(4)])
+    tri = np.unique(np.sort(tri[(tri < n).all(axis=1)], axis=1), axis=0)
+    return tri[_normal_filter(pts, tri, pp, theta)]
+
+
+@pytest.mark.parametrize(
+    "pts",
+    [
+        sample_torus(1500, 10.0, 5.0, seed=3),
+        sample_torus(400, 10.0, 5.0, seed=4),
+        sample_sphere(800, 3, 2.0, seed=6),
+        sample_catenoid(1200, seed=7),  # open surface: convex-hull faces with Voronoi rays
+    ],
+    ids=["torus1500", "torus400", "sphere", "catenoid"],
+)
+def test_voronoi_filter_equals_delaunay_of_samples_and_poles(pts):
+    ours = crust_candidates(pts)
+    ref = _candidates_by_definition(pts)
+    assert len(ref) > len(pts)
+    assert np.array_equal(ours, ref)
 
 
 def test_crust_on_sphere():
