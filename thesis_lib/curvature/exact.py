@@ -34,10 +34,12 @@ __all__ = [
 ]
 
 
-def _radii(R: float, r: float) -> tuple[float, float]:
+def check_torus_radii(R: float, r: float) -> tuple[float, float]:
+    """``(R, r)`` as floats, or ValueError unless 0 < r < R (a torus of revolution without
+    self-intersection).  Shared by the torus of §3.4.1 and the upright torus of Example 4.2."""
     R, r = float(R), float(r)
     if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
-        raise ValueError(f"torus radii need 0 < r < R (finite), got R={R!r}, r={r!r}")
+        raise ValueError(f"torus radii need 0 < r < R (finite; R > r > 0), got R={R!r}, r={r!r}")
     return R, r
 
 
@@ -54,7 +56,7 @@ def torus_point(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
 
     Thesis: §3.4.1 (parametrisation of the torus in R³).
     """
-    R, r = _radii(R, r)
+    R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
     rho = R + r * np.cos(v)
     return np.stack([rho * np.cos(u), rho * np.sin(u), r * np.sin(v)], axis=-1)
@@ -65,7 +67,7 @@ def torus_uv(points, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.nd
 
     Thesis: §3.4.1 (inverse of the torus parametrisation, used to compare estimates at samples).
     """
-    _radii(R, r)
+    check_torus_radii(R, r)
     p = _finite("points", points)
     if p.ndim < 1 or p.shape[-1] != 3:
         raise ValueError(f"points must have shape (..., 3), got {p.shape}")
@@ -79,7 +81,7 @@ def torus_shape_operator(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
 
     Thesis: §3.4.1 (S(X_u) = -cos v/(R + r cos v) X_u, S(X_v) = -X_v / r).
     """
-    R, r = _radii(R, r)
+    R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
     out = np.zeros(v.shape + (2, 2))
     out[..., 0, 0] = -np.cos(v) / (R + r * np.cos(v))
@@ -102,7 +104,7 @@ def torus_mean_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
 
     Thesis: §3.4.1 (H = tr(S)/2, Definition 3.4).  Zero on the circle cos v = -R/(2r).
     """
-    R, r = _radii(R, r)
+    R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
     c = np.cos(v)
     return -(R + 2 * r * c) / (2 * r * (R + r * c))
@@ -113,7 +115,7 @@ def torus_gaussian_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarra
 
     Thesis: §3.4.1 (K = det S, Definition 3.4).  Zero on the circles v = ±π/2.
     """
-    R, r = _radii(R, r)
+    R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
     c = np.cos(v)
     return c / (r * (R + r * c))

@@ -8,6 +8,7 @@ import numpy as np
 import scipy.optimize
 import scipy.sparse as sp
 
+from ..curvature.exact import check_torus_radii
 from .morse_complex import chain_complex_homology
 
 __all__ = [
@@ -23,19 +24,12 @@ __all__ = [
 ]
 
 
-def _check_radii(R: float, r: float) -> tuple[float, float]:
-    R, r = float(R), float(r)
-    if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
-        raise ValueError(f"the upright torus needs finite radii with R > r > 0, got R={R}, r={r}")
-    return R, r
-
-
 def torus_height(u, v, R: float = 2.0, r: float = 1.0):
     """Height h(u, v) = cos(u)(R + r cos v) on the torus φ(u, v) of Example 4.2.
 
     Thesis: Example 4.2.
     """
-    R, r = _check_radii(R, r)
+    R, r = check_torus_radii(R, r)
     return np.cos(u) * (R + r * np.cos(v))
 
 
@@ -44,7 +38,7 @@ def torus_height_gradient(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
 
     Thesis: Example 4.2.
     """
-    R, r = _check_radii(R, r)
+    R, r = check_torus_radii(R, r)
     return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
 
 
@@ -53,7 +47,7 @@ def torus_height_hessian(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
 
     Thesis: Example 4.2 (e.g. diag(-(R + r), -r) at (0, 0)).
     """
-    R, r = _check_radii(R, r)
+    R, r = check_torus_radii(R, r)
     return np.array(
         [
             [-np.cos(u) * (R + r * np.cos(v)), r * np.sin(u) * np.sin(v)],
@@ -89,7 +83,7 @@ def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list
     ``grid × grid`` lattice of (u, v); the roots are reduced to [0, 2π)², merged, and classified
     by the Hessian.  Returns dicts with ``u, v, point (x, y, z), value, index``, sorted by value.
     """
-    R, r = _check_radii(R, r)
+    R, r = check_torus_radii(R, r)
     if int(grid) < 2:
         raise ValueError(f"grid must be at least 2, got {grid}")
     two_pi = 2 * np.pi
