@@ -137,10 +137,13 @@ def poles(points, far: float | None = None):
     return _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far))
 
 
-def _voronoi_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray):
-    """Every triangle of Del(S) with its dual Voronoi edge ``c0 + t d``, t ∈ [0, t_max].
+def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, p_plus: np.ndarray, theta: float):
+    """The triangles of Del(S) that pass the normal filter, with their dual Voronoi edges
+    ``c0 + t d``, t ∈ [0, t_max].
 
-    Triangles next to a flat tetrahedron (no circumcentre) are left out.
+    Processed one face slot of the tetrahedra at a time (peak memory); the normal filter comes
+    first as it is cheap and shortens the Voronoi filter's work.  Triangles next to a flat
+    tetrahedron (no circumcentre) are left out.
     """
     tets, nbr = tri.simplices, tri.neighbors
     idx = np.arange(len(tets))
@@ -151,6 +154,9 @@ def _voronoi_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarra
         sel = (other == -1) | (other > idx)  # each interior face once, from its lower tetrahedron
         i, o = idx[sel], other[sel]
         face = np.delete(tets[i], k, axis=1)
+        good = ok[i] & ok[np.where(o >= 0, o, i)]
+        good[good] = _normal_filter(pts, face[good], p_plus, theta)
+        i, o, face = i[good], o[good], face[good]
         c0 = cc[i]
         d = np.empty_like(c0)
         inner = o >= 0
@@ -159,11 +165,10 @@ def _voronoi_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarra
         nrm = np.cross(hp[:, 1] - hp[:, 0], hp[:, 2] - hp[:, 0])
         nrm *= np.sign(np.einsum("ij,ij->i", nrm, hp[:, 0] - pts[tets[i[~inner], k]]))[:, None]
         d[~inner] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
-        good = ok[i] & ok[np.where(inner, o, i)]
-        faces.append(face[good])
-        c0s.append(c0[good])
-        ds.append(d[good])
-        tmaxs.append(np.where(inner, 1.0, _RAY_LENGTH)[good])
+        faces.append(face)
+        c0s.append(c0)
+        ds.append(d)
+        tmaxs.append(np.where(inner, 1.0, _RAY_LENGTH))
     return np.concatenate(faces), np.concatenate(c0s), np.concatenate(ds), np.concatenate(tmaxs)
 
 
@@ -245,9 +250,7 @@ def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None)
     tri = Delaunay(pts)
     cc, ok = _circumcentres(pts[tri.simplices])
     p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far))
-    faces, c0, d, t_max = _voronoi_edges(pts, tri, cc, ok)
-    by_normal = _normal_filter(pts, faces, p_plus, theta)  # cheap: first, to shorten the LP
-    faces, c0, d, t_max = faces[by_normal], c0[by_normal], d[by_normal], t_max[by_normal]
+    faces, c0, d, t_max = _candidate_edges(pts, tri, cc, ok, p_plus, theta)
     faces = faces[_voronoi_filter(pts, faces, c0, d, t_max, np.vstack([p_plus, p_minus]))]
     faces = np.sort(faces, axis=1)
     return faces[np.lexsort(faces.T[::-1])]
