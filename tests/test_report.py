@@ -25,7 +25,9 @@ def test_registry_is_well_formed_and_complete():
 
 def test_cli_json_matches_the_library(capsys):
     assert cli.main(["report", "--json"]) == 0
-    assert json.loads(capsys.readouterr().out) == json.loads(json.dumps(report.report()))
+    out = capsys.readouterr().out
+    assert json.loads(out) == json.loads(json.dumps(report.report()))
+    assert '"where": "§' in out  # thesis places stay readable (no \\u escapes)
 
 
 def test_cli_markdown_table(capsys):

@@ -192,4 +192,4 @@ def markdown(rows: list[dict[str, object]] | None = None) -> str:
 
 def to_json(rows: list[dict[str, object]] | None = None) -> str:
     """The report as JSON (``thesis-lab report --json``)."""
-    return json.dumps(report() if rows is None else rows, indent=1)
+    return json.dumps(report() if rows is None else rows, indent=1, ensure_ascii=False)
