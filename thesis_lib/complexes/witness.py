@@ -23,7 +23,7 @@ import numpy as np
 
 from ..points import as_points
 from ._checks import check_max_dim, check_radius
-from ._flag import flag_levels, matrix_edges
+from ._flag import _lower_bound, flag_levels, matrix_edges
 from .filtration import Filtration
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
@@ -99,18 +99,6 @@ def _minmax_gather(cur, idx, cnt, row):
 
 
 @numba.njit(cache=True)
-def _count_below(row, value):
-    lo, hi = 0, row.shape[0]
-    while lo < hi:
-        mid = (lo + hi) >> 1
-        if row[mid] < value:
-            lo = mid + 1
-        else:
-            hi = mid
-    return lo
-
-
-@numba.njit(cache=True)
 def _candidate_counts(parents, ev, eps):
     """Per parent: the landmarks w > last vertex whose edges to every vertex have value <= eps."""
     m, width = parents.shape
@@ -182,7 +170,7 @@ def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, ou
         if use_sorted and ub > lb:
             for i in range(width + 1):
                 u = parents[r, i] if i < width else w
-                c = _count_below(sorted_d[u], ub)
+                c = _lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
                 if c < n_scan:
                     n_scan = c
                     u_best = u
