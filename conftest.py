@@ -6,7 +6,7 @@ import os
 import shutil
 import tempfile
 
-from thesis_lib.results import DEFAULT_RUN_ENV
+from thesis_lib.lab.results import DEFAULT_RUN_ENV
 
 _SCRATCH: str | None = None
 

@@ -6,7 +6,7 @@ import json
 
 import pytest
 
-from thesis_lib import bench
+from thesis_lib.lab import bench
 
 
 def test_tables_from_rows(tmp_path, monkeypatch):

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from thesis_lib.paths import repo_root
+from thesis_lib.lab.paths import repo_root
 
 BOOK = repo_root() / "book"
 

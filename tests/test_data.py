@@ -6,8 +6,8 @@ import hashlib
 
 import pytest
 
-from thesis_lib import cli, data
-from thesis_lib.data import DataError
+from thesis_lib.lab import cli, data
+from thesis_lib.lab.data import DataError
 
 
 def test_every_manifest_entry_verifies():

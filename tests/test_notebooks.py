@@ -10,8 +10,8 @@ import nbformat
 import pytest
 import yaml
 
-from thesis_lib import runner
-from thesis_lib.paths import repo_root
+from thesis_lib.lab import runner
+from thesis_lib.lab.paths import repo_root
 
 ROOT = repo_root()
 NOTEBOOKS = sorted((ROOT / "book").glob("*.ipynb")) + sorted((ROOT / "experiments").glob("*.ipynb"))

@@ -7,7 +7,7 @@ import tomllib
 
 import yaml
 
-from thesis_lib.paths import repo_root
+from thesis_lib.lab.paths import repo_root
 
 ROOT = repo_root()
 
@@ -56,7 +56,7 @@ def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
 
 def test_console_script_and_citation():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
-    assert project["scripts"]["thesis-lab"] == "thesis_lib.cli:main"
+    assert project["scripts"]["thesis-lab"] == "thesis_lib.lab.cli:main"
     cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
     assert cff["preferred-citation"]["authors"][0]["family-names"] == "Botnan"
     assert cff["preferred-citation"]["year"] == 2011

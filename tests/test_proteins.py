@@ -1,12 +1,12 @@
-"""Tests of thesis_lib.proteins: PDB parsing traps (SOURCES.md), radii and weights (thesis §2.2.2, §2.4.2)."""
+"""Tests of thesis_lib.applications.proteins: PDB parsing traps (SOURCES.md), radii and weights (thesis §2.2.2, §2.4.2)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from thesis_lib.paths import shared_dir
-from thesis_lib.proteins import Atoms, read_pdb, resolve_structure, vdw_radii, weighted_points
+from thesis_lib.lab.paths import shared_dir
+from thesis_lib.applications.proteins import Atoms, read_pdb, resolve_structure, vdw_radii, weighted_points
 
 PDB = shared_dir() / "data" / "pdb"
 pytestmark = pytest.mark.skipif(not (PDB / "1eca.pdb").is_file(), reason="shared PDB files not present")
@@ -198,7 +198,7 @@ def test_weighted_points():
 
 # ----------------------------------------------------------------------------- filtrations and bars
 def test_discretise_intervals_on_a_grid():
-    from thesis_lib.proteins import discretise_intervals
+    from thesis_lib.applications.proteins import discretise_intervals
 
     iv = np.array([[0.01, 0.015], [0.01, 0.05], [-0.3, 0.07], [0.12, np.inf], [0.6, 0.9], [0.2, 0.61]])
     out = discretise_intervals(iv, 0.02, window=(0.0, 0.5))
@@ -216,7 +216,7 @@ def test_discretise_intervals_on_a_grid():
 
 
 def test_count_bars():
-    from thesis_lib.proteins import count_bars
+    from thesis_lib.applications.proteins import count_bars
 
     iv = np.array([[0.0, 0.02], [0.0, 0.03], [0.1, 0.5], [0.2, np.inf]])
     assert count_bars(iv) == 4
@@ -228,7 +228,7 @@ def test_count_bars():
 
 def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():
     from thesis_lib.persistence import persistence
-    from thesis_lib.proteins import protein_filtration
+    from thesis_lib.applications.proteins import protein_filtration
 
     atoms = read_pdb(PDB / "1grm.pdb")
     r = vdw_radii(atoms)

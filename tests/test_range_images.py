@@ -1,4 +1,4 @@
-"""Tests of thesis_lib.range_images: synthetic range images and the Adams–Carlsson patch pipeline (§2.4.3)."""
+"""Tests of thesis_lib.applications.range_images: synthetic range images and the Adams–Carlsson patch pipeline (§2.4.3)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from thesis_lib.range_images import (
+from thesis_lib.applications.range_images import (
     contrast_norm,
     dct_basis,
     dct_basis_5x5,
@@ -57,7 +57,7 @@ def test_empty_scene_is_ground_with_exact_ranges():
 
 def test_sphere_in_front_of_camera_distance():
     # A scene with one sphere straight ahead: check against the analytic distance via the private helper.
-    from thesis_lib.range_images import _hit_sphere
+    from thesis_lib.applications.range_images import _hit_sphere
 
     orig = np.zeros(3)
     dirs = np.array([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0]])

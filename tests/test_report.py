@@ -6,8 +6,8 @@ import json
 
 import pytest
 
-from thesis_lib import cli, report
-from thesis_lib.report import ClaimError
+from thesis_lib.lab import cli, report
+from thesis_lib.lab.report import ClaimError
 
 
 def test_registry_is_well_formed_and_complete():

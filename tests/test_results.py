@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from thesis_lib.results import DEFAULT_RUN_ENV, Recorder, load
+from thesis_lib.lab.results import DEFAULT_RUN_ENV, Recorder, load
 
 
 def test_record_writes_flat_numbers(tmp_path):
@@ -57,7 +57,7 @@ def test_figures_are_byte_identical_on_rerun(tmp_path):
 
 
 def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
-    from thesis_lib.results import figure
+    from thesis_lib.lab.results import figure
 
     monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
     monkeypatch.delenv(DEFAULT_RUN_ENV, raising=False)

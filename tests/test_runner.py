@@ -8,9 +8,9 @@ import json
 import nbformat
 import pytest
 
-from thesis_lib import cli, runner
-from thesis_lib.results import DEFAULT_RUN_ENV
-from thesis_lib.runner import ParameterError
+from thesis_lib.lab import cli, runner
+from thesis_lib.lab.results import DEFAULT_RUN_ENV
+from thesis_lib.lab.runner import ParameterError
 
 TOY_PARAMETERS = """\
 n = 3  # an int
@@ -22,7 +22,7 @@ output_dir = ""  # set by the runner
 """
 
 TOY_BODY = """\
-from thesis_lib.results import Recorder
+from thesis_lib.lab.results import Recorder
 rec = Recorder("toy", output_dir)
 rec.record(square=n * n, x=x, flag=flag, label_length=len(label))
 assert not fail, "asked to fail"

@@ -2,7 +2,9 @@
 *Three Approaches in Computational Geometry and Topology*.
 
 Subpackages: :mod:`complexes`, :mod:`homology`, :mod:`persistence`, :mod:`curvature`,
-:mod:`morse`, :mod:`datasets`; :mod:`results`, :mod:`data` and :mod:`report` serve the book.
+:mod:`morse`, :mod:`datasets`, :mod:`meshes`; the applications of §2.4 in :mod:`applications`;
+figure style and rendering in :mod:`graphics`; the laboratory (runner, results, report, data layer,
+command line) in :mod:`lab`.
 """
 
 __version__ = "0.1.0"

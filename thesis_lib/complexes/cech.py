@@ -5,7 +5,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ..points import as_points
+from .._validate import as_points
 from ..simplicial import facets, find_rows
 from ._checks import check_max_dim, check_radius
 from ._flag import edges_within, expand_level, upper_csr

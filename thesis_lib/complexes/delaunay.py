@@ -13,7 +13,7 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError
 
-from ..points import as_points
+from .._validate import as_points
 from ..simplicial import closure
 from ._checks import check_weights
 

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..points import as_points
+from .._validate import as_points
 
-__all__ = ["maxmin_landmarks", "random_landmarks", "covering_radius"]
+__all__ = ["maxmin_landmarks", "random_landmarks", "covering_radius", "count_within"]
 
 
 def _check_count(points: np.ndarray, n: int) -> int:
@@ -56,3 +56,17 @@ def covering_radius(points, landmarks: np.ndarray) -> float:
     pts = as_points(points)
     d, _ = cKDTree(pts[np.asarray(landmarks)]).query(pts)
     return float(d.max())
+
+
+def count_within(points, targets, radius: float) -> int:
+    """Number of ``points`` within distance ``radius`` of at least one of ``targets``.
+
+    Thesis: Figure 2.13 (landmarks near the intersection points of the two circles).
+    """
+    pts, tgt = as_points(points), as_points(targets)
+    if pts.shape[1] != tgt.shape[1]:
+        raise ValueError(f"points live in R^{pts.shape[1]} but targets in R^{tgt.shape[1]}")
+    if not radius >= 0:
+        raise ValueError(f"radius must be non-negative, got {radius!r}")
+    d = np.linalg.norm(pts[:, None, :] - tgt[None, :, :], axis=2)
+    return int(np.count_nonzero(d.min(axis=1) <= radius))

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ..points import as_points
+from .._validate import as_points
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
 

@@ -35,7 +35,7 @@ import numba
 import numpy as np
 from scipy.spatial import Delaunay, cKDTree
 
-from ..points import as_points
+from .._validate import as_points
 
 __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.spatial import ConvexHull
 
-from ..points import as_points
+from .._validate import as_points
 from .sampling import sample_sphere
 
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..points import as_points
+from .._validate import as_points
 
 __all__ = ["estimate_normals", "ball_pivoting"]
 

@@ -22,7 +22,7 @@ def render_mesh(
 ) -> np.ndarray:
     """Render a triangle mesh (or its vertices) coloured by per-vertex ``scalars``; returns an RGB image.
 
-    Off-screen through :func:`thesis_lib.render.pyvista_offscreen`; no scalar bar (the matplotlib
+    Off-screen through :func:`thesis_lib.graphics.render.pyvista_offscreen`; no scalar bar (the matplotlib
     figure of :func:`mesh_figure` draws it, so every figure shares one colour-bar style).
     Thesis: Figures 3.4–3.14 (curvature shown on the triangulations).
     """
@@ -30,7 +30,7 @@ def render_mesh(
     if v.ndim != 2 or v.shape[1] != 3:
         raise ValueError(f"vertices must be (n, 3) to render, got shape {v.shape}")
     f = np.asarray(faces, dtype=np.int64)
-    from ..render import pyvista_offscreen
+    from ..graphics.render import pyvista_offscreen
 
     pv = pyvista_offscreen()
     plotter = pv.Plotter(off_screen=True, window_size=list(window))

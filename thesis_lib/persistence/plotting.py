@@ -13,7 +13,7 @@ __all__ = ["plot_barcode", "plot_diagram"]
 
 def _color(dim: int) -> str:
     """One colour per homology dimension, shared by barcodes and diagrams (the book's style)."""
-    from ..style import COLORS  # imports matplotlib: only when plotting
+    from ..graphics.style import COLORS  # imports matplotlib: only when plotting
 
     dims = COLORS["dims"]
     return dims[dim % len(dims)]

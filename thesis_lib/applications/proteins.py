@@ -26,8 +26,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .complexes.filtration import Filtration
-from .paths import shared_dir
+from ..complexes.filtration import Filtration
+from ..lab.paths import shared_dir
 
 __all__ = [
     "Atoms",
@@ -97,7 +97,7 @@ def resolve_structure(path_or_name: str | Path) -> Path:
 
     Thesis: §2.2.2 (the coordinates come from the Protein Data Bank).
 
-    An id is looked up through the data layer :func:`thesis_lib.data.path` (checked by sha256); when
+    An id is looked up through the data layer :func:`thesis_lib.lab.data.path` (checked by sha256); when
     the manifest has no entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
     """
     if isinstance(path_or_name, Path) or not _PDB_ID.match(str(path_or_name)):
@@ -106,7 +106,7 @@ def resolve_structure(path_or_name: str | Path) -> Path:
             raise ValueError(f"no PDB file at {path}")
         return path
     name = str(path_or_name).lower()
-    from . import data
+    from ..lab import data
 
     for key in (name, f"pdb-{name}", f"{name}.pdb"):
         try:
@@ -344,7 +344,7 @@ def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0) -> Fil
     Thesis: §2.2.2 and §2.4.2 (the union of the balls B(x, sqrt(w + ε²)) is homotopy equivalent to
     the weighted alpha complex; at ε² = r_c² every atom has its van der Waals radius).
     """
-    from .complexes.alpha import alpha
+    from ..complexes.alpha import alpha
 
     points, weights = weighted_points(atoms, radii, r_c)
     if np.any(weights < 0):
@@ -410,7 +410,7 @@ def space_filling_image(
 
     Thesis: §2.2.2 and Figure 2.18 (space-filling diagram; 1ECA with 15 % and 100 % of the radii).
     """
-    from .render import pyvista_offscreen
+    from ..graphics.render import pyvista_offscreen
 
     r = np.asarray(radii, dtype=np.float64)
     if not isinstance(atoms, Atoms) or r.shape != (len(atoms),):

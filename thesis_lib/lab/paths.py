@@ -13,7 +13,7 @@ def repo_root() -> Path:
     env = os.environ.get("THESIS_LAB_ROOT")
     if env:
         return Path(env).resolve()
-    return Path(__file__).resolve().parents[1]
+    return Path(__file__).resolve().parents[2]
 
 
 def shared_dir() -> Path:

@@ -1,4 +1,4 @@
-"""Validation of point clouds shared by every construction."""
+"""Validation at the public edge: every public function checks its input here, in one call."""
 
 from __future__ import annotations
 
@@ -28,17 +28,3 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True) -> 
             dup = np.flatnonzero(counts[inverse.ravel()] > 1)[:2]
             raise ValueError(f"duplicate points: rows {int(dup[0])} and {int(dup[1])} are equal")
     return arr
-
-
-def count_within(points, targets, radius: float) -> int:
-    """Number of ``points`` within distance ``radius`` of at least one of ``targets``.
-
-    Thesis: Figure 2.13 (landmarks near the intersection points of the two circles).
-    """
-    pts, tgt = as_points(points), as_points(targets)
-    if pts.shape[1] != tgt.shape[1]:
-        raise ValueError(f"points live in R^{pts.shape[1]} but targets in R^{tgt.shape[1]}")
-    if not radius >= 0:
-        raise ValueError(f"radius must be non-negative, got {radius!r}")
-    d = np.linalg.norm(pts[:, None, :] - tgt[None, :, :], axis=2)
-    return int(np.count_nonzero(d.min(axis=1) <= radius))
