@@ -12,7 +12,7 @@ includes the libraries: numba's runtime (≈ 50 MB) is a fixed cost GUDHI and Ri
 ours holds the input as thesis_lib's Filtration (int64 vertex arrays) where GUDHI holds its tree.
 
 * ours: ``thesis_lib.complexes.rips`` builds the Filtration (not timed), then
-  ``thesis_lib.persistence.persistence(f, p=2)`` and reading the intervals of dimensions
+  ``thesis_lib.persistence.persistence(f, coefficients=2)`` and reading the intervals of dimensions
   0 .. max_dim − 1, the ones GUDHI and Ripser report (``ours_s``); ``ours_all_dims_s`` also sorts
   the top dimension's essential classes (listed lazily; GUDHI skips that dimension).
 * GUDHI: ``RipsComplex(...).create_simplex_tree`` (not timed), then
@@ -81,13 +81,13 @@ def worker(tool: str, name: str, repeat: int) -> dict:
         n_simplices = len(f)
 
         def run():
-            b = persistence(f, p=2)
+            b = persistence(f, coefficients=2)
             for d in homology_dims:  # the dimensions GUDHI and Ripser report
                 b.intervals(d)
             return b
 
         def run_all():  # also sort the top dimension's essential classes (GUDHI skips that dimension)
-            b = persistence(f, p=2)
+            b = persistence(f, coefficients=2)
             for d in b.dimensions:
                 b.intervals(d)
             return b

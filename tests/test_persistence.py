@@ -136,7 +136,7 @@ def test_example_filtration_matches_figure_2_11():
 @pytest.mark.parametrize("algorithm", [compute_intervals, persistence])
 @pytest.mark.parametrize("p", [2, 3, 5])
 def test_example_2_40_barcode(algorithm, p):
-    b = algorithm(example_filtration(), p=p)
+    b = algorithm(example_filtration(), coefficients=p)
     # Example 2.41: (a, ∞), (b, ab), (c, da), (e, ce), (bc, ∞), (ed, ced); (d, cd) = (1, 1) has length zero
     assert b.intervals(0).tolist() == [[0, 1], [0, math.inf], [1, 2], [2, 3]]
     assert b.intervals(1).tolist() == [[2, math.inf], [3, 4]]
@@ -180,10 +180,10 @@ points_2d = st.integers(0, 10_000).map(lambda s: np.random.default_rng(s).random
 def test_rips_agrees_with_gudhi(points, p, max_dim):
     f = rips_filtration(points, 0.9, max_dim)
     ref = gudhi_barcode(f, p)
-    fast = persistence(f, p=p)
+    fast = persistence(f, coefficients=p)
     assert fast.difference(ref) is None
     if len(f) <= 400:
-        assert compute_intervals(f, p=p).difference(ref) is None
+        assert compute_intervals(f, coefficients=p).difference(ref) is None
 
 
 @settings(deadline=None, max_examples=12)
@@ -192,8 +192,8 @@ def test_alpha_and_cech_agree_with_gudhi(seed, p, dim):
     pts = np.random.default_rng(seed).random((int(5 + seed % 10), dim))
     for f in (alpha_filtration(pts), cech_filtration(pts)):
         ref = gudhi_barcode(f, p)
-        assert persistence(f, p=p).difference(ref) is None
-        assert compute_intervals(f, p=p).difference(ref) is None
+        assert persistence(f, coefficients=p).difference(ref) is None
+        assert compute_intervals(f, coefficients=p).difference(ref) is None
 
 
 @settings(deadline=None, max_examples=25)
@@ -201,8 +201,8 @@ def test_alpha_and_cech_agree_with_gudhi(seed, p, dim):
 def test_random_general_filtrations_agree(seed, p):
     f = random_filtration(seed)
     ref = gudhi_barcode(f, p)
-    assert persistence(f, p=p).difference(ref) is None
-    assert compute_intervals(f, p=p).difference(ref) is None
+    assert persistence(f, coefficients=p).difference(ref) is None
+    assert compute_intervals(f, coefficients=p).difference(ref) is None
 
 
 def test_larger_rips_with_collisions_agrees_with_gudhi():
@@ -210,7 +210,7 @@ def test_larger_rips_with_collisions_agrees_with_gudhi():
     f = rips_filtration(pts, 0.7, 3)
     for p in (2, 3):
         stats: dict = {}
-        assert persistence(f, p=p, stats=stats).difference(gudhi_barcode(f, p)) is None
+        assert persistence(f, coefficients=p, stats=stats).difference(gudhi_barcode(f, p)) is None
         assert stats[1]["additions"] > 0  # the merge path was exercised
 
 
@@ -221,12 +221,12 @@ def test_torsion_shows_over_z2_not_z3():
     groups = closure(rp2())
     f = Filtration(groups, [np.full(g.shape[0], float(d)) for d, g in enumerate(groups)])
     for p, expected in ((2, 1), (3, 0)):
-        b = persistence(f, p=p)
-        assert b == compute_intervals(f, p=p) == gudhi_barcode(f, p)
+        b = persistence(f, coefficients=p)
+        assert b == compute_intervals(f, coefficients=p) == gudhi_barcode(f, p)
         essential = [int(np.isinf(b.intervals(d)[:, 1]).sum()) for d in (0, 1, 2)]
         assert essential == [1, expected, expected]
         assert (b.simplex_pairs(2)[:, 1] == -1).all()  # the lazily listed top dimension
-    fundamental = persistence(f, p=2).representative(2, 0)
+    fundamental = persistence(f, coefficients=2).representative(2, 0)
     assert len(fundamental) == 10 and {c for _, c in fundamental} == {1}  # RP² is a Z/2-cycle
 
 
@@ -245,7 +245,7 @@ def test_pairs_input_and_vertices_only():
 @given(seed=st.integers(0, 10_000), p=st.sampled_from([2, 3]))
 def test_persistent_betti_is_the_rank_of_the_persistent_group(seed, p):
     f = random_filtration(seed, n=6, n_top=4)
-    b = persistence(f, p=p)
+    b = persistence(f, coefficients=p)
     grid = np.unique(np.concatenate(f.values))
     for dim in range(f.dimension + 1):
         for l in grid:
@@ -277,7 +277,7 @@ def _chain_vector(f: Filtration, dim: int, chain) -> np.ndarray:
 @given(seed=st.integers(0, 10_000), p=st.sampled_from([2, 3]))
 def test_representatives_are_cycles_born_and_dying_on_time(seed, p):
     f = random_filtration(seed, n=7, n_top=6)
-    for b in (persistence(f, p=p), compute_intervals(f, p=p)):
+    for b in (persistence(f, coefficients=p), compute_intervals(f, coefficients=p)):
         for dim in range(f.dimension + 1):
             for i, (birth, death) in enumerate(b.intervals(dim)):
                 chain = b.representative(dim, i)
@@ -324,7 +324,7 @@ def test_bad_input(algo):
         algo([])
     for p in (4, 1, 0, -3, 2.5, True):
         with pytest.raises(ValueError, match="prime"):
-            algo(example_filtration(), p=p)
+            algo(example_filtration(), coefficients=p)
     with pytest.raises(ValueError, match="iterable"):
         algo(42)
     with pytest.raises(ValueError, match="face"):
@@ -341,10 +341,10 @@ def test_unvalidated_filtrations_take_the_fused_path(seed, p):
     f = rips(pts, 0.45, 3)
     assert "_facet_cache" not in f.__dict__
     ref = gudhi_barcode(f, p)
-    assert persistence(f, p=p).difference(ref) is None
+    assert persistence(f, coefficients=p).difference(ref) is None
     g = random_filtration(seed)
     raw = Filtration(g.simplices, g.values, validate=False)
-    assert persistence(raw, p=p).difference(gudhi_barcode(g, p)) is None
+    assert persistence(raw, coefficients=p).difference(gudhi_barcode(g, p)) is None
 
 
 def test_missing_edge_is_reported():
@@ -361,7 +361,7 @@ def test_trace_matrices_of_example_2_41():
     from thesis_lib.persistence import trace_matrices
 
     trace: list = []
-    compute_intervals(example_filtration(), p=3, trace=trace)
+    compute_intervals(example_filtration(), coefficients=3, trace=trace)
     before, after = trace_matrices(trace, p=3, names="abcde")
     header = before[0]
     assert header == ["*", "a", "b", "c", "d", "e", "ab", "cd", "ad", "bc", "de", "ce", "cde"]

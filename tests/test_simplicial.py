@@ -7,7 +7,8 @@ import pytest
 import sympy
 from hypothesis import given, settings, strategies as st
 
-from thesis_lib.simplicial import boundary_matrix, check_coefficients, closure
+from thesis_lib._validate import MAX_EXACT_PRIME, check_coefficients
+from thesis_lib.simplicial import boundary_matrix, closure
 
 
 @settings(deadline=None, max_examples=300)
@@ -21,7 +22,7 @@ def test_prime_check_matches_sympy(n):
 
 
 def test_large_primes_are_checked_fast():
-    assert check_coefficients(2**61 - 1) == 2**61 - 1
+    assert check_coefficients(2**61 - 1, max_prime=MAX_EXACT_PRIME) == 2**61 - 1
     with pytest.raises(ValueError):
         check_coefficients((2**31 - 1) * (2**31 + 11))
 

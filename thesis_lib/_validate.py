@@ -1,30 +1,227 @@
-"""Validation at the public edge: every public function checks its input here, in one call."""
+"""Validation at the public edge: every public function checks its input here, in one call.
+
+Each checker returns the value in the form the kernels expect (a float64 array, an int, ...) or
+raises ``ValueError`` (a value that cannot be used) or :class:`InvalidTypeError` (a value of the wrong
+kind; both a ``ValueError`` and a ``TypeError``), with a message that names the argument and the
+problem.  Internal kernels trust what comes out.
+
+The names follow the project's vocabulary (DESIGN.md, ``book/api.md``): ``points``,
+``max_radius`` (ε, diameter ≤ 2ε), ``max_dim``, ``weights`` (the points' squared radii),
+``coefficients`` (0 = Z, a prime p = Z/p), ``seed``.
+"""
 
 from __future__ import annotations
 
+import math
+import numbers
+import operator
+import warnings
+
 import numpy as np
 
-__all__ = ["as_points"]
+__all__ = [
+    "InvalidTypeError",
+    "as_points",
+    "check_radius",
+    "check_max_dim",
+    "check_weights",
+    "check_int",
+    "check_seed",
+    "check_size",
+    "check_coefficients",
+    "resolve_coefficients",
+    "vertex_label",
+    "is_prime",
+    "MAX_PRIME",
+    "MAX_EXACT_PRIME",
+    "MAX_SIMPLICES",
+]
+
+#: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
+MAX_PRIME = 2**31 - 1
+
+#: the largest modulus whose primality the deterministic Miller–Rabin below decides exactly; the
+#: exact (Python-integer) kernels of homology over Z/p accept primes up to here
+MAX_EXACT_PRIME = 3_317_044_064_679_887_385_961_980
+
+#: default cap on the number of simplices (or samples) a construction may build before it refuses;
+#: about 16 bytes a simplex-vertex, 10^9 simplices is already tens of GB
+MAX_SIMPLICES = 10**9
 
 
-def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True) -> np.ndarray:
-    """Return ``points`` as a finite ``(n, d)`` float64 array, or raise ``ValueError`` naming the problem.
+class InvalidTypeError(ValueError, TypeError):
+    """An argument of the wrong kind (a string for a number, a float for a count, ...).
+
+    It is both a ``TypeError`` and a ``ValueError`` (as scikit-learn's ``InvalidParameterError``),
+    so ``except ValueError`` catches every input error of the library.
+    """
+
+
+# ---------------------------------------------------------------------------------------- numbers
+def check_int(value, name: str, *, minimum: int | None = None, maximum: int | None = None) -> int:
+    """``value`` as a Python int (bools and non-integral numbers refused), within the bounds."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise InvalidTypeError(f"{name} must be an integer, got {value!r}")
+    v = int(value)
+    if minimum is not None and v < minimum:
+        raise ValueError(f"{name} must be >= {minimum}, got {v}")
+    if maximum is not None and v > maximum:
+        raise ValueError(f"{name} must be <= {maximum}, got {v}")
+    return v
+
+
+def check_seed(seed) -> int:
+    """A random seed: a non-negative integer (every random draw of the library takes one)."""
+    return check_int(seed, "seed", minimum=0)
+
+
+def check_size(count: int, what: str, *, limit: int = MAX_SIMPLICES) -> int:
+    """Refuse up front a construction that would build ``count`` objects, more than ``limit``."""
+    if count > limit:
+        raise ValueError(f"this would build {count:,} {what}, more than the limit of {limit:,}; "
+                         "reduce the input or the parameters")
+    return int(count)
+
+
+def check_radius(max_radius, name: str = "max_radius") -> float:
+    """A scale parameter ε: a non-negative number (``inf`` allowed: no bound).
+
+    Thesis: Definition 2.11 (the Rips parameter ε; diameter ≤ 2ε).
+    """
+    if isinstance(max_radius, bool) or not isinstance(max_radius, numbers.Real):
+        raise InvalidTypeError(f"{name} must be a number, got {max_radius!r}")
+    r = float(max_radius)
+    if math.isnan(r):
+        raise ValueError(f"{name} is NaN")
+    if r < 0:
+        raise ValueError(f"{name} must be non-negative, got {r}")
+    return r
+
+
+def check_max_dim(max_dim, name: str = "max_dim") -> int:
+    """A largest simplex dimension: an integer >= 0."""
+    return check_int(max_dim, name, minimum=0)
+
+
+# ---------------------------------------------------------------------------------------- points
+def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> np.ndarray:
+    """Return ``points`` as a finite ``(n, d)`` float64 array, or raise naming the problem.
 
     Thesis: §2.1.2 (a point set X in R^d).
     """
-    arr = np.asarray(points, dtype=np.float64)
+    try:
+        arr = np.asarray(points, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"{name} must be an (n, d) array of numbers: {err}") from None
     if arr.ndim != 2:
-        raise ValueError(f"points must be an (n, d) array, got shape {arr.shape}")
+        raise ValueError(f"{name} must be an (n, d) array, got shape {arr.shape}")
     if arr.shape[0] < min_points:
-        raise ValueError(f"need at least {min_points} points, got {arr.shape[0]}")
+        raise ValueError(f"need at least {min_points} {name}, got {arr.shape[0]}")
     if arr.shape[1] == 0:
-        raise ValueError("points must have at least one coordinate")
+        raise ValueError(f"{name} must have at least one coordinate")
     if not np.all(np.isfinite(arr)):
         row = int(np.argmax(~np.all(np.isfinite(arr), axis=1)))
-        raise ValueError(f"point {row} has a NaN or infinite coordinate")
+        raise ValueError(f"{name}: row {row} has a NaN or infinite coordinate")
     if not allow_duplicates and arr.shape[0] > 1:
         uniq, inverse, counts = np.unique(arr, axis=0, return_inverse=True, return_counts=True)
         if uniq.shape[0] != arr.shape[0]:
             dup = np.flatnonzero(counts[inverse.ravel()] > 1)[:2]
-            raise ValueError(f"duplicate points: rows {int(dup[0])} and {int(dup[1])} are equal")
+            raise ValueError(f"duplicate {name}: rows {int(dup[0])} and {int(dup[1])} are equal")
     return arr
+
+
+def check_weights(weights, n: int) -> np.ndarray:
+    """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
+    try:
+        w = np.asarray(weights, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"weights must be an array of numbers: {err}") from None
+    if w.ndim != 1 or w.shape[0] != n:
+        raise ValueError(f"weights must be a 1-D array with one weight per point ({n}), got shape {w.shape}")
+    if not np.all(np.isfinite(w)):
+        raise ValueError(f"weight {int(np.argmax(~np.isfinite(w)))} is NaN or infinite")
+    if np.any(w < 0):
+        raise ValueError(f"weights are squared radii and must be >= 0; weight {int(np.argmax(w < 0))} is {w[w < 0][0]}")
+    return w
+
+
+# ---------------------------------------------------------------------------------------- simplices
+def vertex_label(v) -> int:
+    """A vertex label as a Python int: integers (and integral floats) only, never truncated."""
+    try:
+        return operator.index(v)
+    except TypeError:
+        pass
+    if isinstance(v, numbers.Real) and not isinstance(v, bool) and math.isfinite(v) and float(v).is_integer():
+        return int(v)
+    raise ValueError(f"vertex labels must be integers, got {v!r}")
+
+
+# ---------------------------------------------------------------------------------------- coefficients
+def is_prime(n: int) -> bool:
+    """Deterministic Miller–Rabin: exact for n below :data:`MAX_EXACT_PRIME` (3.3·10²⁴)."""
+    if n >= MAX_EXACT_PRIME:
+        raise ValueError(f"cannot decide exactly whether {n} is prime (above {MAX_EXACT_PRIME})")
+    if n < 2:
+        return False
+    small = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41)
+    for q in small:
+        if n % q == 0:
+            return n == q
+    d, r = n - 1, 0
+    while d % 2 == 0:
+        d, r = d // 2, r + 1
+    for a in small:
+        x = pow(a, d, n)
+        if x in (1, n - 1):
+            continue
+        for _ in range(r - 1):
+            x = x * x % n
+            if x == n - 1:
+                break
+        else:
+            return False
+    return True
+
+
+def check_coefficients(coefficients, *, field: bool = False, max_prime: int = MAX_PRIME) -> int:
+    """``0`` for the integers Z or a prime p < 2³¹ for the field Z/p (DESIGN.md conventions).
+
+    Thesis: §2.2.1 (homology with coefficients in Z and Z_p).
+
+    ``field=True`` refuses Z (persistence needs a field).  Primes are checked exactly; primes above
+    ``max_prime`` are refused: :data:`MAX_PRIME` for the kernels that multiply two residues in
+    64 bits, :data:`MAX_EXACT_PRIME` for those on Python integers.
+    """
+    if isinstance(coefficients, bool) or not isinstance(coefficients, numbers.Integral):
+        raise InvalidTypeError(f"coefficients must be 0 (the integers) or a prime, got {coefficients!r}")
+    c = int(coefficients)
+    if c == 0:
+        if field:
+            raise ValueError("this computation needs a field: coefficients must be a prime, not 0 (the integers)")
+        return 0
+    if c < 0:
+        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {c}")
+    if c > max_prime:
+        raise ValueError(f"coefficients = {c} is too large: this computation needs a prime p <= {max_prime}")
+    if not is_prime(c):
+        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {c}")
+    return c
+
+
+def resolve_coefficients(coefficients, p, *, default: int, field: bool = False, max_prime: int = MAX_PRIME,
+                         stacklevel: int = 3) -> int:
+    """The ``coefficients`` argument, honouring the deprecated alias ``p=`` with a ``FutureWarning``.
+
+    Call as ``resolve_coefficients(coefficients, p, default=2)`` from a public function whose
+    signature is ``(..., coefficients=None, *, p=None)``.
+    """
+    if p is not None:
+        if coefficients is not None:
+            raise InvalidTypeError("give coefficients= only (p= is its deprecated alias), not both")
+        warnings.warn("p= is deprecated; use coefficients= (0 = Z, a prime p = Z/p)", FutureWarning,
+                      stacklevel=stacklevel)
+        coefficients = p
+    if coefficients is None:
+        coefficients = default
+    return check_coefficients(coefficients, field=field, max_prime=max_prime)

@@ -18,7 +18,9 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from .simplicial import boundary_matrix, check_coefficients, closure
+from ._validate import MAX_EXACT_PRIME, check_coefficients
+from .filtration import as_complex
+from .simplicial import boundary_matrix
 from .smith import reduce_matrix, smith_normal_form
 
 __all__ = [
@@ -32,32 +34,8 @@ __all__ = [
 
 
 def _complex(simplices) -> list[np.ndarray]:
-    """Closure of the input; vertex tuples are grouped by length with numpy (fast path)."""
-    if isinstance(simplices, (str, bytes)):
-        raise ValueError("simplices must be an iterable of vertex tuples")
-    if isinstance(simplices, list) and simplices and all(isinstance(a, np.ndarray) for a in simplices):
-        return closure(simplices)  # per-dimension arrays
-    if isinstance(simplices, np.ndarray) and simplices.ndim == 2 and simplices.dtype.kind in "iu":
-        groups = {simplices.shape[1]: simplices}
-    else:
-        items = list(simplices)
-        try:
-            lens = np.fromiter(map(len, items), dtype=np.int64, count=len(items))
-        except TypeError:
-            return closure(items)  # raises the appropriate error
-        if lens.size == 0 or lens.min() == 0:
-            return closure(items)
-        groups = {}
-        for width in np.unique(lens):
-            arr = np.array([items[i] for i in np.flatnonzero(lens == width)])
-            if arr.ndim != 2 or arr.dtype.kind not in "iu":
-                return closure(items)  # unusual entries: the general path validates them
-            groups[int(width)] = arr
-    top = max(groups) - 1
-    cx = closure([groups.get(d + 1, np.empty((0, d + 1), np.int64)) for d in range(top + 1)])
-    if cx[0].shape[0] == 0:
-        raise ValueError("the complex is empty")
-    return cx
+    """The closed complex as one sorted vertex array per dimension (Definition 2.4)."""
+    return as_complex(simplices).simplices
 
 
 def boundary_matrices(complex_arrays: list[np.ndarray], coefficients: int = 0) -> list[sp.csc_matrix]:
@@ -69,7 +47,7 @@ def boundary_matrices(complex_arrays: list[np.ndarray], coefficients: int = 0) -
     :func:`thesis_lib.simplicial.closure`).  Entry ``k`` of the result is ∂_k : C_k → C_{k−1} as an
     ``(m_{k−1}, m_k)`` int64 CSC matrix (entries reduced mod p for a prime); ∂_0 is ``(0, m_0)``.
     """
-    p = check_coefficients(coefficients)
+    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     if not complex_arrays:
         raise ValueError("the complex is empty")
     out = [sp.csc_matrix((0, complex_arrays[0].shape[0]), dtype=np.int64)]
@@ -120,8 +98,9 @@ def homology(simplices: Iterable[Sequence[int]], coefficients: int = 0) -> list[
 
     Parameters
     ----------
-    simplices : iterable of simplices (vertex tuples of any dimensions, or a list of per-dimension
-        arrays); all their faces are added.
+    simplices : a complex: a ``Filtration`` (its values are ignored), an iterable of simplices
+        (vertex tuples of any dimensions, an ``(m, k + 1)`` integer array, or a list of
+        per-dimension arrays); all their faces are added.
     coefficients : 0 for the integers Z, or a prime p for the field Z/p.
 
     Returns
@@ -143,7 +122,7 @@ def homology(simplices: Iterable[Sequence[int]], coefficients: int = 0) -> list[
     >>> homology(rp2())
     [(1, []), (0, [2]), (0, [])]
     """
-    p = check_coefficients(coefficients)
+    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     return _homology_of_arrays(_complex(simplices), p)
 
 

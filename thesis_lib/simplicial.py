@@ -12,6 +12,8 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
+from ._validate import check_coefficients, vertex_label
+
 __all__ = [
     "as_simplex_array",
     "group_by_dimension",
@@ -20,7 +22,6 @@ __all__ = [
     "row_keys",
     "find_rows",
     "boundary_matrix",
-    "check_coefficients",
 ]
 
 
@@ -64,7 +65,7 @@ def group_by_dimension(simplices: Iterable[Sequence[int]]) -> list[np.ndarray]:
     """
     by_dim: dict[int, list[tuple[int, ...]]] = {}
     for s in simplices:
-        t = tuple(int(v) for v in s)
+        t = tuple(vertex_label(v) for v in s)
         if not t:
             raise ValueError("the empty simplex is not allowed")
         by_dim.setdefault(len(t) - 1, []).append(t)
@@ -153,7 +154,7 @@ def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.nd
     ``simplices`` is either an iterable of vertex tuples of any dimensions or a list of per-dimension
     arrays (as produced by :func:`group_by_dimension`).
     """
-    if isinstance(simplices, list) and all(isinstance(a, np.ndarray) for a in simplices):
+    if isinstance(simplices, list) and simplices and all(isinstance(a, np.ndarray) and a.ndim == 2 for a in simplices):
         groups = [as_simplex_array(a, d) for d, a in enumerate(simplices)]
     else:
         groups = group_by_dimension(simplices)
@@ -167,45 +168,6 @@ def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.nd
         if d > 0:
             carry = facets(out[d]).reshape(-1, d)
     return out
-
-
-def _is_prime(n: int) -> bool:
-    """Deterministic Miller–Rabin for 64-bit integers (these bases are exact below 3.3·10²⁴)."""
-    if n < 2:
-        return False
-    small = (2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41)
-    for q in small:
-        if n % q == 0:
-            return n == q
-    d, r = n - 1, 0
-    while d % 2 == 0:
-        d, r = d // 2, r + 1
-    for a in small:
-        x = pow(a, d, n)
-        if x in (1, n - 1):
-            continue
-        for _ in range(r - 1):
-            x = x * x % n
-            if x == n - 1:
-                break
-        else:
-            return False
-    return True
-
-
-def check_coefficients(coefficients: int) -> int:
-    """Validate a coefficient choice: ``0`` for Z or a prime p for Z/p (DESIGN.md conventions).
-
-    Thesis: §2.2.1 (homology with coefficients in Z and Z_p).
-    """
-    if isinstance(coefficients, bool) or not isinstance(coefficients, (int, np.integer)):
-        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {coefficients!r}")
-    c = int(coefficients)
-    if c == 0:
-        return 0
-    if not _is_prime(c):
-        raise ValueError(f"coefficients must be 0 (the integers) or a prime, got {c}")
-    return c
 
 
 def boundary_matrix(lower: np.ndarray, upper: np.ndarray, coefficients: int = 0) -> sp.csc_matrix:

@@ -34,7 +34,7 @@ import numba
 import numpy as np
 import scipy.sparse as sp
 
-from .simplicial import check_coefficients
+from ._validate import MAX_EXACT_PRIME, check_coefficients
 
 __all__ = ["smith_normal_form", "rank_mod_p", "reduce_matrix", "Reduction", "dense_smith_diagonal"]
 
@@ -555,7 +555,7 @@ def reduce_matrix(
     -------
     Reduction
     """
-    p = check_coefficients(coefficients)
+    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     checked = _as_integer_csc(matrix)
     if isinstance(checked, tuple):  # entries beyond int64: exact engine throughout
         n_rows, cols = checked
@@ -603,6 +603,6 @@ def rank_mod_p(matrix, p: int) -> int:
 
     Thesis: §2.2.1 (working over Z_p, where every nonzero pivot is invertible).
     """
-    if check_coefficients(p) == 0:
+    if check_coefficients(p, max_prime=MAX_EXACT_PRIME) == 0:
         raise ValueError("rank_mod_p needs a prime p, got 0")
     return reduce_matrix(matrix, p).rank

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..complexes.filtration import Filtration
+from ..filtration import Filtration
 from ..lab.paths import shared_dir
 
 __all__ = [

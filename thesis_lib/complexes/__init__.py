@@ -1,8 +1,8 @@
 """Simplicial complexes built from point clouds (thesis §2.1)."""
 
-from .filtration import Filtration
+from ..filtration import Filtration, as_complex
 
-__all__ = ["Filtration"]
+__all__ = ["Filtration", "as_complex"]
 from .landmarks import covering_radius, maxmin_landmarks, random_landmarks
 
 __all__ += ["maxmin_landmarks", "random_landmarks", "covering_radius"]

@@ -19,7 +19,7 @@ import numpy as np
 
 from ..simplicial import facets, find_rows, row_keys
 from .delaunay import _lower_hull, _prepare
-from .filtration import Filtration
+from ..filtration import Filtration
 
 __all__ = ["alpha", "orthoballs"]
 

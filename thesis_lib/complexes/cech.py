@@ -5,11 +5,10 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from .._validate import as_points
+from .._validate import as_points, check_max_dim, check_radius
 from ..simplicial import facets, find_rows
-from ._checks import check_max_dim, check_radius
 from ._flag import edges_within, expand_level, upper_csr
-from .filtration import Filtration
+from ..filtration import Filtration
 from .miniball import meb_radius_small
 
 __all__ = ["cech"]

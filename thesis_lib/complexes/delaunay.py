@@ -13,9 +13,8 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError
 
-from .._validate import as_points
+from .._validate import as_points, check_weights
 from ..simplicial import closure
-from ._checks import check_weights
 
 __all__ = ["delaunay", "regular_triangulation"]
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .filtration import Filtration
+from ..filtration import Filtration
 from .landmarks import maxmin_landmarks, random_landmarks
 from .rips import rips
 from .witness import lazy_witness, witness

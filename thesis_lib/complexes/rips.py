@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_points
-from ._checks import check_max_dim, check_radius
+from .._validate import as_points, check_max_dim, check_radius
 from ._flag import edges_within, flag_levels, matrix_edges
-from .filtration import Filtration
+from ..filtration import Filtration
 
 __all__ = ["rips"]
 

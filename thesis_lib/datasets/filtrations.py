@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from ..complexes.filtration import Filtration
+from ..filtration import Filtration
 
 __all__ = ["example_filtration", "EXAMPLE_NAMES"]
 

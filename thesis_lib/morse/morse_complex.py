@@ -7,7 +7,7 @@ from collections.abc import Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ..simplicial import check_coefficients
+from .._validate import MAX_EXACT_PRIME, check_coefficients
 from ..smith import rank_mod_p, smith_normal_form
 from ._cells import CellComplex, Simplex, as_complex, partner_array
 from ._kernels import morse_columns
@@ -69,7 +69,7 @@ def morse_boundary(simplices, pairs: Pairs, coefficients: int = 0) -> tuple[list
     Orientations are those of Definition 2.18 (vertices ascending).  Integer entries are exact in
     int64 (sums of ±1 over gradient paths).  Raises ValueError for a cyclic field.
     """
-    p = check_coefficients(coefficients)
+    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     cx = as_complex(simplices)
     partner = partner_array(cx, pairs)
     crit, mats = _morse_boundary_ids(cx, partner, p)
@@ -84,7 +84,7 @@ def chain_complex_homology(boundaries: Sequence, coefficients: int = 0) -> list[
     ``boundaries[0]`` gives the number of 0-chains by its column count.  Returns, per dimension,
     ``(betti, torsion)`` like :func:`thesis_lib.homology.homology`.
     """
-    p = check_coefficients(coefficients)
+    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     mats = [sp.csc_matrix(b) if not sp.issparse(b) else b for b in boundaries]
     if not mats:
         raise ValueError("the chain complex is empty")

@@ -14,22 +14,14 @@ import numba
 import numpy as np
 import scipy.sparse as sp
 
-from ..complexes.filtration import Filtration
-from ..simplicial import check_coefficients, find_rows
+from ..filtration import Filtration, as_complex
+from .._validate import check_coefficients, resolve_coefficients
+from ..simplicial import find_rows
 from ._cells import CellComplex, partner_array
 from .matching import _greedy_partner
 from .morse_complex import _morse_boundary_ids
 
 __all__ = ["MorseReduction", "lower_star_filtration", "filtration_matching", "morse_reduce", "reduced_persistence", "chain_persistence"]
-
-
-def _as_filtration(filtration) -> Filtration:
-    if isinstance(filtration, Filtration):
-        return filtration
-    try:
-        return Filtration.from_pairs(filtration)
-    except TypeError:
-        raise ValueError("expected a Filtration or an iterable of (simplex, value) pairs") from None
 
 
 def _cells_and_values(filt: Filtration) -> tuple[CellComplex, np.ndarray]:
@@ -69,7 +61,7 @@ def filtration_matching(filtration) -> list[tuple[tuple[int, ...], tuple[int, ..
     value is σ is paired with σ.  Along a V-path values never increase, and inside a level the
     coreduction order strictly decreases, so the field is acyclic.
     """
-    filt = _as_filtration(filtration)
+    filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
     partner = _greedy_partner(cx, "coreduction", vals=vals)
     low = np.flatnonzero(partner > np.arange(cx.n))
@@ -107,7 +99,7 @@ class MorseReduction:
         return self.n_critical / self.n_cells
 
 
-def morse_reduce(filtration, p: int = 2, pairs=None) -> MorseReduction:
+def morse_reduce(filtration, coefficients: int | None = None, pairs=None, *, p: int | None = None) -> MorseReduction:
     """Reduce a filtration to its filtered Morse complex (critical simplices + Morse boundary).
 
     Thesis: Theorems 4.41–4.42 (Morse complex on critical cells, boundary by gradient paths).
@@ -115,13 +107,15 @@ def morse_reduce(filtration, p: int = 2, pairs=None) -> MorseReduction:
     Parameters
     ----------
     filtration : a :class:`~thesis_lib.complexes.Filtration` (or ``(simplex, value)`` pairs).
-    p : 0 for integer boundaries, a prime for Z/p.
+    coefficients : a prime p for Z/p (default 2); 0 keeps integer boundaries (then take
+        :func:`reduced_persistence` with a prime).
     pairs : optional acyclic matching to use instead of :func:`filtration_matching`, e.g. the
         ``"lower-star"`` matching of a lower-star filtration; every pair must have equal values
         (ValueError naming the first pair that does not).
+    p : deprecated alias of ``coefficients``.
     """
-    p = check_coefficients(p)
-    filt = _as_filtration(filtration)
+    p = resolve_coefficients(coefficients, p, default=2)
+    filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
     if pairs is None:
         partner = _greedy_partner(cx, "coreduction", vals=vals)

@@ -10,7 +10,8 @@ import math
 
 import numpy as np
 
-from ._input import as_filtration, check_prime
+from .._validate import resolve_coefficients
+from ..filtration import as_complex
 from .barcode import Barcode
 
 __all__ = ["compute_intervals", "trace_matrices"]
@@ -21,7 +22,8 @@ def _inverse(q: int, p: int) -> int:
     return pow(q, p - 2, p)
 
 
-def compute_intervals(filtration, p: int = 2, trace: list | None = None) -> Barcode:
+def compute_intervals(filtration, coefficients: int | None = None, *, trace: list | None = None,
+                      p: int | None = None) -> Barcode:
     """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
 
     Thesis: Algorithms 1–2, §2.3.5 (after Zomorodian and Carlsson), O(m³) in the number of simplices m.
@@ -30,21 +32,22 @@ def compute_intervals(filtration, p: int = 2, trace: list | None = None) -> Barc
     ----------
     filtration : a :class:`~thesis_lib.complexes.Filtration` or any iterable of ``(simplex, value)``
         pairs in filtration order (non-decreasing values, faces before cofaces).
-    p : a prime; the coefficients are the field Z/p.
+    coefficients : a prime p, the field Z/p (default 2).
     trace : optional list; if given, one dict per simplex σ^j is appended recording the steps of
         Reduce(σ^j): ``j``, ``simplex``, ``dim``, ``value``, ``boundary`` (∂σ^j as ``{i: coeff}``),
         ``removed`` (the unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per
         subtraction ``d = d − factor·T[i]``), ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
         Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; each entry also holds
         ``order``, the list of all simplices in that order, on the first entry.
+    p : deprecated alias of ``coefficients``.
 
     Returns
     -------
     Barcode
         Intervals ``(deg σ^i, deg σ^j)`` and ``(deg σ^j, ∞)``; zero-length ones are left out.
     """
-    K = as_filtration(filtration)
-    p = check_prime(p)
+    K = as_complex(filtration)
+    p = resolve_coefficients(coefficients, p, default=2, field=True)
 
     # "First, sort the simplices by dimension and then by degree.  The ordering between simplices
     #  with the same dimension and degree will be irrelevant."  We keep the filtration's own order

@@ -23,7 +23,8 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from ._input import as_filtration, check_prime
+from .._validate import resolve_coefficients
+from ..filtration import as_complex
 from .barcode import Barcode
 
 __all__ = ["persistence"]
@@ -481,7 +482,8 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
 
 
 # ---------------------------------------------------------------------------- driver
-def persistence(filtration, p: int = 2, *, stats: dict | None = None) -> Barcode:
+def persistence(filtration, coefficients: int | None = None, *, stats: dict | None = None,
+                p: int | None = None) -> Barcode:
     """Barcode of a filtration over Z/p by the fast engine (same result as :func:`compute_intervals`).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
@@ -489,8 +491,9 @@ def persistence(filtration, p: int = 2, *, stats: dict | None = None) -> Barcode
     Parameters
     ----------
     filtration : a :class:`~thesis_lib.complexes.Filtration` or an iterable of ``(simplex, value)`` pairs.
-    p : a prime; the coefficients are the field Z/p.
+    coefficients : a prime p, the field Z/p (default 2).
     stats : optional dict, filled with counts (columns reduced, column additions) per dimension.
+    p : deprecated alias of ``coefficients``.
 
     Notes
     -----
@@ -498,8 +501,8 @@ def persistence(filtration, p: int = 2, *, stats: dict | None = None) -> Barcode
     they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
     """
-    K = as_filtration(filtration)
-    p = check_prime(p)
+    K = as_complex(filtration)
+    p = resolve_coefficients(coefficients, p, default=2, field=True)
     D = K.dimension
     # the order within each dimension (value, then index); the top dimension is never a column
     orders = [np.argsort(K.values[d], kind="stable") for d in range(D)]
