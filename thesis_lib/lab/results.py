@@ -14,7 +14,7 @@ from pathlib import Path
 
 from .paths import repo_root
 
-__all__ = ["Recorder", "load", "figure", "results_dir", "RESULTS_FILE", "TIMINGS_FILE"]
+__all__ = ["Recorder", "load", "figure", "results_dir", "round_sig", "RESULTS_FILE", "TIMINGS_FILE", "RESULT_DIGITS"]
 
 RESULTS_FILE = "results.json"
 #: wall-clock times vary from run to run: kept apart from the results, and not committed
@@ -22,6 +22,23 @@ TIMINGS_FILE = "timings.json"
 #: when set, a Recorder's stored default run is written under this folder instead (the test suite
 #: sets it, so that re-executing the notebooks never rewrites committed results that others read)
 DEFAULT_RUN_ENV = "THESIS_LAB_DEFAULT_RUN_DIR"
+
+
+#: significant digits kept for every real number written to results.json: enough for any claim,
+#: few enough that a re-run on another CPU, BLAS or thread count writes the same bytes
+RESULT_DIGITS = 10
+
+
+def round_sig(x: float, digits: int) -> float:
+    """``x`` rounded to ``digits`` significant digits (0, NaN and ±inf unchanged).
+
+    The book's rule (CONVENTIONS.md): counts exact; errors, tolerances and residuals to 2
+    significant digits; other measured reals to the digits they are good for.
+    """
+    x = float(x)
+    if x == 0 or not math.isfinite(x):
+        return x
+    return round(x, digits - 1 - math.floor(math.log10(abs(x))))
 
 
 def results_dir(name: str) -> Path:
@@ -35,7 +52,7 @@ def _as_number(key: str, value) -> float | int:
     if isinstance(value, numbers.Integral):
         return int(value)
     if isinstance(value, numbers.Real):
-        return float(value)
+        return round_sig(float(value), RESULT_DIGITS)
     raise ValueError(f"result {key!r} must be a number, got {type(value).__name__}: {value!r}")
 
 
