@@ -90,8 +90,9 @@ def experiment_parameters(name: str) -> dict[str, object]:
             value = ast.literal_eval(node.value)
         except ValueError:
             raise ParameterError(f"{name}: parameter {node.targets[0].id} is not a plain literal") from None
-        if not isinstance(value, (bool, int, float, str)):
-            raise ParameterError(f"{name}: parameter {node.targets[0].id} must be an int, float, str or bool")
+        if not _is_scalar(value) and not _is_scalar_list(value):
+            raise ParameterError(f"{name}: parameter {node.targets[0].id} must be an int, float, str or bool, "
+                                 "or a non-empty list of one of those")
         params[node.targets[0].id] = value
     return params
 
@@ -100,7 +101,38 @@ _TRUE = {"true", "yes", "1", "on"}
 _FALSE = {"false", "no", "0", "off"}
 
 
+def _is_scalar(value: object) -> bool:
+    return isinstance(value, (bool, int, float, str))
+
+
+def _is_scalar_list(value: object) -> bool:
+    """A non-empty list whose items share one scalar kind (ints may stand among floats)."""
+    if not isinstance(value, list) or not value or not all(_is_scalar(v) for v in value):
+        return False
+    kinds = {type(v) for v in value}
+    return len(kinds) == 1 or kinds == {int, float}
+
+
+def _coerce_list(key: str, value: object, default: list) -> list:
+    """A list parameter: a list, a JSON list (``[60, 100]``) or comma-separated text (``60,100``)."""
+    if isinstance(value, str):
+        text = value.strip()
+        if text.startswith("["):
+            try:
+                value = json.loads(text)
+            except json.JSONDecodeError:
+                raise ParameterError(f"parameter {key!r} expects a list (like {default!r}), got {value!r}") from None
+        else:
+            value = [v for v in text.split(",")] if text else []
+    if not isinstance(value, list) or not value:
+        raise ParameterError(f"parameter {key!r} expects a non-empty list (like {default!r}), got {value!r}")
+    item_default = default[0] if not any(isinstance(v, float) for v in default) else 0.0
+    return [_coerce(key, v, item_default) for v in value]
+
+
 def _coerce(key: str, value: object, default: object) -> object:
+    if isinstance(default, list):
+        return _coerce_list(key, value, default)
     kind = type(default).__name__
     if isinstance(value, str) and not isinstance(default, str):
         text = value.strip()
