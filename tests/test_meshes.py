@@ -191,7 +191,7 @@ def test_bad_input():
         freudenthal((1, 4))
     with pytest.raises(ValueError, match="periodic"):
         freudenthal((3, 3), periodic=(True,))
-    with pytest.raises(ValueError, match="positive integer"):
+    with pytest.raises(ValueError, match="n must be >= 1"):
         sample_torus(0)
     with pytest.raises(ValueError, match="0 < r < R"):
         sample_torus(10, R=1, r=2)
@@ -205,6 +205,47 @@ def test_bad_input():
         cross_stars(lambda a: a, np.zeros((2, 2)), 0.0)
     with pytest.raises(ValueError, match="interval"):
         sample_catenoid(10, (1, -1))
+
+
+def test_hangs_are_refused_up_front():
+    # freudenthal((2,) * 12) would build 12! = 479,001,600 simplices of 13 vertices
+    with pytest.raises(ValueError, match=r"479,001,600 simplices"):
+        freudenthal((2,) * 12)
+    # 10^9 samples: refused with the size, before anything is drawn
+    for call in (lambda: sample_torus(10**9), lambda: sample_sphere(10**9), lambda: sample_catenoid(10**9)):
+        with pytest.raises(ValueError, match=r"1,000,000,000 points"):
+            call()
+    with pytest.raises(ValueError, match="this would build"):
+        hypersphere_freudenthal(1e-300)
+    with pytest.raises(ValueError, match="this would build"):
+        torus_grid(10**6)
+
+
+def test_raw_errors_become_clear_errors():
+    from thesis_lib.meshes import crust, extract_manifold, orient_outward
+
+    x = np.eye(3)
+    # out-of-range and negative indices were IndexError (or silently wrapped)
+    with pytest.raises(ValueError, match="vertex index outside"):
+        orient_outward(x, [[0, 1, 5]])
+    with pytest.raises(ValueError, match="vertex index outside"):
+        orient_outward(x, [[0, 1, -1]])
+    with pytest.raises(ValueError, match="3 vertices per row"):
+        orient_outward(x, [[0, 1]])
+    with pytest.raises(ValueError, match="centre"):
+        orient_outward(x, [[0, 1, 2]], centre=[0.0, 1.0])
+    # coplanar points: QhullError before
+    flat = np.column_stack([np.random.default_rng(0).random((20, 2)), np.zeros(20)])
+    with pytest.raises(ValueError, match="hyperplane"):
+        convex_hull_surface(flat)
+    with pytest.raises(ValueError, match="lie in a plane"):
+        crust(flat)
+    with pytest.raises(ValueError, match="R³"):
+        crust(np.random.default_rng(0).random((20, 2)))
+    with pytest.raises(ValueError, match="theta"):
+        crust(np.random.default_rng(0).random((20, 3)), theta=2.0)
+    with pytest.raises(ValueError, match="vertex index outside"):
+        extract_manifold(np.random.default_rng(0).random((5, 3)), [[0, 1, 9]])
 
 
 def test_plotting_bad_input():

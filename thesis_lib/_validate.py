@@ -35,6 +35,9 @@ __all__ = [
     "MAX_PRIME",
     "MAX_EXACT_PRIME",
     "MAX_SIMPLICES",
+    "check_real",
+    "check_indices",
+    "check_simplices",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -225,3 +228,80 @@ def resolve_coefficients(coefficients, p, *, default: int, field: bool = False, 
     if coefficients is None:
         coefficients = default
     return check_coefficients(coefficients, field=field, max_prime=max_prime)
+
+
+# ---------------------------------------------------------------------------------------- geometry
+# (numbers, index arrays and simplex arrays for the complexes, curvature and meshes)
+def check_real(value, name: str, *, minimum: float | None = None, positive: bool = False,
+               finite: bool = True) -> float:
+    """A real number as a float: not a bool or a string, not NaN, finite unless ``finite=False``,
+    ``> 0`` with ``positive``, ``>= minimum`` when given."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InvalidTypeError(f"{name} must be a number, got {value!r}")
+    x = float(value)
+    if math.isnan(x):
+        raise ValueError(f"{name} is NaN")
+    if finite and math.isinf(x):
+        raise ValueError(f"{name} must be finite, got {x}")
+    if positive and not x > 0:
+        raise ValueError(f"{name} must be positive, got {x}")
+    if minimum is not None and x < minimum:
+        raise ValueError(f"{name} must be >= {minimum}, got {x}")
+    return x
+
+
+def check_indices(indices, n: int, name: str, *, unique: bool = False, allow_empty: bool = False) -> np.ndarray:
+    """A 1-D array of integer indices into ``n`` items (0..n-1; negative indices are refused)."""
+    arr = np.asarray(indices)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array of indices, got shape {arr.shape}")
+    if arr.size == 0:
+        if allow_empty:
+            return np.empty(0, dtype=np.int64)
+        raise ValueError(f"{name} is empty")
+    if arr.dtype == bool or not np.issubdtype(arr.dtype, np.integer):
+        raise InvalidTypeError(f"{name} must be integer indices, got dtype {arr.dtype}")
+    arr = arr.astype(np.int64)
+    bad = (arr < 0) | (arr >= n)
+    if bad.any():
+        raise ValueError(f"{name} must be indices in 0..{n - 1}; entry {int(np.argmax(bad))} is {int(arr[np.argmax(bad)])}")
+    if unique and np.unique(arr).size != arr.size:
+        raise ValueError(f"{name} repeat an index")
+    return arr
+
+
+def check_simplices(simplices, n_vertices: int | None = None, name: str = "simplices", *,
+                    width: int | None = None, allow_empty: bool = False) -> np.ndarray:
+    """An ``(m, k)`` int64 array of vertex indices (each row one simplex, in the given order).
+
+    Integral floats are accepted; indices must be >= 0 and < ``n_vertices`` when given; ``width``
+    fixes k; a row may not repeat a vertex.
+    """
+    try:
+        arr = np.asarray(simplices)
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"{name} must be an (m, k) array of vertex indices: {err}") from None
+    if arr.ndim != 2 or arr.shape[1] == 0:
+        raise ValueError(f"{name} must be an (m, k) array of vertex indices, got shape {arr.shape}")
+    if width is not None and arr.shape[1] != width:
+        raise ValueError(f"{name} must have {width} vertices per row, got {arr.shape[1]}")
+    if arr.shape[0] == 0 and not allow_empty:
+        raise ValueError(f"{name} is empty")
+    if arr.dtype == bool or not (np.issubdtype(arr.dtype, np.integer) or np.issubdtype(arr.dtype, np.floating)):
+        raise InvalidTypeError(f"{name} must hold integer vertex indices, got dtype {arr.dtype}")
+    if not np.issubdtype(arr.dtype, np.integer):
+        if not np.all(np.isfinite(arr)) or not np.all(arr == np.round(arr)):
+            raise ValueError(f"{name} must hold integer vertex indices")
+    arr = arr.astype(np.int64)
+    if arr.size:
+        bad = (arr < 0) if n_vertices is None else (arr < 0) | (arr >= n_vertices)
+        if bad.any():
+            row = int(np.flatnonzero(bad.any(axis=1))[0])
+            where = "negative" if n_vertices is None else f"outside 0..{n_vertices - 1}"
+            raise ValueError(f"{name}: row {row} {arr[row].tolist()} has a vertex index {where}")
+        srt = np.sort(arr, axis=1)
+        rep = np.any(srt[:, 1:] == srt[:, :-1], axis=1)
+        if rep.any():
+            row = int(np.argmax(rep))
+            raise ValueError(f"{name}: row {row} {arr[row].tolist()} repeats a vertex")
+    return arr

@@ -24,7 +24,7 @@ def _grow(buf, vals, count):
 
 
 @numba.njit(cache=True)
-def _lower_bound(arr, lo, hi, x):
+def lower_bound(arr, lo, hi, x):
     while lo < hi:
         mid = (lo + hi) >> 1
         if arr[mid] < x:
@@ -50,7 +50,7 @@ def _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, f
         ok = True
         for i in range(width - 1):
             v = parents[r, i]
-            ptr[i] = _lower_bound(indices, indptr[v], indptr[v + 1], first_cand)
+            ptr[i] = lower_bound(indices, indptr[v], indptr[v + 1], first_cand)
             ends[i] = indptr[v + 1]
             if ptr[i] == ends[i]:
                 ok = False

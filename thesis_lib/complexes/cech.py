@@ -10,6 +10,7 @@ from ..simplicial import facets, find_rows
 from ._flag import edges_within, expand_level, upper_csr
 from ..filtration import Filtration
 from .miniball import meb_radius_small
+from .scaling import scaled, unscale_values
 
 __all__ = ["cech"]
 
@@ -46,7 +47,9 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    pts = np.ascontiguousarray(as_points(points))
+    pts, e = scaled(as_points(points))  # power-of-two scaling: no overflow/underflow of squares
+    with np.errstate(over="ignore"):
+        eps = float(np.ldexp(eps, e))
     n = pts.shape[0]
     simplices = [np.arange(n, dtype=np.int64).reshape(n, 1)]
     values = [np.zeros(n)]
@@ -68,4 +71,5 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
                 radii = np.maximum(radii, values[-1][idx].max(axis=1))
             simplices.append(cand)
             values.append(radii)
+    values = [unscale_values(v, -e, "radii") for v in values]
     return Filtration(simplices, values, validate=False)

@@ -21,35 +21,26 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-from .._validate import as_points, check_max_dim, check_radius
-from ._flag import _lower_bound, flag_levels, matrix_edges
+from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
+from ._flag import lower_bound, flag_levels, matrix_edges
 from ..filtration import Filtration
+from .scaling import scaled, unscale_values
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
 
 
-
 def _check_landmarks(pts: np.ndarray, landmarks) -> np.ndarray:
     lm = np.asarray(landmarks)
-    if lm.ndim != 1 or lm.size == 0:
-        raise ValueError(f"landmarks must be a non-empty 1-D index array, got shape {lm.shape}")
-    if not np.issubdtype(lm.dtype, np.integer):
-        raise ValueError("landmarks must be integer indices into points (see maxmin_landmarks)")
-    if lm.size > pts.shape[0]:
+    if lm.ndim == 1 and lm.size > pts.shape[0]:
         raise ValueError(f"{lm.size} landmarks but only {pts.shape[0]} points")
-    if lm.min() < 0 or lm.max() >= pts.shape[0]:
-        raise ValueError(f"landmark indices must lie in 0..{pts.shape[0] - 1}")
-    if np.unique(lm).size != lm.size:
-        raise ValueError("landmarks repeat an index")
-    return lm.astype(np.int64)
+    return check_indices(lm, pts.shape[0], "landmarks", unique=True)
 
 
 def _check_nu(nu, n_landmarks: int) -> int:
-    if isinstance(nu, bool) or not isinstance(nu, (int, np.integer)) or nu < 0:
-        raise ValueError(f"nu must be an integer >= 0, got {nu!r}")
+    nu = check_int(nu, "nu", minimum=0)
     if nu > n_landmarks:
         raise ValueError(f"nu = {nu} exceeds the number of landmarks ({n_landmarks})")
-    return int(nu)
+    return nu
 
 
 def witness_offsets(points, landmarks, nu: int = 1) -> np.ndarray:
@@ -60,16 +51,16 @@ def witness_offsets(points, landmarks, nu: int = 1) -> np.ndarray:
     pts = as_points(points)
     lm = _check_landmarks(pts, landmarks)
     nu = _check_nu(nu, lm.size)
+    pts, e = scaled(pts)  # power-of-two scaling: squared distances neither overflow nor underflow
     lpts = pts[lm]
     # |l - x|² expanded is cheaper but loses accuracy near 0; chunked direct differences instead
     dist = np.empty((lm.size, pts.shape[0]))
     for start in range(0, lm.size, 64):
         block = lpts[start : start + 64]
         dist[start : start + block.shape[0]] = np.sqrt(((block[:, None, :] - pts[None, :, :]) ** 2).sum(-1))
-    if nu == 0:
-        return dist
-    m = np.partition(dist, nu - 1, axis=0)[nu - 1]
-    return dist - m[None, :]
+    if nu > 0:
+        dist -= np.partition(dist, nu - 1, axis=0)[nu - 1][None, :]
+    return unscale_values(dist, -e, "distances")
 
 
 _SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted witness lists are kept
@@ -169,7 +160,7 @@ def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, ou
         if use_sorted and ub > lb:
             for i in range(width + 1):
                 u = parents[r, i] if i < width else w
-                c = _lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
+                c = lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
                 if c < n_scan:
                     n_scan = c
                     u_best = u

@@ -33,9 +33,9 @@ from __future__ import annotations
 
 import numba
 import numpy as np
-from scipy.spatial import Delaunay, cKDTree
+from scipy.spatial import Delaunay, QhullError, cKDTree
 
-from .._validate import as_points
+from .._validate import as_points, check_real, check_simplices
 
 __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
 
@@ -80,10 +80,14 @@ def _samples(points) -> np.ndarray:
 
 def _far(pts: np.ndarray, far: float | None) -> float:
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
-    far = 0.5 * diag if far is None else float(far)
-    if not np.isfinite(far) or far <= 0:
-        raise ValueError(f"far must be a positive distance, got {far!r}")
-    return far
+    return 0.5 * diag if far is None else check_real(far, "far", positive=True)
+
+
+def _delaunay(pts: np.ndarray) -> Delaunay:
+    try:
+        return Delaunay(pts)
+    except QhullError:
+        raise ValueError("the samples lie in a plane (or a line): the Crust needs a surface sampled in R³") from None
 
 
 def _poles(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: float):
@@ -133,7 +137,7 @@ def poles(points, far: float | None = None):
     Voronoi vertex on the opposite side.  Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
     """
     pts = _samples(points)
-    tri = Delaunay(pts)
+    tri = _delaunay(pts)
     return _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far))
 
 
@@ -243,11 +247,11 @@ def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None)
     Returns ``(m, 3)`` vertex triples, each sorted, in lexicographic order.
     Thesis: §3.4, "Triangulations" ([ABK98]).
     """
-    theta = float(theta)
+    theta = check_real(theta, "theta")
     if not 0 < theta < np.pi / 2:
         raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
     pts = _samples(points)
-    tri = Delaunay(pts)
+    tri = _delaunay(pts)
     cc, ok = _circumcentres(pts[tri.simplices])
     p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far))
     faces, c0, d, t_max = _candidate_edges(pts, tri, cc, ok, p_plus, theta)
@@ -420,11 +424,9 @@ def extract_manifold(points, triangles, prune: bool = True):
     Thesis: §3.4, "Triangulations" ([ABK98], manifold extraction).
     """
     pts = as_points(points, min_points=3)
-    tris = np.asarray(triangles, dtype=np.int64)
-    if tris.ndim != 2 or tris.shape[1] != 3 or len(tris) == 0:
-        raise ValueError(f"triangles must be a non-empty (m, 3) array, got shape {tris.shape}")
-    if tris.min() < 0 or tris.max() >= len(pts):
-        raise ValueError("triangles refer to points that do not exist")
+    if pts.shape[1] != 3:
+        raise ValueError(f"the trimming walks surfaces in R³, got points in R^{pts.shape[1]}")
+    tris = check_simplices(triangles, len(pts), "triangles", width=3)
     if prune:
         tris = _prune_sharp(pts, tris)
         if len(tris) == 0:

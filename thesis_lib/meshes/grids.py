@@ -9,12 +9,15 @@ through a parametrisation X this triangulates the hypersurfaces of §3.4 in any 
 from __future__ import annotations
 
 import itertools
+import math
+from collections.abc import Sequence
 
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from .._validate import InvalidTypeError, as_points, check_int, check_real, check_simplices, check_size
 from ..curvature.exact import catenoid_point, hypersphere_point, torus_point
 
 __all__ = [
@@ -28,17 +31,20 @@ __all__ = [
 ]
 
 
-def _count(name: str, n, low: int = 1) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < low:
-        raise ValueError(f"{name} must be an integer >= {low}, got {n!r}")
-    return int(n)
-
-
-def _positive(name: str, x) -> float:
-    x = float(x)
-    if not np.isfinite(x) or x <= 0:
-        raise ValueError(f"{name} must be a positive finite number, got {x!r}")
-    return x
+def _check_grid(shape, periodic) -> tuple[tuple[int, ...], tuple[bool, ...]]:
+    """Validated grid shape and periodicity; refuses up front a triangulation too large to build."""
+    shape = tuple(shape) if np.ndim(shape) else (shape,)
+    if len(shape) == 0:
+        raise ValueError("shape must have at least one axis")
+    n = len(shape)
+    per = (bool(periodic),) * n if np.ndim(periodic) == 0 else tuple(bool(p) for p in periodic)
+    if len(per) != n:
+        raise ValueError(f"periodic has {len(per)} entries for {n} axes")
+    shape = tuple(check_int(m, "grid size", minimum=3 if p else 2) for m, p in zip(shape, per))
+    cells = math.prod(m if p else m - 1 for m, p in zip(shape, per))
+    count = math.factorial(n) * cells
+    check_size(count * (n + 1), f"vertex entries ({count:,} simplices of {n + 1} vertices)")
+    return shape, per
 
 
 def _permutation_sign(perm: tuple[int, ...]) -> int:
@@ -52,7 +58,7 @@ def _permutation_sign(perm: tuple[int, ...]) -> int:
     return sign
 
 
-def freudenthal(shape, periodic=False) -> np.ndarray:
+def freudenthal(shape: Sequence[int] | int, periodic: bool | Sequence[bool] = False) -> np.ndarray:
     """Freudenthal/Kuhn subdivision of an n-dimensional vertex grid into n-simplices.
 
     Parameters
@@ -67,16 +73,15 @@ def freudenthal(shape, periodic=False) -> np.ndarray:
     (det[v_1 - v_0, ..., v_n - v_0] > 0 before wrapping).
 
     Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
+
+    Raises
+    ------
+    ValueError
+        On a bad shape, or when the triangulation would hold more than 10⁹ vertex entries (say
+        ``(2,) * 12``: 12! = 479,001,600 simplices), before anything is built.
     """
-    shape = tuple(shape) if np.ndim(shape) else (shape,)
-    if len(shape) == 0:
-        raise ValueError("shape must have at least one axis")
+    shape, per = _check_grid(shape, periodic)
     n = len(shape)
-    per = (bool(periodic),) * n if np.ndim(periodic) == 0 else tuple(bool(p) for p in periodic)
-    if len(per) != n:
-        raise ValueError(f"periodic has {len(per)} entries for {n} axes")
-    for m, p in zip(shape, per):
-        _count("grid size", m, 3 if p else 2)
     cells = [m if p else m - 1 for m, p in zip(shape, per)]
     base = np.stack(np.meshgrid(*[np.arange(c) for c in cells], indexing="ij"), axis=-1).reshape(-1, n)
     out = []
@@ -102,11 +107,16 @@ def grid_parameters(*axes) -> np.ndarray:
 
     Thesis: §3.4 (the parameter grids {0, ε, 2ε, ...}).
     """
-    arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
+    try:
+        arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"grid axes must be arrays of numbers: {err}") from None
     if not arrs or any(a.size == 0 for a in arrs):
         raise ValueError("need at least one non-empty axis")
     if any(not np.all(np.isfinite(a)) for a in arrs):
         raise ValueError("grid axes contain NaN or infinite values")
+    count = math.prod(a.size for a in arrs)
+    check_size(count * len(arrs), f"coordinates ({count:,} grid points in R^{len(arrs)})")
     return np.stack(np.meshgrid(*arrs, indexing="ij"), axis=-1).reshape(-1, len(arrs))
 
 
@@ -116,7 +126,8 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
     Returns ``(vertices (n², 3), faces (2n², 3))``; vertex ``i·n + j`` is X(u_i, v_j) and every face is
     oriented by X_u × X_v (outward).  Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
     """
-    n = _count("n", n, 3)
+    n = check_int(n, "n", minimum=3)
+    check_size(2 * n * n, "faces")
     t = 2 * np.pi * np.arange(n) / n
     uv = grid_parameters(t, t)
     vertices = torus_point(uv[:, 0], uv[:, 1], R, r)
@@ -135,11 +146,12 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float =
     Returns ``(vertices, faces, uv)``.  ``2π/ε`` must be an integer (up to 1e-9).
     Thesis: §3.4.1, Figures 3.4–3.7 (ε = π/50).
     """
-    epsilon = _positive("epsilon", epsilon)
+    epsilon = check_real(epsilon, "epsilon", positive=True)
     m = 2 * np.pi / epsilon
     n = int(round(m))
     if abs(m - n) > 1e-9 * m or n < 3:
         raise ValueError(f"2π/epsilon must be an integer >= 3, got {m!r}")
+    check_size(2 * n * n, "faces")
     vertices, faces = torus_grid(n, R, r)
     t = 2 * np.pi * np.arange(n) / n
     return vertices, faces, grid_parameters(t, t)
@@ -152,13 +164,10 @@ def merge_coincident(vertices, simplices, tol: float = 1e-9):
     (its first representative).  Simplices keep their vertex order (and so their orientation).
     Thesis: §3.4.2 (grid points at the poles of hyperspherical coordinates coincide).
     """
-    v = np.asarray(vertices, dtype=np.float64)
-    s = np.asarray(simplices)
-    if v.ndim != 2 or s.ndim != 2:
-        raise ValueError("vertices and simplices must be 2-D arrays")
-    if s.size and (s.min() < 0 or s.max() >= len(v)):
-        raise ValueError("simplices refer to vertices that do not exist")
-    pairs = cKDTree(v).query_pairs(float(tol), output_type="ndarray")
+    v = as_points(vertices, name="vertices")
+    s = check_simplices(simplices, len(v), allow_empty=True)
+    tol = check_real(tol, "tol", minimum=0.0)
+    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
     nv = len(v)
     graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(nv, nv))
     _, label = connected_components(graph, directed=False)
@@ -178,8 +187,20 @@ def merge_coincident(vertices, simplices, tol: float = 1e-9):
     return v[kept], s2, kept
 
 
+def _pair(value, name: str) -> tuple:
+    try:
+        low, high = value
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair (low, high), got {value!r}") from None
+    return low, high
+
+
 def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray:
+    low, high = check_real(low, f"{name} low"), check_real(high, f"{name} high")
     steps = (high - low) / epsilon
+    if not np.isfinite(steps):
+        raise ValueError(f"{name}: (high - low)/epsilon is not finite")
+    check_size(abs(steps), f"grid points on the {name} axis")
     k = int(round(steps))
     if k < 1 or abs(steps - k) > 1e-6 * max(1.0, steps):
         raise ValueError(f"{name}: (high - low)/epsilon must be a positive integer, got {steps!r}")
@@ -196,13 +217,14 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0, n:
     with ``params`` the coordinates of each vertex's first grid representative.
     Thesis: §3.4.2 (3-sphere, hyperspherical coordinates, ε = π/50).
     """
-    epsilon = _positive("epsilon", epsilon)
-    radius = _positive("radius", radius)
-    n = _count("n", n, 1)
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    radius = check_real(radius, "radius", positive=True)
+    n = check_int(n, "n", minimum=1)
     m = np.pi / epsilon
     if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
         raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
     k = int(round(m))
+    _check_grid((k + 1,) * (n - 1) + (2 * k,), (False,) * (n - 1) + (True,))
     ang = np.pi * np.arange(k + 1) / k
     phi = np.pi * np.arange(2 * k) / k
     params = grid_parameters(*([ang] * (n - 1) + [phi]))
@@ -222,11 +244,13 @@ def catenoid_freudenthal(
     Returns ``(vertices, simplices, params)``; the boundary is v = v_low, v_high (and w = w_low, w_high).
     Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
     """
-    epsilon = _positive("epsilon", epsilon)
-    n = _count("n", n, 2)
-    n_u = int(round(2 * np.pi / epsilon)) if n_u is None else _count("n_u", n_u, 3)
-    axes = [2 * np.pi * np.arange(n_u) / n_u, _grid_axis("v_range", *map(float, v_range), epsilon)]
-    axes += [_grid_axis("w_range", *map(float, w_range), epsilon)] * (n - 2)
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    n = check_int(n, "n", minimum=2)
+    n_u = int(round(2 * np.pi / epsilon)) if n_u is None else check_int(n_u, "n_u", minimum=3)
+    v_axis = _grid_axis("v_range", *_pair(v_range, "v_range"), epsilon)
+    w_axis = _grid_axis("w_range", *_pair(w_range, "w_range"), epsilon) if n > 2 else np.zeros(0)
+    _check_grid((n_u, len(v_axis)) + (len(w_axis),) * (n - 2), (True,) + (False,) * (n - 1))
+    axes = [2 * np.pi * np.arange(n_u) / n_u, v_axis] + [w_axis] * (n - 2)
     params = grid_parameters(*axes)
     simplices = freudenthal(tuple(len(a) for a in axes), periodic=(True,) + (False,) * (n - 1))
     return catenoid_point(params), simplices, params

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import as_points
+from .._validate import as_points, check_int
 
 __all__ = ["estimate_normals", "ball_pivoting"]
 
@@ -17,9 +17,9 @@ def estimate_normals(points, k: int = 10) -> np.ndarray:
     from scipy.spatial import cKDTree
 
     pts = as_points(points, min_points=3)
-    k = int(k)
-    if k < 3:
-        raise ValueError(f"k must be >= 3, got {k}")
+    if pts.shape[1] != 3:
+        raise ValueError(f"normals are estimated for points in R³, got dimension {pts.shape[1]}")
+    k = check_int(k, "k", minimum=3)
     k = min(k, len(pts))
     _, nb = cKDTree(pts).query(pts, k)
     q = pts[nb] - pts[nb].mean(axis=1, keepdims=True)
@@ -45,15 +45,18 @@ def ball_pivoting(points, normals=None, radii=None) -> np.ndarray:
     pts = as_points(points, min_points=4, allow_duplicates=False)
     if pts.shape[1] != 3:
         raise ValueError(f"ball pivoting needs points in R³, got dimension {pts.shape[1]}")
-    nrm = estimate_normals(pts) if normals is None else np.asarray(normals, dtype=np.float64)
-    if nrm.shape != pts.shape or not np.all(np.isfinite(nrm)):
-        raise ValueError(f"normals must be a finite array of shape {pts.shape}")
+    nrm = estimate_normals(pts) if normals is None else as_points(normals, name="normals")
+    if nrm.shape != pts.shape:
+        raise ValueError(f"normals must be a finite array of shape {pts.shape}, got {nrm.shape}")
     tree = cKDTree(pts)
     if radii is None:
         spacing = float(tree.query(pts, 2)[0][:, 1].mean())
         radii = [f * spacing for f in (2.0, 3.0, 4.0, 6.0)]
-    radii = np.atleast_1d(np.asarray(radii, dtype=np.float64))
-    if radii.size == 0 or not np.all(np.isfinite(radii)) or np.any(radii <= 0):
+    try:
+        radii = np.atleast_1d(np.asarray(radii, dtype=np.float64))
+    except (TypeError, ValueError):
+        raise ValueError(f"radii must be positive finite numbers, got {radii!r}") from None
+    if radii.ndim != 1 or radii.size == 0 or not np.all(np.isfinite(radii)) or np.any(radii <= 0):
         raise ValueError(f"radii must be positive finite numbers, got {radii!r}")
     ms = pymeshlab.MeshSet()
     ms.add_mesh(pymeshlab.Mesh(vertex_matrix=pts, v_normals_matrix=nrm))

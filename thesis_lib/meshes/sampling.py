@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import check_int, check_real, check_seed, check_size
 from ..curvature.exact import catenoid_point, torus_point
 
 __all__ = ["sample_torus", "sample_catenoid", "sample_sphere"]
 
 
-def _count(name: str, n) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"{name} must be a positive integer, got {n!r}")
-    return int(n)
+def _count(n, dim: int) -> int:
+    """A number of samples n >= 1, refused up front if the (n, dim) output would be too large."""
+    n = check_int(n, "n", minimum=1)
+    check_size(n * dim, f"coordinates ({n:,} points in R^{dim})")
+    return n
 
 
 def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
@@ -26,16 +28,17 @@ def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
     return np.concatenate(out)[:n]
 
 
-def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0, return_uv: bool = False):
+def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
+                 return_uv: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the torus: (u, v) uniform, accepted with prob. (R + r cos v)/(R + r).
 
     The area element of the torus is r (R + r cos v) du dv, so rejection on that density gives the
     uniform distribution on the surface.  Returns ``(n, 3)`` points (and ``(n, 2)`` parameters when
     ``return_uv``).  Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
     """
-    n = _count("n", n)
+    n = _count(n, 3)
     torus_point(0.0, 0.0, R, r)  # validates the radii
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_seed(seed))
     uv = _rejection(
         n, rng, lambda m: rng.uniform(0.0, 2 * np.pi, (m, 2)),
         lambda c: R + r * np.cos(c[:, 1]), R + r,
@@ -44,16 +47,22 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0, return_
     return (pts, uv) if return_uv else pts
 
 
-def sample_catenoid(n: int, v_range=(-1.0, 1.0), seed: int = 0, return_params: bool = False):
+def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0,
+                    return_params: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the catenoid piece v ∈ v_range (area element cosh² v du dv).
 
     Thesis: §3.4.3, Figure 3.14 (point cloud on the 2-catenoid).
     """
-    n = _count("n", n)
-    lo, hi = map(float, v_range)
-    if not (np.isfinite(lo) and np.isfinite(hi)) or hi <= lo:
-        raise ValueError(f"v_range must be a finite interval (low < high), got {v_range!r}")
-    rng = np.random.default_rng(seed)
+    n = _count(n, 3)
+    try:
+        lo, hi = v_range
+    except (TypeError, ValueError):
+        raise ValueError(f"v_range must be a pair (low, high), got {v_range!r}") from None
+    lo, hi = check_real(lo, "v_range low"), check_real(hi, "v_range high")
+    if hi <= lo or max(abs(lo), abs(hi)) > 300:
+        raise ValueError(f"v_range must be an interval low < high within [-300, 300] (cosh² overflows beyond), "
+                         f"got {v_range!r}")
+    rng = np.random.default_rng(check_seed(seed))
     wmax = np.cosh(max(abs(lo), abs(hi))) ** 2
     uv = _rejection(
         n, rng,
@@ -69,12 +78,8 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
 
     Thesis: §3.4.2 (spheres as test hypersurfaces).
     """
-    n = _count("n", n)
-    d = _count("n_dims", n_dims)
-    if d < 2:
-        raise ValueError(f"n_dims must be >= 2, got {d}")
-    radius = float(radius)
-    if not np.isfinite(radius) or radius <= 0:
-        raise ValueError(f"radius must be positive, got {radius!r}")
-    g = np.random.default_rng(seed).normal(size=(n, d))
+    d = check_int(n_dims, "n_dims", minimum=2)
+    n = _count(n, d)
+    radius = check_real(radius, "radius", positive=True)
+    g = np.random.default_rng(check_seed(seed)).normal(size=(n, d))
     return radius * g / np.linalg.norm(g, axis=1, keepdims=True)

@@ -15,6 +15,8 @@ from typing import Callable
 
 import numpy as np
 
+from .._validate import InvalidTypeError, as_points, check_real, check_size
+
 __all__ = ["cross_stars", "neighbour_grid_mean_curvature"]
 
 
@@ -25,22 +27,22 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params, epsilon: float):
     ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and X(w_j - ε e_i) for i = 0..n-1.
     Thesis: §3.4.2 (neighbouring vertices (ψ ± ε, θ ± ε, φ ± ε)).
     """
-    w = np.asarray(params, dtype=np.float64)
-    if w.ndim != 2 or w.shape[0] == 0 or w.shape[1] < 1:
-        raise ValueError(f"params must be a non-empty (k, n) array, got shape {w.shape}")
-    if not np.all(np.isfinite(w)):
-        raise ValueError("params contain NaN or infinite values")
-    epsilon = float(epsilon)
-    if not np.isfinite(epsilon) or epsilon <= 0:
-        raise ValueError(f"epsilon must be positive, got {epsilon!r}")
+    w = as_points(params, name="params")
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    if not callable(X):
+        raise InvalidTypeError(f"X must be a function of parameters, got {X!r}")
     k, n = w.shape
+    check_size(k * 2**n * (n + 1), f"vertex entries ({k * 2**n:,} simplices of the stars)")
     shifts = [np.zeros(n)]
     for i in range(n):
         e = np.zeros(n)
         e[i] = epsilon
         shifts += [e, -e]
     allw = (w[:, None, :] + np.array(shifts)[None]).reshape(-1, n)
-    vertices = np.asarray(X(allw), dtype=np.float64)
+    try:
+        vertices = np.asarray(X(allw), dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"X must map (m, {n}) parameters to (m, {n + 1}) points: {err}") from None
     if vertices.shape != (len(allw), n + 1):
         raise ValueError(f"X must map (m, {n}) parameters to (m, {n + 1}) points, got {vertices.shape}")
     base = np.arange(k) * (2 * n + 1)
