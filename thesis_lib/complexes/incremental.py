@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .predicates import Geometry
+from .predicates import Geometry, ScalarPredicates
 
 __all__ = ["exact_triangulation", "DegenerateInput"]
 
@@ -26,9 +26,9 @@ class DegenerateInput(ValueError):
 
 
 class _Triangulation:
-    def __init__(self, geo: Geometry):
-        self.geo = geo
-        self.d = geo.d
+    def __init__(self, pred: ScalarPredicates):
+        self.pred = pred
+        self.d = pred.d
         self.verts: list[list[int]] = []
         self.nbrs: list[list[int]] = []
         self.alive: list[bool] = []
@@ -36,15 +36,13 @@ class _Triangulation:
 
     # ------------------------------------------------------------------ predicates
     def orient(self, v: list[int]) -> int:
-        return int(self.geo.orientation(np.array([v], dtype=np.int64))[0])
+        return self.pred.orient(v)
 
     def conflict(self, s: int, p: int) -> bool:
         """Is point p in conflict with simplex s (inside its orthogonal sphere, or beyond its hull facet)?"""
         v = self.verts[s]
         if -1 not in v:
-            orient = np.ones(1, dtype=np.int8)
-            out, _ = self.geo.outside(np.array([v], dtype=np.int64), np.array([p]), orient)
-            return not bool(out[0])
+            return not self.pred.outside(v, p)
         i = v.index(-1)
         q = list(v)
         q[i] = p
@@ -98,8 +96,7 @@ class _Triangulation:
     def locate(self, p: int) -> int | None:
         """A simplex in conflict with p (None: p is hidden), by a visibility walk."""
         s = self.last if self.alive[self.last] else self.alive.index(True)
-        rng = np.random.default_rng(p)
-        for _ in range(20 * len(self.verts) + 100):
+        for step in range(20 * len(self.verts) + 100):
             v = self.verts[s]
             if -1 in v:
                 if self.conflict(s, p):
@@ -107,8 +104,9 @@ class _Triangulation:
                 s = self.nbrs[s][v.index(-1)]
                 continue
             moved = False
-            for i in rng.permutation(self.d + 1):
-                q = list(v)
+            for j in range(self.d + 1):
+                i = (j + step) % (self.d + 1)  # rotate the first facet tried (the walk terminates
+                q = list(v)  # on regular triangulations for any choice)
                 q[i] = p
                 if self.orient(q) < 0:  # p strictly beyond facet i
                     s = self.nbrs[s][i]
@@ -174,8 +172,6 @@ def _first_simplex(geo: Geometry, ids: np.ndarray) -> list[int]:
         chosen.append(j)
         basis = np.vstack([basis, resid[j] / norms[j]])
     first = [int(ids[j]) for j in chosen]
-    if int(geo.orientation_exact(np.array([first], dtype=np.int64))[0]) == 0:
-        raise DegenerateInput("the points lie in a hyperplane")
     return first
 
 
@@ -228,7 +224,10 @@ def exact_triangulation(geo: Geometry, ids) -> tuple[np.ndarray, np.ndarray]:
         nb[:-1, 0] = np.arange(1, m)
         return tri, nb
     first = _first_simplex(geo, ids)
-    t = _Triangulation(geo)
+    pred = geo.scalar
+    if pred.orient_exact(first) == 0:
+        raise DegenerateInput("the points lie in a hyperplane")
+    t = _Triangulation(pred)
     t.start(first)
     rest = [int(i) for i in ids if int(i) not in set(first)]
     # insert in a spatially coherent order (walks stay short)

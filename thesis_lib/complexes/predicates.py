@@ -31,7 +31,7 @@ import numpy.typing as npt
 
 from .filters import insphere_filter, orient_filter
 
-__all__ = ["Geometry", "expand_det", "UNIT"]
+__all__ = ["Geometry", "ScalarPredicates", "expand_det", "UNIT"]
 
 #: unit roundoff of float64
 UNIT = 2.0**-53
@@ -76,6 +76,164 @@ def _dyadic(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return m, e
 
 
+def _det_perm_scalar(m: list[list[float]], a: list[list[float]]) -> tuple[float, float]:
+    """Determinant and permanent (on the magnitudes ``a``) by expansion along the first column
+    (explicit for k <= 4, the same operations as the compiled filters)."""
+    k = len(m)
+    if k == 1:
+        return m[0][0], a[0][0]
+    if k == 2:
+        return m[0][0] * m[1][1] - m[1][0] * m[0][1], a[0][0] * a[1][1] + a[1][0] * a[0][1]
+    if k == 3:
+        (m0, m1, m2), (a0, a1, a2) = m, a
+        d12 = m1[1] * m2[2] - m2[1] * m1[2]
+        d02 = m0[1] * m2[2] - m2[1] * m0[2]
+        d01 = m0[1] * m1[2] - m1[1] * m0[2]
+        p12 = a1[1] * a2[2] + a2[1] * a1[2]
+        p02 = a0[1] * a2[2] + a2[1] * a0[2]
+        p01 = a0[1] * a1[2] + a1[1] * a0[2]
+        return m0[0] * d12 - m1[0] * d02 + m2[0] * d01, a0[0] * p12 + a1[0] * p02 + a2[0] * p01
+    if k == 4:
+        (m0, m1, m2, m3), (a0, a1, a2, a3) = m, a
+        # 2 x 2 minors of columns 2, 3, then 3 x 3 minors of columns 1..3, then column 0
+        d = {}
+        p = {}
+        rows, arows = (m0, m1, m2, m3), (a0, a1, a2, a3)
+        for i, j in ((0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)):
+            d[i, j] = rows[i][2] * rows[j][3] - rows[j][2] * rows[i][3]
+            p[i, j] = arows[i][2] * arows[j][3] + arows[j][2] * arows[i][3]
+        det = per = 0.0
+        for i in range(4):
+            j, k2, l2 = [r for r in range(4) if r != i]
+            minor = rows[j][1] * d[k2, l2] - rows[k2][1] * d[j, l2] + rows[l2][1] * d[j, k2]
+            pminor = arows[j][1] * p[k2, l2] + arows[k2][1] * p[j, l2] + arows[l2][1] * p[j, k2]
+            det += (-rows[i][0] if i % 2 else rows[i][0]) * minor
+            per += arows[i][0] * pminor
+        return det, per
+    det = per = 0.0
+    for i in range(k):
+        sub = [row[1:] for j, row in enumerate(m) if j != i]
+        suba = [row[1:] for j, row in enumerate(a) if j != i]
+        dd, pp = _det_perm_scalar(sub, suba)
+        det += (-m[i][0] if i % 2 else m[i][0]) * dd
+        per += a[i][0] * pp
+    return det, per
+
+
+def _int_det(rows: list[list[int]]) -> int:
+    """Exact determinant of a square integer matrix (Bareiss elimination)."""
+    a = [list(r) for r in rows]
+    n = len(a)
+    sign, prev = 1, 1
+    for k in range(n - 1):
+        if a[k][k] == 0:
+            for i in range(k + 1, n):
+                if a[i][k] != 0:
+                    a[k], a[i] = a[i], a[k]
+                    sign = -sign
+                    break
+            else:
+                return 0
+        akk = a[k][k]
+        for i in range(k + 1, n):
+            aik = a[i][k]
+            ri, rk = a[i], a[k]
+            for j in range(k + 1, n):
+                ri[j] = (ri[j] * akk - aik * rk[j]) // prev
+        prev = akk
+    return sign * a[n - 1][n - 1]
+
+
+class ScalarPredicates:
+    """Scalar robust predicates on a few points at a time (pure Python: no per-call numpy overhead).
+
+    A float filter with the same proven bound as :mod:`.filters`; exact integers (the points of one
+    predicate brought to a common power-of-two scale) where it cannot decide; CGAL's perturbation
+    for ties.  Points are indices into the :class:`~.predicates.Geometry`.
+    """
+
+    def __init__(self, geo: "Geometry"):
+        self.d = geo.d
+        self.geo = geo
+        self._x: dict[int, tuple[float, ...]] = {}
+        self._w: dict[int, float] = {}
+        self._dyadic: dict[int, tuple[list[int], list[int], int, int]] = {}
+
+    def x(self, i: int) -> tuple[float, ...]:
+        got = self._x.get(i)
+        if got is None:
+            got = self._x[i] = tuple(self.geo.points[i].tolist())
+            self._w[i] = float(self.geo.weights[i])
+        return got
+
+    def w(self, i: int) -> float:
+        self.x(i)
+        return self._w[i]
+
+    def ints(self, ids: list[int]) -> tuple[list[list[int]], list[int]]:
+        """Coordinates ×2^K and weights ×4^K of the points as Python integers (common K)."""
+        data = []
+        k = 0
+        for i in ids:
+            got = self._dyadic.get(i)
+            if got is None:
+                geo = self.geo
+                got = self._dyadic[i] = (geo.mantissas[i].tolist(), geo.exponents[i].tolist(),
+                                         int(geo.weight_mantissas[i]), int(geo.weight_exponents[i]))
+            data.append(got)
+            k = max(k, max(got[1]), (got[3] + 1) // 2)
+        x = [[m << (k - e) for m, e in zip(mr, er)] for mr, er, _, _ in data]
+        w = [wm << (2 * k - we) for _, _, wm, we in data]
+        return x, w
+
+    def orient(self, v: list[int]) -> int:
+        """Exact sign of det[x_i − x_0] over d + 1 points."""
+        x0 = self.x(v[0])
+        m = [[a - b for a, b in zip(self.x(u), x0)] for u in v[1:]]
+        det, per = _det_perm_scalar(m, [[abs(t) for t in row] for row in m])
+        k = self.d
+        if abs(det) > (k + k * k + 2 * k) * UNIT * 1.01 * per + 1e-290:
+            return 1 if det > 0 else -1
+        return self.orient_exact(v)
+
+    def orient_exact(self, v: list[int]) -> int:
+        x, _ = self.ints(list(v))
+        return _sign(_int_det([[a - b for a, b in zip(xi, x[0])] for xi in x[1:]]))
+
+    def outside(self, v: list[int], y: int) -> bool:
+        """Is y outside the orthogonal sphere of the positively oriented full simplex v (perturbed)?"""
+        d = self.d
+        xy, wy = self.x(y), self.w(y)
+        m, a = [], []
+        for u in v:
+            diff = [s - t for s, t in zip(self.x(u), xy)]
+            sq = sum(t * t for t in diff)
+            wu = self.w(u)
+            m.append(diff + [sq - (wu - wy)])
+            a.append([abs(t) for t in diff] + [sq + abs(wu) + abs(wy)])
+        det, per = _det_perm_scalar(m, a)
+        k = d + 1
+        cof_y = -1 if d % 2 == 0 else 1  # (−1)^(d+1) orient(v), orient(v) = +1
+        if abs(det) > ((d + 4) * k + k * k + 2 * k) * UNIT * 1.01 * per + 1e-290:
+            return (1 if det > 0 else -1) == cof_y
+        pts = list(v) + [y]
+        x, w = self.ints(pts)
+        rows = []
+        for xu, wu in zip(x[:-1], w[:-1]):
+            diff = [s - t for s, t in zip(xu, x[-1])]
+            rows.append(diff + [sum(t * t for t in diff) - (wu - w[-1])])
+        p = _sign(_int_det(rows))
+        if p != 0:
+            return p == cof_y
+        rank = self.geo.rank
+        for j in sorted(range(d + 2), key=lambda t: -int(rank[pts[t]])):
+            rest = x[:j] + x[j + 1 :]
+            c = (-1) ** j * _sign(_int_det([[a - b for a, b in zip(xi, rest[0])] for xi in rest[1:]]))
+            if c != 0:
+                return c == cof_y
+        raise AssertionError("the perturbation always decides")  # pragma: no cover
+
+
 class Geometry:
     """Points (scaled by a power of two), weights and lexicographic ranks, with robust predicates.
 
@@ -96,9 +254,10 @@ class Geometry:
         order = np.lexsort(self.points.T[::-1])  # lexicographic: first coordinate first
         self.rank = np.empty(self.n, dtype=np.int64)
         self.rank[order] = np.arange(self.n)
-        self._pm, self._pe = _dyadic(self.points)
-        self._wm, self._we = _dyadic(self.weights)
+        self.mantissas, self.exponents = _dyadic(self.points)
+        self.weight_mantissas, self.weight_exponents = _dyadic(self.weights)
         self.exact_rows = 0
+        self.scalar = ScalarPredicates(self)
 
     # -------------------------------------------------------------------------- exact integers
     def ints(self, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
@@ -108,10 +267,10 @@ class Geometry:
         K for the whole batch (so every value is an integer).
         """
         idx = np.asarray(idx, dtype=np.int64)
-        pe, we = self._pe[idx], self._we[idx]
+        pe, we = self.exponents[idx], self.weight_exponents[idx]
         k = int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
-        x = self._pm[idx].astype(object) * np.power(2, (k - pe).astype(object))
-        w = self._wm[idx].astype(object) * np.power(2, (2 * k - we).astype(object))
+        x = self.mantissas[idx].astype(object) * np.power(2, (k - pe).astype(object))
+        w = self.weight_mantissas[idx].astype(object) * np.power(2, (2 * k - we).astype(object))
         return x, w, k
 
     # -------------------------------------------------------------------------- orientation
@@ -159,16 +318,19 @@ class Geometry:
         p = _signs(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
         out = p * cof_y > 0
         tie = p == 0
-        d = self.d
-        for r in np.flatnonzero(tie):
+        rows = np.flatnonzero(tie)
+        if rows.size:
             # det M(δ) = det M + Σ_x δ_x cof_x; the largest δ belongs to the lexicographically
             # largest point, and cof_j = (−1)^j orient(the other d + 1 points, in order)
-            for j in sorted(range(d + 2), key=lambda t: -int(self.rank[allp[r, t]])):
-                rest = np.delete(x[r], j, axis=0)
-                c = (-1) ** j * _sign(expand_det((rest[1:] - rest[:1])[None])[0])
-                if c != 0:
-                    out[r] = c * cof_y[r] > 0
-                    break
+            xt = x[rows]
+            cof = np.empty((len(rows), self.d + 2), dtype=np.int8)
+            for j in range(self.d + 2):
+                rest = np.delete(xt, j, axis=1)
+                cof[:, j] = (-1) ** j * _signs(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
+            by_rank = np.argsort(-self.rank[allp[rows]], axis=1)
+            ordered = np.take_along_axis(cof, by_rank, axis=1)
+            first = ordered[np.arange(len(rows)), np.argmax(ordered != 0, axis=1)]
+            out[rows] = first * cof_y[rows] > 0
         return out, tie
 
     # -------------------------------------------------------------------------- orthoballs

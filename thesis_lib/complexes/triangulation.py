@@ -34,6 +34,7 @@ from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from .._validate import MAX_SIMPLICES, as_points, check_size, check_weights
 from ..simplicial import facets, row_keys
+from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
 from .predicates import Geometry
 from .scaling import power_of_two_scale, scale_points
@@ -68,6 +69,8 @@ class _Certificate:
     unresolved: np.ndarray  # for each loose point: not certifiably hidden (it must become a vertex)
     neighbours: np.ndarray
     ties: np.ndarray
+    orient: np.ndarray  # orientation sign of each simplex (0: flat)
+    failing: np.ndarray  # (k, 4) interior facets that are not locally regular: s1, i1, s2, i2
 
 
 def estimated_size(n: int, d: int) -> int:
@@ -235,7 +238,8 @@ def _certify(geo: Geometry, tri: np.ndarray) -> _Certificate:
         unresolved = np.zeros(0, dtype=bool)
     ok = not bad.any() and not unresolved.any()
     tie_pairs = np.column_stack([s1[tie], s2[tie]])
-    return _Certificate(ok, np.flatnonzero(bad), loose, located, unresolved, nb, tie_pairs)
+    failing = np.column_stack([s1, i1, s2, i2])[~out]
+    return _Certificate(ok, np.flatnonzero(bad), loose, located, unresolved, nb, tie_pairs, orient, failing)
 
 
 # ------------------------------------------------------------------------------------- repair
@@ -253,6 +257,18 @@ def _star_growth(tri: np.ndarray, seed: np.ndarray, rounds: int, n: int) -> np.n
     return inside
 
 
+def _volume(geo: Geometry, simplices: np.ndarray) -> float:
+    p = geo.points[simplices]
+    return float(np.abs(np.linalg.det(p[:, 1:, :] - p[:, :1, :])).sum())
+
+
+def _same_volume(geo: Geometry, sub: np.ndarray, old: np.ndarray) -> bool:
+    """Do the exact triangulation of a part's points and the part cover the same volume (so the
+    part is their convex hull)?  The final certificate checks the result exactly anyway."""
+    v_sub, v_old = _volume(geo, sub), _volume(geo, old)
+    return abs(v_sub - v_old) <= 1e-9 * max(v_sub, v_old)
+
+
 def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray, walls: list[tuple[tuple[int, ...], int]]) -> np.ndarray | None:
     """Simplices of ``sub`` on the inner side of the wall facets, by flood fill; None if a wall is missing."""
     d = geo.d
@@ -266,8 +282,8 @@ def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray, walls: list[tuple[
         cands = where.get(f)
         if not cands:
             return None
-        side = int(geo.orientation(np.array([list(f) + [v]], dtype=np.int64))[0])
-        hit = [s for s, u in cands if int(geo.orientation(np.array([list(f) + [u]], dtype=np.int64))[0]) == side]
+        side = geo.scalar.orient(list(f) + [v])
+        hit = [s for s, u in cands if geo.scalar.orient(list(f) + [u]) == side]
         if len(hit) != 1:
             return None
         start.append(hit[0])
@@ -287,63 +303,98 @@ def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray, walls: list[tuple[
 
 
 def _repair(geo: Geometry, tri: np.ndarray, cert: _Certificate) -> np.ndarray:
-    n, d = geo.n, geo.d
-    seed = np.union1d(cert.bad, cert.located[cert.unresolved]).astype(np.int64)
-    rounds, previous = 0, -1
-    while True:
-        inside = _star_growth(tri, seed, rounds, n)
-        if inside.all() or inside.sum() == previous and rounds > 0:
+    """Re-triangulate exactly around the certificate's failures until it holds.
+
+    Bistellar flips first (:mod:`.flips`: a valid triangulation that splits co-spherical cells
+    another way, as Qhull does on exact grids); then each facet-connected group of failing
+    simplices is re-triangulated on its own (they are small: a wrongly split co-spherical cell, a
+    flat simplex, a point Qhull dropped); the groups that fail, and whatever
+    the new certificate still rejects, are grown by vertex stars (1, 2, 4, ... rounds) and tried
+    again; at worst all points are triangulated exactly.
+    """
+    n = geo.n
+    for _ in range(30):  # first the cheap repair: rounds of independent 2 → d flips
+        if geo.d < 2 or len(cert.failing) == 0:
             break
-        previous = int(inside.sum())
-        candidate = _replace(geo, tri, cert, inside)
-        if candidate is not None:
-            check = _certify(geo, candidate)
-            if check.ok:
-                return candidate
+        flipped = flip_round(geo, tri, cert.failing, cert.orient)
+        if flipped is None:
+            break
+        tri = flipped
+        cert = _certify(geo, tri)
+        if cert.ok:
+            return tri
+    rounds = 0
+    for _ in range(12):
+        seed = np.union1d(cert.bad, cert.located[cert.unresolved]).astype(np.int64)
+        inside = _star_growth(tri, seed, rounds, n)
+        if inside.all():
+            break
+        tri = _replace(geo, tri, cert, inside, by_ties=rounds == 0)
+        cert = _certify(geo, tri)
+        if cert.ok:
+            return tri
         rounds = 1 if rounds == 0 else 2 * rounds
     return _exact_all(geo)
 
 
-def _replace(geo: Geometry, tri: np.ndarray, cert: _Certificate, inside: np.ndarray) -> np.ndarray | None:
-    """Re-triangulate each facet-connected part of the marked region exactly; None on failure."""
+def _replace(geo: Geometry, tri: np.ndarray, cert: _Certificate, inside: np.ndarray, by_ties: bool) -> np.ndarray:
+    """Re-triangulate each connected part of the marked region exactly; the parts whose exact
+    triangulation does not fit their boundary are left as they were.
+
+    With ``by_ties`` the parts are linked only across facets whose d + 2 vertices are exactly
+    co-spherical (and through flat simplices): each part is then one Delaunay cell of the
+    unperturbed points (a unit cube of a grid) that Qhull split another way.
+    """
     d = geo.d
     nb = cert.neighbours
     idx = np.flatnonzero(inside)
     local = np.full(len(tri), -1, dtype=np.int64)
     local[idx] = np.arange(len(idx))
-    a = np.repeat(idx, d + 1)
-    b = nb[idx].ravel()
-    keep = (b >= 0) & inside[np.maximum(b, 0)]
-    graph = coo_matrix((np.ones(keep.sum()), (local[a[keep]], local[b[keep]])), shape=(len(idx), len(idx)))
+    if by_ties:
+        ties = cert.ties[inside[cert.ties].all(axis=1)] if cert.ties.size else np.zeros((0, 2), np.int64)
+        flat = idx[cert.orient[idx] == 0]
+        fa, fb = np.repeat(flat, d + 1), nb[flat].ravel()
+        ok = (fb >= 0) & inside[np.maximum(fb, 0)]
+        a, b = np.concatenate([ties[:, 0], fa[ok]]), np.concatenate([ties[:, 1], fb[ok]])
+    else:
+        a = np.repeat(idx, d + 1)
+        b = nb[idx].ravel()
+        keep = (b >= 0) & inside[np.maximum(b, 0)]
+        a, b = a[keep], b[keep]
+    graph = coo_matrix((np.ones(len(a)), (local[a], local[b])), shape=(len(idx), len(idx)))
     n_parts, label = connected_components(graph, directed=False)
-    loose_part = np.full(len(cert.loose), -1, dtype=np.int64)
     has = inside[cert.located]
+    loose_part = np.full(len(cert.loose), -1, dtype=np.int64)
     loose_part[has] = label[local[cert.located[has]]]
-    if np.any(cert.unresolved & ~has):
-        return None  # a point that must become a vertex lies outside the marked region: grow
-    pieces = [tri[~inside]]
+    order = np.argsort(label, kind="stable")
+    starts = np.searchsorted(label[order], np.arange(n_parts + 1))
+    by_part = np.argsort(loose_part, kind="stable")
+    lstarts = np.searchsorted(loose_part[by_part], np.arange(n_parts + 1))
+    replaced = np.zeros(len(tri), dtype=bool)
+    pieces = []
     for part in range(n_parts):
-        mine = idx[label == part]
-        ids = np.union1d(tri[mine].ravel(), cert.loose[loose_part == part])
+        mine = idx[order[starts[part] : starts[part + 1]]]
+        extra = cert.loose[by_part[lstarts[part] : lstarts[part + 1]]]
+        ids = np.union1d(tri[mine].ravel(), extra)
         try:
             sub, sub_nb = exact_triangulation(geo, ids)
         except DegenerateInput:
-            return None
+            continue
         walls = []
-        rows = tri[mine].tolist()
-        for s, row in zip(mine.tolist(), rows):
+        for s, row in zip(mine.tolist(), tri[mine].tolist()):
             for i in range(d + 1):
                 t = int(nb[s, i])
                 if t >= 0 and not inside[t]:
                     walls.append((tuple(row[:i] + row[i + 1 :]), row[i]))
-        if walls:
-            got = _fill(geo, sub, sub_nb, walls)
-            if got is None:
-                return None
+        if walls and _same_volume(geo, sub, tri[mine]):
+            got = sub  # the part is a union of whole cells: its exact triangulation is all of it
         else:
-            got = sub
+            got = _fill(geo, sub, sub_nb, walls) if walls else sub
+        if got is None:
+            continue
+        replaced[mine] = True
         pieces.append(got)
-    return np.vstack(pieces)
+    return np.vstack([tri[~replaced]] + pieces)
 
 
 def _exact_all(geo: Geometry) -> np.ndarray:
