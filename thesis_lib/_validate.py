@@ -113,6 +113,8 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
     Thesis: §2.1.2 (a point set X in R^d).
     """
     try:
+        if np.iscomplexobj(points):
+            raise TypeError("complex numbers are not coordinates")
         arr = np.asarray(points, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise InvalidTypeError(f"{name} must be an (n, d) array of numbers: {err}") from None
@@ -136,6 +138,8 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
 def check_weights(weights, n: int) -> np.ndarray:
     """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
     try:
+        if np.iscomplexobj(weights):
+            raise TypeError("complex numbers are not weights")
         w = np.asarray(weights, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise InvalidTypeError(f"weights must be an array of numbers: {err}") from None

@@ -15,6 +15,7 @@ linear solves.
 
 from __future__ import annotations
 
+import numba
 import numpy as np
 import numpy.typing as npt
 
@@ -27,29 +28,101 @@ from .triangulation import prepare_geometry, triangulate
 __all__ = ["alpha"]
 
 
-def _face_levels(top: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
-    """All faces of the top simplices, per dimension in lexicographic order, with facet indices."""
-    k_top = top.shape[1] - 1
-    top = top[np.lexsort(top.T[::-1])]
+@numba.njit(cache=True)
+def _facet_ids(nb):
+    """Number the facets of a triangulation: ``ids[s, i]`` for the facet opposite vertex i of
+    simplex s (both occurrences of an interior facet get the same id), and one (s, i) per id."""
+    m, w = nb.shape
+    ids = np.full((m, w), -1, dtype=np.int64)
+    rep_s = np.empty(m * w, dtype=np.int64)
+    rep_i = np.empty(m * w, dtype=np.int64)
+    count = 0
+    for s in range(m):
+        for i in range(w):
+            if ids[s, i] >= 0:
+                continue
+            ids[s, i] = count
+            rep_s[count], rep_i[count] = s, i
+            t = nb[s, i]
+            if t >= 0:
+                for j in range(w):
+                    if nb[t, j] == s:
+                        ids[t, j] = count
+                        break
+            count += 1
+    return ids, rep_s[:count], rep_i[:count]
+
+
+@numba.njit(cache=True)
+def _coface_min(fidx, values, size):
+    """For each face, the smallest value among the cofaces listing it in ``fidx``."""
+    out = np.full(size, np.inf)
+    m, w = fidx.shape
+    for r in range(m):
+        v = values[r]
+        for i in range(w):
+            f = fidx[r, i]
+            if v < out[f]:
+                out[f] = v
+    return out
+
+
+def _lex_order(rows: np.ndarray, n: int) -> np.ndarray:
+    keys = row_keys(rows, n)
+    return np.lexsort(rows.T[::-1]) if keys is None else np.argsort(keys, kind="stable")
+
+
+def _face_levels(tri: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
+    """All faces of the top simplices, per dimension in lexicographic order, with facet indices.
+
+    ``fidx_of[k][r, i]`` is the row in ``levels[k - 1]`` of the facet of ``levels[k][r]`` that omits
+    its vertex i.  The facets of the top simplices come from the neighbours (no search), the
+    vertices directly; the levels in between by sorting.
+    """
+    k_top = tri.shape[1] - 1
+    order = _lex_order(tri, n)
+    inverse = np.empty_like(order)
+    inverse[order] = np.arange(len(order))
+    top = tri[order]
+    nb = np.where(nb[order] >= 0, inverse[np.maximum(nb[order], 0)], -1)
     levels: list[np.ndarray] = [None] * (k_top + 1)  # type: ignore[list-item]
     levels[k_top] = top
     fidx_of: dict[int, np.ndarray] = {}
     for k in range(k_top - 1, -1, -1):
         upper = levels[k + 1]
+        if k == 0:  # vertices: the present points, in index order
+            present = np.zeros(n, dtype=bool)
+            present[upper.ravel()] = True
+            lower = np.flatnonzero(present)
+            pos = np.full(n, -1, dtype=np.int64)
+            pos[lower] = np.arange(len(lower))
+            levels[0] = lower.reshape(-1, 1)
+            fidx_of[1] = pos[upper[:, ::-1]]
+            continue
+        if k == k_top - 1:  # facets of the top simplices, numbered through the neighbours
+            ids, rep_s, rep_i = _facet_ids(nb)
+            keep = np.array([[j for j in range(k + 2) if j != i] for i in range(k + 2)])
+            lower = np.take_along_axis(upper[rep_s], keep[rep_i], axis=1)
+            srt = _lex_order(lower, n)
+            relabel = np.empty_like(srt)
+            relabel[srt] = np.arange(len(srt))
+            levels[k] = lower[srt]
+            fidx_of[k + 1] = relabel[ids]
+            continue
         f = facets(upper).reshape(-1, k + 1)
         keys = row_keys(f, n)
         if keys is None:  # too many vertices for int64 keys: slower generic path
             lower = np.unique(f, axis=0)
-            inverse = find_rows(lower, f)
+            inverse_f = find_rows(lower, f)
         else:
-            uniq, inverse = np.unique(keys, return_inverse=True)
+            uniq, inverse_f = np.unique(keys, return_inverse=True)
             lower = np.empty((uniq.shape[0], k + 1), dtype=np.int64)
             rest = uniq.copy()
             for j in range(k, -1, -1):
                 lower[:, j] = rest % n
                 rest //= n
         levels[k] = lower
-        fidx_of[k + 1] = np.asarray(inverse, dtype=np.int64).reshape(upper.shape[0], k + 2)
+        fidx_of[k + 1] = np.asarray(inverse_f, dtype=np.int64).reshape(upper.shape[0], k + 2)
     return levels, fidx_of
 
 
@@ -81,9 +154,9 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     values that do not fit in float64 raise ``ValueError``.
     """
     geo, e = prepare_geometry(points, weights)
-    tri = triangulate(geo).simplices
+    t = triangulate(geo)
     weighted = weights is not None
-    levels, fidx_of = _face_levels(tri, geo.n)
+    levels, fidx_of = _face_levels(t.simplices, t.neighbours, geo.n)
     top = len(levels) - 1
     values: list[np.ndarray] = [None] * (top + 1)  # type: ignore[list-item]
     values[top] = orthoballs(geo, levels[top])[1]
@@ -99,8 +172,7 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
         hit = attached(geo, lower, ball, fidx.ravel(), upper.ravel())
         is_attached = np.zeros(lower.shape[0], dtype=bool)
         is_attached[fidx.ravel()[hit]] = True
-        coface_min = np.full(lower.shape[0], np.inf)
-        np.minimum.at(coface_min, fidx.ravel(), np.repeat(values[k + 1], k + 2))
+        coface_min = _coface_min(fidx, values[k + 1], lower.shape[0])
         values[k] = np.where(is_attached, coface_min, ball[1])
     # a simplex never enters before its faces (float rounding), as GUDHI's make_filtration_non_decreasing
     for k in range(1, top + 1):

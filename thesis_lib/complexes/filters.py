@@ -13,7 +13,7 @@ from __future__ import annotations
 import numba
 import numpy as np
 
-__all__ = ["orient_filter", "insphere_filter", "orthoball_float", "power_filter"]
+__all__ = ["orient_filter", "insphere_filter", "orient_one", "insphere_one", "orthoball_float", "power_filter"]
 
 _U = 2.0**-53
 _TINY = 1e-290
@@ -119,6 +119,20 @@ def insphere_filter(points, weights, simplices, y):
         det, perm = _det_perm(mat, mag, k, dbuf, pbuf)
         out[r] = _signed(det, perm, k, (d + 4) * _U)
     return out
+
+
+@numba.njit(cache=True)
+def orient_one(points, v):
+    """:func:`orient_filter` for one simplex ``v`` (d + 1 point indices)."""
+    return orient_filter(points, v.reshape(1, -1))[0]
+
+
+@numba.njit(cache=True)
+def insphere_one(points, weights, v, y):
+    """:func:`insphere_filter` for one full simplex ``v`` and point ``y``."""
+    yy = np.empty(1, dtype=np.int64)
+    yy[0] = y
+    return insphere_filter(points, weights, v.reshape(1, -1), yy)[0]
 
 
 @numba.njit(cache=True)

@@ -29,7 +29,7 @@ from itertools import combinations
 import numpy as np
 import numpy.typing as npt
 
-from .filters import insphere_filter, orient_filter
+from .filters import insphere_filter, insphere_one, orient_filter, orient_one
 
 __all__ = ["Geometry", "ScalarPredicates", "expand_det", "UNIT"]
 
@@ -188,6 +188,9 @@ class ScalarPredicates:
 
     def orient(self, v: list[int]) -> int:
         """Exact sign of det[x_i − x_0] over d + 1 points."""
+        if self.d > 3:  # the compiled filter beats Python's expansion of a 5 x 5 (or larger) determinant
+            sign = int(orient_one(self.geo.points, np.array(v, dtype=np.int64)))
+            return sign if sign else self.orient_exact(v)
         x0 = self.x(v[0])
         m = [[a - b for a, b in zip(self.x(u), x0)] for u in v[1:]]
         det, per = _det_perm_scalar(m, [[abs(t) for t in row] for row in m])
@@ -203,6 +206,12 @@ class ScalarPredicates:
     def outside(self, v: list[int], y: int) -> bool:
         """Is y outside the orthogonal sphere of the positively oriented full simplex v (perturbed)?"""
         d = self.d
+        cof_y = -1 if d % 2 == 0 else 1  # (−1)^(d+1) orient(v), orient(v) = +1
+        if d > 3:
+            sign = int(insphere_one(self.geo.points, self.geo.weights, np.array(v, dtype=np.int64), y))
+            if sign:
+                return sign == cof_y
+            return self._outside_exact(v, y)
         xy, wy = self.x(y), self.w(y)
         m, a = [], []
         for u in v:
@@ -213,9 +222,13 @@ class ScalarPredicates:
             a.append([abs(t) for t in diff] + [sq + abs(wu) + abs(wy)])
         det, per = _det_perm_scalar(m, a)
         k = d + 1
-        cof_y = -1 if d % 2 == 0 else 1  # (−1)^(d+1) orient(v), orient(v) = +1
         if abs(det) > ((d + 4) * k + k * k + 2 * k) * UNIT * 1.01 * per + 1e-290:
             return (1 if det > 0 else -1) == cof_y
+        return self._outside_exact(v, y)
+
+    def _outside_exact(self, v: list[int], y: int) -> bool:
+        d = self.d
+        cof_y = -1 if d % 2 == 0 else 1
         pts = list(v) + [y]
         x, w = self.ints(pts)
         rows = []
@@ -252,6 +265,7 @@ class Geometry:
         self.n, self.d = self.points.shape
         self.weighted = bool(np.any(self.weights != 0))
         order = np.lexsort(self.points.T[::-1])  # lexicographic: first coordinate first
+        self.order = order
         self.rank = np.empty(self.n, dtype=np.int64)
         self.rank[order] = np.arange(self.n)
         self.mantissas, self.exponents = _dyadic(self.points)

@@ -26,6 +26,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import comb
 
+import numba
 import numpy as np
 import numpy.typing as npt
 from scipy.sparse import coo_matrix
@@ -39,7 +40,7 @@ from .incremental import DegenerateInput, exact_triangulation
 from .predicates import Geometry
 from .scaling import power_of_two_scale, scale_points
 
-__all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate"]
+__all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic"]
 
 #: expected number of top simplices per point of the Delaunay triangulation of uniform random points
 #: in R^d (d = 1..8; Poisson–Delaunay cell counts), used to refuse constructions that cannot finish
@@ -50,7 +51,8 @@ _CELLS_PER_POINT = {1: 1.0, 2: 2.0, 3: 6.77, 4: 31.8, 5: 164.0, 6: 891.0, 7: 508
 class Triangulation:
     """A certified regular triangulation.
 
-    ``simplices`` (m, d + 1) rows ascending; ``neighbours`` (m, d + 1) the simplex across the facet
+    ``simplices`` (m, d + 1) rows ascending (in no particular row order; :func:`lexicographic`
+    sorts them); ``neighbours`` (m, d + 1) the simplex across the facet
     opposite each vertex (−1 on the convex hull); ``ties`` (k, 2) pairs of neighbouring simplices
     whose d + 2 vertices lie exactly on one orthogonal sphere (before perturbation).
     """
@@ -90,7 +92,7 @@ def prepare_geometry(points, weights=None) -> tuple[Geometry, int]:
 
     Thesis: §2.1.2 (a weighted point x with weight w_x ≥ 0).
     """
-    pts = as_points(points, allow_duplicates=False)
+    pts = as_points(points)
     n, d = pts.shape
     if n < d + 1:
         raise ValueError(f"a Delaunay complex in R^{d} needs at least {d + 1} points, got {n}")
@@ -101,11 +103,20 @@ def prepare_geometry(points, weights=None) -> tuple[Geometry, int]:
     sw = np.ldexp(w, 2 * e)
     if not np.all(np.isfinite(sw)) or not np.array_equal(np.ldexp(sw, -2 * e), w):
         raise ValueError("weights and coordinates differ too much in scale for float64")
-    return Geometry(spts, sw), e
+    geo = Geometry(spts, sw)
+    # duplicates are neighbours in the lexicographic order the predicates need anyway
+    srt = spts[geo.order]
+    same = np.all(srt[1:] == srt[:-1], axis=1)
+    if same.any():
+        i = int(np.argmax(same))
+        a, b = sorted((int(geo.order[i]), int(geo.order[i + 1])))
+        raise ValueError(f"duplicate points: rows {a} and {b} are equal")
+    return geo, e
 
 
 # ------------------------------------------------------------------------------------- qhull
-def _qhull_candidate(geo: Geometry) -> np.ndarray | None:
+def _qhull_candidate(geo: Geometry) -> tuple[np.ndarray, np.ndarray] | None:
+    """Qhull's lower hull of the lifted points: sorted simplices and their neighbours (unchecked)."""
     pts, w = geo.points, geo.weights
     n, d = pts.shape
     centred = pts - pts.mean(axis=0)
@@ -124,7 +135,13 @@ def _qhull_candidate(geo: Geometry) -> np.ndarray | None:
     lower = (hull.equations[:, d] < 0) & ~np.any(hull.simplices == n, axis=1)
     if not lower.any():
         return None
-    return np.sort(hull.simplices[lower], axis=1).astype(np.int64)
+    ids = np.flatnonzero(lower)
+    remap = np.full(len(hull.simplices), -1, dtype=np.int64)
+    remap[ids] = np.arange(ids.size)
+    tri = hull.simplices[ids].astype(np.int64)
+    nb = remap[hull.neighbors[ids]]
+    order = np.argsort(tri, axis=1)
+    return np.take_along_axis(tri, order, axis=1), np.take_along_axis(nb, order, axis=1)
 
 
 # ------------------------------------------------------------------------------------- certificate
@@ -167,36 +184,99 @@ def _locate(geo: Geometry, tri: np.ndarray, nb: np.ndarray, queries: np.ndarray,
     return cur
 
 
-def _certify(geo: Geometry, tri: np.ndarray) -> _Certificate:
+@numba.njit(cache=True)
+def _hint_pairs(tri, hint):
+    """Facet pairs claimed by ``hint`` (s1 < s2), checked: the back pointer exists and the facets
+    have the same vertices.  Returns (s1, i1, s2, i2, ok) with one row per claimed pair."""
+    m, w = tri.shape
+    count = 0
+    for s in range(m):
+        for i in range(w):
+            if hint[s, i] > s:
+                count += 1
+    s1 = np.empty(count, dtype=np.int64)
+    i1 = np.empty(count, dtype=np.int64)
+    s2 = np.empty(count, dtype=np.int64)
+    i2 = np.empty(count, dtype=np.int64)
+    ok = np.zeros(count, dtype=np.bool_)
+    r = 0
+    for s in range(m):
+        for i in range(w):
+            t = hint[s, i]
+            if t <= s:
+                continue
+            s1[r], i1[r], s2[r], i2[r] = s, i, t, 0
+            for j in range(w):
+                if hint[t, j] == s:
+                    i2[r] = j
+                    good = True
+                    a = 0
+                    b = 0
+                    for q in range(w - 1):
+                        if a == i:
+                            a += 1
+                        if b == j:
+                            b += 1
+                        if tri[s, a] != tri[t, b]:
+                            good = False
+                        a += 1
+                        b += 1
+                    ok[r] = good
+                    break
+            r += 1
+    return s1, i1, s2, i2, ok
+
+
+def _pairing(tri: np.ndarray, n: int, hint: np.ndarray | None):
+    """Interior facet pairs (s1, i1, s2, i2), boundary occurrences (s, i), neighbours, and the
+    simplices with a facet in three or more simplices or a neighbour ``hint`` that does not match."""
+    m, w = tri.shape
+    d = w - 1
+    bad = np.zeros(m, dtype=bool)
+    if hint is not None:
+        s1, i1, s2, i2, same = _hint_pairs(np.ascontiguousarray(tri), np.ascontiguousarray(hint))
+        bad[s1[~same]] = bad[s2[~same]] = True
+        s1, i1, s2, i2 = s1[same], i1[same], s2[same], i2[same]
+        nb = np.full((m, w), -1, dtype=np.int64)
+        nb[s1, i1], nb[s2, i2] = s2, s1
+        single = np.flatnonzero(nb.ravel() < 0)
+        return s1, i1, s2, i2, single, nb, bad
+    occ = facets(tri).reshape(-1, d)  # occurrence o = s * (d + 1) + i omits vertex i of simplex s
+    inv, counts = _group_rows(occ, n)
+    bad[np.unique(np.flatnonzero(counts[inv] > 2) // w)] = True
+    pairs = _pairs(inv, counts)
+    s1, i1 = pairs[:, 0] // w, pairs[:, 0] % w
+    s2, i2 = pairs[:, 1] // w, pairs[:, 1] % w
+    nb = np.full((m, w), -1, dtype=np.int64)
+    nb[s1, i1], nb[s2, i2] = s2, s1
+    return s1, i1, s2, i2, np.flatnonzero(counts[inv] == 1), nb, bad
+
+
+#: for k + 1 columns, the columns kept when column i is dropped
+_KEEP = {w: np.array([[j for j in range(w) if j != i] for i in range(w)]) for w in range(2, 12)}
+
+
+def _certify(geo: Geometry, tri: np.ndarray, hint: np.ndarray | None = None) -> _Certificate:
     n, d = geo.n, geo.d
     m = len(tri)
     orient = geo.orientation(tri)
-    bad = orient == 0
-    occ = facets(tri).reshape(-1, d)  # occurrence o = s * (d + 1) + i omits vertex i of simplex s
-    inv, counts = _group_rows(occ, n)
-    over = counts[inv] > 2
-    bad[np.unique(np.flatnonzero(over) // (d + 1))] = True
-    pairs = _pairs(inv, counts)
-    s1, i1 = pairs[:, 0] // (d + 1), pairs[:, 0] % (d + 1)
-    s2, i2 = pairs[:, 1] // (d + 1), pairs[:, 1] % (d + 1)
-    nb = np.full((m, d + 1), -1, dtype=np.int64)
-    nb[s1, i1], nb[s2, i2] = s2, s1
+    s1, i1, s2, i2, single, nb, bad = _pairing(tri, n, hint)
+    bad |= orient == 0
     sign1 = np.where(i1 % 2, -1, 1) * orient[s1]
     sign2 = np.where(i2 % 2, -1, 1) * orient[s2]
     flat = (orient[s1] == 0) | (orient[s2] == 0)
     same_side = ~flat & (sign1 == sign2)
     bad[s1[same_side]] = bad[s2[same_side]] = True
     test = ~flat & ~same_side
-    out = np.ones(len(pairs), dtype=bool)
-    tie = np.zeros(len(pairs), dtype=bool)
+    out = np.ones(len(s1), dtype=bool)
+    tie = np.zeros(len(s1), dtype=bool)
     if test.any():
         out[test], tie[test] = geo.outside(tri[s1[test]], tri[s2[test], i2[test]], orient[s1[test]])
     bad[s1[~out]] = bad[s2[~out]] = True
     # the boundary must be convex: no boundary vertex strictly outside a neighbouring boundary facet
-    single = np.flatnonzero(counts[inv] == 1)
     if d >= 2 and single.size:
         bs, bi = single // (d + 1), single % (d + 1)
-        faces = occ[single]  # (b, d) boundary facets
+        faces = np.take_along_axis(tri[bs], _KEEP[d + 1][bi], axis=1)  # (b, d) boundary facets
         ridge = facets(faces).reshape(-1, d - 1)
         rinv, rcounts = _group_rows(ridge, n)
         bad[bs[np.unique(np.flatnonzero(rcounts[rinv] != 2) // d)]] = True
@@ -413,21 +493,31 @@ def triangulate(geo: Geometry) -> Triangulation:
 
     Thesis: Definition 2.13 (Delaunay complex; weighted points §2.1.2).
     """
-    tri = _qhull_candidate(geo) if geo.d >= 2 else None
-    if tri is None:
-        tri = _exact_all(geo)
-    cert = _certify(geo, tri)
+    candidate = _qhull_candidate(geo) if geo.d >= 2 else None
+    if candidate is None:
+        tri, hint = _exact_all(geo), None
+    else:
+        tri, hint = candidate
+    cert = _certify(geo, tri, hint)
     if not cert.ok:
         tri = _repair(geo, tri, cert)
         cert = _certify(geo, tri)
         if not cert.ok:  # pragma: no cover - the exact construction is regular by design
             raise RuntimeError("internal error: the exact regular triangulation failed its certificate")
-    order = np.lexsort(tri.T[::-1])
+    return Triangulation(tri, cert.neighbours, cert.ties)
+
+
+def lexicographic(t: Triangulation) -> Triangulation:
+    """The same triangulation with its simplices in lexicographic order (neighbours renumbered).
+
+    Thesis: Definition 2.13 (simplices listed as DESIGN.md orders them).
+    """
+    order = np.lexsort(t.simplices.T[::-1])
     inverse = np.empty_like(order)
     inverse[order] = np.arange(len(order))
-    nb = cert.neighbours[order]
+    nb = t.neighbours[order]
     nb = np.where(nb >= 0, inverse[np.maximum(nb, 0)], -1)
-    return Triangulation(tri[order], nb, inverse[cert.ties] if cert.ties.size else cert.ties)
+    return Triangulation(t.simplices[order], nb, inverse[t.ties] if t.ties.size else t.ties)
 
 
 def regular_triangulation(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
@@ -449,5 +539,5 @@ def regular_triangulation(points, weights=None) -> tuple[np.ndarray, np.ndarray]
     perturbation (as GUDHI).  Points with an empty weighted Voronoi cell are not vertices.
     """
     geo, _ = prepare_geometry(points, weights)
-    t = triangulate(geo)
+    t = lexicographic(triangulate(geo))
     return t.simplices, t.neighbours

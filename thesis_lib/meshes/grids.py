@@ -147,7 +147,7 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float =
     Thesis: §3.4.1, Figures 3.4–3.7 (ε = π/50).
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
-    m = 2 * np.pi / epsilon
+    m = _steps(2 * np.pi, epsilon, "u")
     n = int(round(m))
     if abs(m - n) > 1e-9 * m or n < 3:
         raise ValueError(f"2π/epsilon must be an integer >= 3, got {m!r}")
@@ -187,6 +187,15 @@ def merge_coincident(vertices, simplices, tol: float = 1e-9):
     return v[kept], s2, kept
 
 
+def _steps(span: float, epsilon: float, name: str) -> float:
+    """span / epsilon, refused when it is not finite or would build a grid of more than 10⁹ points."""
+    steps = span / epsilon
+    if not np.isfinite(steps):
+        raise ValueError(f"{name}: the grid step {epsilon!r} is too small (the grid would be infinite)")
+    check_size(steps, f"grid points on the {name} axis")
+    return steps
+
+
 def _pair(value, name: str) -> tuple:
     try:
         low, high = value
@@ -197,10 +206,7 @@ def _pair(value, name: str) -> tuple:
 
 def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray:
     low, high = check_real(low, f"{name} low"), check_real(high, f"{name} high")
-    steps = (high - low) / epsilon
-    if not np.isfinite(steps):
-        raise ValueError(f"{name}: (high - low)/epsilon is not finite")
-    check_size(abs(steps), f"grid points on the {name} axis")
+    steps = _steps(high - low, epsilon, name)
     k = int(round(steps))
     if k < 1 or abs(steps - k) > 1e-6 * max(1.0, steps):
         raise ValueError(f"{name}: (high - low)/epsilon must be a positive integer, got {steps!r}")
@@ -220,7 +226,7 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0, n:
     epsilon = check_real(epsilon, "epsilon", positive=True)
     radius = check_real(radius, "radius", positive=True)
     n = check_int(n, "n", minimum=1)
-    m = np.pi / epsilon
+    m = _steps(np.pi, epsilon, "ψ")
     if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
         raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
     k = int(round(m))
@@ -246,7 +252,9 @@ def catenoid_freudenthal(
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     n = check_int(n, "n", minimum=2)
-    n_u = int(round(2 * np.pi / epsilon)) if n_u is None else check_int(n_u, "n_u", minimum=3)
+    n_u = int(round(_steps(2 * np.pi, epsilon, "u"))) if n_u is None else check_int(n_u, "n_u", minimum=3)
+    if n_u < 3:
+        raise ValueError(f"the u axis needs at least 3 steps (epsilon <= 2π/3), got epsilon = {epsilon}")
     v_axis = _grid_axis("v_range", *_pair(v_range, "v_range"), epsilon)
     w_axis = _grid_axis("w_range", *_pair(w_range, "w_range"), epsilon) if n > 2 else np.zeros(0)
     _check_grid((n_u, len(v_axis)) + (len(w_axis),) * (n - 2), (True,) + (False,) * (n - 1))
