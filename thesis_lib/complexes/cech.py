@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numba
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
 from ..simplicial import facets, find_rows
@@ -27,7 +28,7 @@ def _meb_radii(points, simplices):
     return out
 
 
-def cech(points, max_radius: float, max_dim: int) -> Filtration:
+def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
     """Čech filtration: σ enters at the radius of the smallest ball enclosing its vertices.
 
     Thesis: Definition 2.9, C(X, ε) = {σ : ∩_{x∈σ} B(x, ε) ≠ ∅}; the balls meet iff σ fits in a
@@ -38,6 +39,12 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
     points : (n, d) array.
     max_radius : largest ε kept (``inf`` keeps every simplex up to ``max_dim``: 2^n of them!).
     max_dim : largest simplex dimension built (>= 0).
+
+    Returns
+    -------
+    Filtration
+        Values are the radii of the smallest enclosing balls (vertices 0, an edge half its
+        length); points are scaled by a power of two first, so any magnitude works.
 
     Notes
     -----

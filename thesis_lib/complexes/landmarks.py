@@ -6,6 +6,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validate import as_points, check_indices, check_int, check_real, check_seed
+from .scaling import scaled
 
 __all__ = ["maxmin_landmarks", "random_landmarks", "covering_radius", "count_within"]
 
@@ -58,6 +59,7 @@ def maxmin_landmarks(points: npt.ArrayLike, n: int, seed: int) -> np.ndarray:
     """
     pts = as_points(points)
     n = _check_count(pts, n)
+    pts, _ = scaled(pts)  # distances near 1e200 would overflow when squared
     first = int(np.random.default_rng(check_seed(seed)).integers(pts.shape[0]))
     chosen = np.empty(n, dtype=np.int64)
     chosen[0] = first
@@ -88,10 +90,10 @@ def covering_radius(points: npt.ArrayLike, landmarks: npt.ArrayLike) -> float:
     """
     from scipy.spatial import cKDTree
 
-    pts = as_points(points)
+    pts, e = scaled(as_points(points))  # squared distances must not overflow
     lm = check_indices(landmarks, pts.shape[0], "landmarks")
     d, _ = cKDTree(pts[lm]).query(pts)
-    return float(d.max())
+    return float(np.ldexp(d.max(), -e))
 
 
 def count_within(points: npt.ArrayLike, targets: npt.ArrayLike, radius: float) -> int:
@@ -115,5 +117,6 @@ def count_within(points: npt.ArrayLike, targets: npt.ArrayLike, radius: float) -
     radius = check_real(radius, "radius", minimum=0.0, finite=False)
     from scipy.spatial import cKDTree
 
-    d, _ = cKDTree(tgt).query(pts)
-    return int(np.count_nonzero(d <= radius))
+    both, e = scaled(np.vstack([pts, tgt]))  # squared distances must not overflow
+    d, _ = cKDTree(both[len(pts):]).query(both[: len(pts)])
+    return int(np.count_nonzero(np.ldexp(d, -e) <= radius))

@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
+from .._validate import check_max_dim
+
 __all__ = ["nerve"]
 
 
@@ -19,13 +21,14 @@ def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[i
 
     Returns
     -------
-    Ascending index tuples sorted by dimension, then lexicographically.  An empty U_i gives no vertex.
+    list of tuple
+        Ascending index tuples sorted by dimension, then lexicographically.  An empty U_i gives no
+        vertex.
     """
     if isinstance(cover, (str, bytes)) or not hasattr(cover, "__len__"):
         raise ValueError("cover must be a sequence of sets")
     if max_dim is not None:
-        if isinstance(max_dim, bool) or not isinstance(max_dim, int) or max_dim < 0:
-            raise ValueError(f"max_dim must be an integer >= 0 or None, got {max_dim!r}")
+        max_dim = check_max_dim(max_dim)
     sets: list[frozenset] = []
     for i, u in enumerate(cover):
         if isinstance(u, (str, bytes)) or not isinstance(u, Iterable):

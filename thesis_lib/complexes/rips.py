@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
 from ._flag import edges_within, flag_levels, matrix_edges
@@ -25,7 +26,8 @@ def _as_distance_matrix(distance_matrix) -> np.ndarray:
     return np.ascontiguousarray(dm)
 
 
-def rips(points=None, max_radius: float = np.inf, max_dim: int = 2, *, distance_matrix=None) -> Filtration:
+def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
+         distance_matrix: npt.ArrayLike | None = None) -> Filtration:
     """Vietoris–Rips filtration: σ enters at ε = (largest distance between its vertices) / 2.
 
     Thesis: Definition 2.11, R(X, ε) = {σ ⊆ X : diam σ ≤ 2ε}; a flag complex (§2.1.2).
@@ -39,8 +41,11 @@ def rips(points=None, max_radius: float = np.inf, max_dim: int = 2, *, distance_
 
     Returns
     -------
-    Filtration whose values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε).
-    Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
+    Filtration
+        Values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε; ripser's
+        ``thresh`` is 2ε).  Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
+        Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
+        1e160 or 1e-170 give correct values.
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import numba
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
 from ._flag import lower_bound, flag_levels, matrix_edges
@@ -43,10 +44,20 @@ def _check_nu(nu, n_landmarks: int) -> int:
     return nu
 
 
-def witness_offsets(points, landmarks, nu: int = 1) -> np.ndarray:
+def witness_offsets(points: npt.ArrayLike, landmarks: npt.ArrayLike, nu: int = 1) -> np.ndarray:
     """The matrix ``D[i, x] = |l_i − x| − m(x)`` (landmark i, point x) both complexes are built from.
 
     Thesis: §2.1.2, m_k(x) = distance to the (k + 1)-th closest landmark, with ν = k + 1.
+
+    Parameters
+    ----------
+    points : (N, d) array, the witnesses.
+    landmarks : 1-D distinct integer indices into ``points``.
+    nu : ν >= 0 (``nu=0``: m(x) = 0).
+
+    Returns
+    -------
+    ndarray, shape (L, N)
     """
     pts = as_points(points)
     lm = _check_landmarks(pts, landmarks)
@@ -253,7 +264,8 @@ def _edge_values(D):
     return out, arg
 
 
-def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> Filtration:
+def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+            nu: int = 1) -> Filtration:
     """Witness filtration W(X, L, ε) with the thesis's (strong, un-squared) rule.
 
     Thesis: §2.1.2 "The Witness Complex" (Definition 2.16 for landmarks), with m_k and ν = k + 1.
@@ -268,8 +280,9 @@ def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> 
 
     Returns
     -------
-    Filtration on vertices ``0..L-1`` (landmark positions); value of σ is
-    max(0, min_x (max_{l∈σ} |l − x| − m(x))).
+    Filtration
+        On vertices ``0..L-1`` (landmark positions); the value of σ is
+        max(0, min_x (max_{l∈σ} |l − x| − m(x))).
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
@@ -298,14 +311,23 @@ def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> 
     return Filtration(simplices, values, validate=False)
 
 
-def lazy_witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> Filtration:
+def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+                 nu: int = 1) -> Filtration:
     """Lazy witness filtration (JavaPlex): the witness rule on edges, then the flag complex.
 
     Thesis: §2.1.2 "The Witness Complex" (edge rule with m_k, ν = k + 1) and the flag-complex
     construction of Definition 2.11's discussion; as JavaPlex's ``LazyWitnessStream`` used in §2.4.
 
-    Same parameters and vertex numbering as :func:`witness`; a simplex's value is its largest edge
-    value, so the lazy complex contains the witness complex at every ε.
+    Parameters
+    ----------
+    points, landmarks, max_radius, max_dim, nu
+        As in :func:`witness`.
+
+    Returns
+    -------
+    Filtration
+        Same vertex numbering as :func:`witness`; a simplex's value is its largest edge value, so
+        the lazy complex contains the witness complex at every ε.
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)

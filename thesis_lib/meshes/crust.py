@@ -33,9 +33,11 @@ from __future__ import annotations
 
 import numba
 import numpy as np
+import numpy.typing as npt
 from scipy.spatial import Delaunay, QhullError, cKDTree
 
 from .._validate import as_points, check_real, check_simplices
+from ..complexes.scaling import scaled
 
 __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
 
@@ -71,16 +73,22 @@ def _group_argmax(group: np.ndarray, value: np.ndarray, n_groups: int) -> np.nda
     return out
 
 
-def _samples(points) -> np.ndarray:
+def _samples(points) -> tuple[np.ndarray, int]:
     pts = as_points(points, min_points=5, allow_duplicates=False)
     if pts.shape[1] != 3:
         raise ValueError(f"crust needs points in R³, got dimension {pts.shape[1]}")
-    return pts
+    # the Crust is scale-equivariant: run it on points scaled by a power of two to about 1 (Qhull
+    # crashes on coordinates near 1e150, squared distances overflow beyond)
+    return scaled(pts)
 
 
-def _far(pts: np.ndarray, far: float | None) -> float:
+def _far(pts: np.ndarray, far: float | None, e: int) -> float:
+    """``far`` in the scaled units (default: half the bounding-box diagonal)."""
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
-    return 0.5 * diag if far is None else check_real(far, "far", positive=True)
+    if far is None:
+        return 0.5 * diag
+    with np.errstate(over="ignore"):
+        return float(np.ldexp(check_real(far, "far", positive=True), e))
 
 
 def _delaunay(pts: np.ndarray) -> Delaunay:
@@ -129,16 +137,26 @@ def _poles(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: 
     return pts + plus_vec, pts + minus_vec
 
 
-def poles(points, far: float | None = None):
-    """The poles p⁺ and p⁻ of every sample (ABK98, §4): arrays ``(n, 3)`` each.
+def poles(points: npt.ArrayLike, far: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The poles p⁺ and p⁻ of every sample (ABK98, §4).
 
-    ``far`` is the distance used for poles at infinity and caps all pole distances (default: half
-    the diagonal of the bounding box).  p⁻ falls back to the reflection of p⁺ when a cell has no
-    Voronoi vertex on the opposite side.  Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
+    Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
+
+    Parameters
+    ----------
+    points : (n, 3) samples, n >= 5, no duplicates, not coplanar.
+    far : distance used for poles at infinity, and cap of all pole distances (default: half the
+        diagonal of the bounding box).
+
+    Returns
+    -------
+    p_plus, p_minus : (n, 3) arrays; p⁻ falls back to the reflection of p⁺ when a cell has no
+        Voronoi vertex on the opposite side.
     """
-    pts = _samples(points)
+    pts, e = _samples(points)
     tri = _delaunay(pts)
-    return _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far))
+    p_plus, p_minus = _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far, e))
+    return np.ldexp(p_plus, -e), np.ldexp(p_minus, -e)
 
 
 def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, p_plus: np.ndarray, theta: float):
@@ -241,19 +259,29 @@ def _normal_filter(pts: np.ndarray, faces: np.ndarray, p_plus: np.ndarray, theta
     return np.all(c >= limit, axis=1)
 
 
-def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
+def crust_candidates(points: npt.ArrayLike, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
     """Steps 1–4 of the Crust: Delaunay triangles of S ∪ P with sample vertices, filtered by normal.
 
-    Returns ``(m, 3)`` vertex triples, each sorted, in lexicographic order.
     Thesis: §3.4, "Triangulations" ([ABK98]).
+
+    Parameters
+    ----------
+    points, far
+        As in :func:`poles`.
+    theta : normal-filter angle in (0, π/2).
+
+    Returns
+    -------
+    ndarray, shape (m, 3)
+        Vertex triples, each sorted, in lexicographic order.
     """
     theta = check_real(theta, "theta")
     if not 0 < theta < np.pi / 2:
         raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
-    pts = _samples(points)
+    pts, e = _samples(points)
     tri = _delaunay(pts)
     cc, ok = _circumcentres(pts[tri.simplices])
-    p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far))
+    p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far, e))
     faces, c0, d, t_max = _candidate_edges(pts, tri, cc, ok, p_plus, theta)
     faces = faces[_voronoi_filter(pts, faces, c0, d, t_max, np.vstack([p_plus, p_minus]))]
     faces = np.sort(faces, axis=1)
@@ -414,18 +442,28 @@ def _greedy_manifold(edge_of, order, n_edges):
     return keep
 
 
-def extract_manifold(points, triangles, prune: bool = True):
+def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: bool = True) -> tuple[np.ndarray, int]:
     """Trimming step of the Crust: sharp-edge removal, then the outer walk from an outer triangle.
 
-    Returns ``(faces, conflicts)``: consistently oriented faces (outward for a closed surface) and the
-    number of orientation conflicts met by the walk (0 for an orientable manifold result).  Faces
-    that would put a third face on an edge are left out (in visiting order), so every edge of the
-    result lies in one or two faces.
     Thesis: §3.4, "Triangulations" ([ABK98], manifold extraction).
+
+    Parameters
+    ----------
+    points : (n, 3) samples.
+    triangles : (m, 3) candidate triangles (indices into ``points``).
+    prune : remove triangles with sharp edges first.
+
+    Returns
+    -------
+    faces : consistently oriented faces (outward for a closed surface); faces that would put a
+        third face on an edge are left out (in visiting order), so every edge of the result lies in
+        one or two faces.
+    conflicts : the number of orientation conflicts met by the walk (0 for an orientable result).
     """
     pts = as_points(points, min_points=3)
     if pts.shape[1] != 3:
         raise ValueError(f"the trimming walks surfaces in R³, got points in R^{pts.shape[1]}")
+    pts, _ = scaled(pts)  # angles only: scale-invariant, and cross products stay finite
     tris = check_simplices(triangles, len(pts), "triangles", width=3)
     if prune:
         tris = _prune_sharp(pts, tris)
@@ -448,7 +486,7 @@ def extract_manifold(points, triangles, prune: bool = True):
     return orient[order[keep]], int(conflicts)
 
 
-def crust(points, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
+def crust(points: npt.ArrayLike, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
     """Triangulate a point cloud sampled from a surface in R³ with the Crust algorithm [ABK98].
 
     Parameters
@@ -466,12 +504,13 @@ def crust(points, theta: float = np.pi / 4, prune: bool = True, far: float | Non
 
     Returns
     -------
-    ``(m, 3)`` faces into ``points``, consistently oriented (outward for a closed surface).
+    ndarray, shape (m, 3)
+        Faces into ``points``, consistently oriented (outward for a closed surface).
 
     Thesis: §3.4, "Triangulations" (the Crust algorithm [ABK98], used for Figures 3.8–3.11).
     """
-    pts = _samples(points)
-    cand = crust_candidates(pts, theta, far)
+    cand = crust_candidates(points, theta, far)
+    pts, _ = _samples(points)
     if len(cand) == 0:
         raise ValueError("no triangle survived the Crust's filtering")
     try:

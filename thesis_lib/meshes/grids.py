@@ -13,11 +13,13 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
 from .._validate import InvalidTypeError, as_points, check_int, check_real, check_simplices, check_size
+from ..complexes.scaling import scaled
 from ..curvature.exact import catenoid_point, hypersphere_point, torus_point
 
 __all__ = [
@@ -102,10 +104,18 @@ def freudenthal(shape: Sequence[int] | int, periodic: bool | Sequence[bool] = Fa
     return np.concatenate(out, axis=0).astype(np.int64)
 
 
-def grid_parameters(*axes) -> np.ndarray:
+def grid_parameters(*axes: npt.ArrayLike) -> np.ndarray:
     """Parameters of the grid ``axes[0] × axes[1] × ...`` in the C order used by :func:`freudenthal`.
 
     Thesis: §3.4 (the parameter grids {0, ε, 2ε, ...}).
+
+    Parameters
+    ----------
+    *axes : 1-D arrays of finite numbers, one per parameter.
+
+    Returns
+    -------
+    ndarray, shape (Π len(axes[i]), len(axes))
     """
     try:
         arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
@@ -123,8 +133,17 @@ def grid_parameters(*axes) -> np.ndarray:
 def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
     """Periodic n × n grid on the torus, u_i = 2πi/n, v_j = 2πj/n, with one diagonal per square.
 
-    Returns ``(vertices (n², 3), faces (2n², 3))``; vertex ``i·n + j`` is X(u_i, v_j) and every face is
-    oriented by X_u × X_v (outward).  Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
+    Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
+
+    Parameters
+    ----------
+    n : grid points per circle (>= 3).
+    R, r : the torus's radii, 0 < r < R.
+
+    Returns
+    -------
+    vertices : (n², 3); vertex ``i·n + j`` is X(u_i, v_j).
+    faces : (2n², 3), every face oriented by X_u × X_v (outward).
     """
     n = check_int(n, "n", minimum=3)
     check_size(2 * n * n, "faces")
@@ -140,11 +159,21 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
     return vertices, faces
 
 
-def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float = 5.0):
+def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
+                        r: float = 5.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The thesis's "chosen points" (u, v) ∈ {0, ε, ..., 2π - ε}² on the torus, triangulated.
 
-    Returns ``(vertices, faces, uv)``.  ``2π/ε`` must be an integer (up to 1e-9).
     Thesis: §3.4.1, Figures 3.4–3.7 (ε = π/50).
+
+    Parameters
+    ----------
+    epsilon : grid step; ``2π/ε`` must be an integer >= 3 (up to 1e-9).
+    R, r : the torus's radii.
+
+    Returns
+    -------
+    vertices, faces, uv
+        As :func:`torus_grid`, and the (n², 2) parameters of the vertices.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     m = _steps(2 * np.pi, epsilon, "u")
@@ -157,17 +186,30 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float =
     return vertices, faces, grid_parameters(t, t)
 
 
-def merge_coincident(vertices, simplices, tol: float = 1e-9):
+def merge_coincident(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
+                     tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Identify vertices closer than ``tol``, then drop degenerate and repeated simplices.
 
-    Returns ``(vertices, simplices, kept)``: ``kept[i]`` is the original index of new vertex ``i``
-    (its first representative).  Simplices keep their vertex order (and so their orientation).
     Thesis: §3.4.2 (grid points at the poles of hyperspherical coordinates coincide).
+
+    Parameters
+    ----------
+    vertices : (nv, d) array.
+    simplices : (m, k) vertex indices.
+    tol : distance below which vertices are identified (>= 0).
+
+    Returns
+    -------
+    vertices, simplices, kept
+        The merged vertices, the simplices renumbered (vertex order, and so orientation, kept),
+        and ``kept[i]``, the original index of new vertex ``i`` (its first representative).
     """
     v = as_points(vertices, name="vertices")
     s = check_simplices(simplices, len(v), allow_empty=True)
     tol = check_real(tol, "tol", minimum=0.0)
-    pairs = cKDTree(v).query_pairs(tol, output_type="ndarray")
+    vs, e = scaled(v)  # squared distances must not overflow
+    with np.errstate(over="ignore"):
+        pairs = cKDTree(vs).query_pairs(float(np.ldexp(tol, e)), output_type="ndarray")
     nv = len(v)
     graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(nv, nv))
     _, label = connected_components(graph, directed=False)
@@ -213,15 +255,27 @@ def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray
     return low + epsilon * np.arange(k + 1)
 
 
-def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0, n: int = 3):
+def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
+                            n: int = 3) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of the n-sphere of radius ρ in R^{n+1} in hyperspherical coordinates.
 
-    Grid ψ_i ∈ {0, ε, ..., π} (i < n) and φ ∈ {0, ε, ..., 2π - ε} (periodic); ``π/ε`` must be an
-    integer.  The grid points on the degenerate region (ψ_i ∈ {0, π} for some i < n, where the
-    coordinates collapse) are identified, and the simplices that collapse there are dropped, which
-    leaves a closed triangulation of the whole sphere.  Returns ``(vertices, simplices, params)``
-    with ``params`` the coordinates of each vertex's first grid representative.
     Thesis: §3.4.2 (3-sphere, hyperspherical coordinates, ε = π/50).
+
+    Grid ψ_i ∈ {0, ε, ..., π} (i < n) and φ ∈ {0, ε, ..., 2π - ε} (periodic).  The grid points on
+    the degenerate region (ψ_i ∈ {0, π} for some i < n, where the coordinates collapse) are
+    identified, and the simplices that collapse there are dropped, which leaves a closed
+    triangulation of the whole sphere.
+
+    Parameters
+    ----------
+    epsilon : grid step; ``π/ε`` must be an integer >= 2.
+    radius : ρ > 0.
+    n : dimension of the sphere (>= 1).
+
+    Returns
+    -------
+    vertices, simplices, params
+        ``params`` are the coordinates of each vertex's first grid representative.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     radius = check_real(radius, "radius", positive=True)
@@ -245,10 +299,19 @@ def catenoid_freudenthal(
 ):
     """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
 
-    u is periodic with ``n_u`` steps (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε);
-    v ∈ {v_low, v_low + ε, ..., v_high} and each extra coordinate w ∈ {w_low, ..., w_high} step ε.
-    Returns ``(vertices, simplices, params)``; the boundary is v = v_low, v_high (and w = w_low, w_high).
     Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
+
+    Parameters
+    ----------
+    epsilon : grid step of v and w (the ranges must be whole multiples of it).
+    n : dimension (>= 2).
+    v_range, w_range : (low, high) of v and of each extra coordinate w.
+    n_u : steps of the periodic u (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
+
+    Returns
+    -------
+    vertices, simplices, params
+        The boundary is v = v_low, v_high (and w = w_low, w_high).
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     n = check_int(n, "n", minimum=2)

@@ -7,6 +7,7 @@ import numpy.typing as npt
 from scipy.spatial import ConvexHull, QhullError
 
 from .._validate import as_points, check_int, check_simplices
+from ..complexes.scaling import scaled
 from .sampling import sample_sphere
 
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]
@@ -62,8 +63,8 @@ def convex_hull_surface(points: npt.ArrayLike) -> np.ndarray:
     d = pts.shape[1]
     if d < 2 or len(pts) < d + 1:
         raise ValueError(f"need at least {d + 1} points in dimension >= 2, got {len(pts)} in dimension {d}")
-    try:
-        hull = ConvexHull(pts)
+    try:  # on points scaled by a power of two (Qhull crashes on coordinates near 1e150)
+        hull = ConvexHull(scaled(pts)[0])
     except QhullError:
         raise ValueError(f"the points span less than R^{d} (all on a hyperplane), so their convex hull "
                          "is not a closed hypersurface") from None

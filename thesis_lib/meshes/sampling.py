@@ -32,9 +32,21 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
                  return_uv: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the torus: (u, v) uniform, accepted with prob. (R + r cos v)/(R + r).
 
+    Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
+
     The area element of the torus is r (R + r cos v) du dv, so rejection on that density gives the
-    uniform distribution on the surface.  Returns ``(n, 3)`` points (and ``(n, 2)`` parameters when
-    ``return_uv``).  Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
+    uniform distribution on the surface.
+
+    Parameters
+    ----------
+    n : number of samples (>= 1; refused up front beyond 10⁹ coordinates).
+    R, r : the torus's radii.
+    seed : seed of the random draws.
+    return_uv : also return the parameters.
+
+    Returns
+    -------
+    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_uv``.
     """
     n = _count(n, 3)
     torus_point(0.0, 0.0, R, r)  # validates the radii
@@ -52,6 +64,17 @@ def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: in
     """``n`` points uniform w.r.t. area on the catenoid piece v ∈ v_range (area element cosh² v du dv).
 
     Thesis: §3.4.3, Figure 3.14 (point cloud on the 2-catenoid).
+
+    Parameters
+    ----------
+    n : number of samples (>= 1).
+    v_range : (low, high) with low < high.
+    seed : seed of the random draws.
+    return_params : also return the (u, v) parameters.
+
+    Returns
+    -------
+    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_params``.
     """
     n = _count(n, 3)
     try:
@@ -77,6 +100,17 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
     """``n`` points uniform on the sphere S^{n_dims - 1} of the given radius in R^{n_dims}.
 
     Thesis: §3.4.2 (spheres as test hypersurfaces).
+
+    Parameters
+    ----------
+    n : number of samples (>= 1).
+    n_dims : ambient dimension (>= 2).
+    radius : > 0.
+    seed : seed of the random draws.
+
+    Returns
+    -------
+    ndarray, shape (n, n_dims)
     """
     d = check_int(n_dims, "n_dims", minimum=2)
     n = _count(n, d)

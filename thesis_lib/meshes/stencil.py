@@ -14,18 +14,31 @@ import itertools
 from typing import Callable
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import InvalidTypeError, as_points, check_real, check_size
 
 __all__ = ["cross_stars", "neighbour_grid_mean_curvature"]
 
 
-def cross_stars(X: Callable[[np.ndarray], np.ndarray], params, epsilon: float):
+def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
+                epsilon: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Disjoint cross-polytope stars around the points X(w), w in ``params`` (k, n).
 
-    Returns ``(vertices (k(2n+1), n+1), simplices (k·2^n, n+1), centres (k,))``: vertex
-    ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and X(w_j - ε e_i) for i = 0..n-1.
     Thesis: §3.4.2 (neighbouring vertices (ψ ± ε, θ ± ε, φ ± ε)).
+
+    Parameters
+    ----------
+    X : parametrisation mapping (m, n) parameters to (m, n + 1) points.
+    params : (k, n) parameter points.
+    epsilon : grid step (> 0).
+
+    Returns
+    -------
+    vertices : (k(2n+1), n+1); vertex ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and
+        X(w_j - ε e_i) for i = 0..n-1.
+    simplices : (k·2^n, n+1).
+    centres : (k,).
     """
     w = as_points(params, name="params")
     epsilon = check_real(epsilon, "epsilon", positive=True)
@@ -55,13 +68,24 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params, epsilon: float):
 
 
 def neighbour_grid_mean_curvature(
-    X: Callable[[np.ndarray], np.ndarray], params, epsilon: float, method: str = "gram"
+    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, epsilon: float, method: str = "gram"
 ) -> np.ndarray:
     """|H| at X(w) for each w in ``params`` from its 2n grid neighbours (the thesis's approximation).
 
-    |H| = ‖∇_p hyperarea(star)‖ / (n · hyperarea(star)/2), with the gradient from
-    :func:`thesis_lib.curvature.mean_curvature_vector` (``method`` "gram" or "cot").
     Thesis: §3.4.2 (Figure 3.12) and §3.4.3 (Figure 3.13).
+
+    |H| = ‖∇_p hyperarea(star)‖ / (n · hyperarea(star)/2), with the gradient from
+    :func:`thesis_lib.curvature.mean_curvature_vector`.
+
+    Parameters
+    ----------
+    X, params, epsilon
+        As in :func:`cross_stars`.
+    method : "gram" or "cot".
+
+    Returns
+    -------
+    ndarray, shape (k,)
     """
     from ..curvature import mean_curvature_vector, simplex_hyperareas
 
