@@ -228,31 +228,12 @@ def _on_sigterm(signum, frame):
 
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``thesis-lab`` console script."""
-    from nbclient.exceptions import CellExecutionError
-
-    from .data import DataError
-    from .execute import kill_kernels
-    from .experiments import ParameterError
-    from .paths import PROJECT_ENV, ProjectError
-    from .report import ClaimError
-    from .results import ResultsError
-    from .sweep import ClusterError
-
-    args = build_parser().parse_args(argv)
-    if args.project:
-        os.environ[PROJECT_ENV] = os.path.abspath(args.project)
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if _main_thread() else None
     try:
-        code = args.func(args)
-        sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
-        return code
-    except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, ClusterError) as exc:
-        _err(f"error: {exc}")
-        return 2
-    except CellExecutionError as exc:
-        _err(f"error: the notebook failed; nothing was stored:\n{str(exc).strip()[-2000:]}")
-        return 1
+        return _main(argv)
     except KeyboardInterrupt as exc:
+        from .execute import kill_kernels
+
         kill_kernels()
         _err("cancelled: running kernels stopped; completed runs are kept, nothing partial is marked complete")
         return 143 if isinstance(exc, Terminated) else 130
@@ -263,6 +244,31 @@ def main(argv: list[str] | None = None) -> int:
     finally:
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)
+
+
+def _main(argv: list[str] | None) -> int:
+    from nbclient.exceptions import CellExecutionError
+
+    from .data import DataError
+    from .experiments import ParameterError
+    from .paths import PROJECT_ENV, ProjectError
+    from .report import ClaimError
+    from .results import ResultsError
+    from .sweep import ClusterError
+
+    args = build_parser().parse_args(argv)
+    if args.project:
+        os.environ[PROJECT_ENV] = os.path.abspath(args.project)
+    try:
+        code = args.func(args)
+        sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
+        return code
+    except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, ClusterError) as exc:
+        _err(f"error: {exc}")
+        return 2
+    except CellExecutionError as exc:
+        _err(f"error: the notebook failed; nothing was stored:\n{str(exc).strip()[-2000:]}")
+        return 1
 
 
 def _main_thread() -> bool:

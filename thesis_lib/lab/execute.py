@@ -39,6 +39,7 @@ __all__ = [
     "kernel_config",
     "kill_kernels",
     "cancel_runs",
+    "cancellable",
     "missing_on_worker",
 ]
 
@@ -147,6 +148,32 @@ def kill_kernels() -> int:
             except (ProcessLookupError, PermissionError):
                 pass
     return len(live)
+
+
+def cancellable(fn, *args, **kwargs):
+    """``fn(*args, **kwargs)`` in a worker thread, so that Ctrl-C or SIGTERM reach this (main) thread
+    at once: then no new kernel may start, the running ones are killed, and the interrupt goes on."""
+    import concurrent.futures as cf
+
+    pool = cf.ThreadPoolExecutor(max_workers=1, thread_name_prefix="thesis-lab-run")
+    future = pool.submit(fn, *args, **kwargs)
+    try:
+        while True:
+            try:
+                return future.result(timeout=0.5)
+            except cf.TimeoutError:
+                continue
+    except BaseException:
+        cancel_runs(True)
+        try:
+            kill_kernels()
+            pool.shutdown(wait=True, cancel_futures=True)
+            kill_kernels()
+        finally:
+            cancel_runs(False)
+        raise
+    finally:
+        pool.shutdown(wait=True)
 
 
 def _worker_name() -> str:

@@ -11,6 +11,7 @@ Sweeps over grids of parameters are in :mod:`thesis_lib.lab.sweep`.
 
 from __future__ import annotations
 
+import atexit
 import json
 import os
 import shutil
@@ -22,7 +23,7 @@ from pathlib import Path
 import nbformat
 
 from . import atomic
-from .execute import DEFAULT_MAX_OUTPUT_MB, LabKernelManager, RunOutput, RunSpec, execute, kernel_config
+from .execute import DEFAULT_MAX_OUTPUT_MB, LabKernelManager, RunOutput, RunSpec, cancellable, execute, kernel_config
 from .experiments import (
     OUTPUT_PARAMETER,
     ParameterError,
@@ -175,13 +176,14 @@ def run(
     stderr is a terminal) shows which cell runs and the elapsed time.
     """
     params = resolve_parameters(name, overrides)
+    atomic.clean_stale((root or runs_dir()) / name)
     previous = read_run(name, params, root)
     if previous.status == "ok" and not force:
         previous.status = "skipped"
         return previous
     if progress is None:
         progress = sys.stderr.isatty()
-    output = execute(local_spec(name, params, timeout=timeout), progress=progress)
+    output = cancellable(execute, local_spec(name, params, timeout=timeout), progress=progress)
     return write_run(name, params, output, root)
 
 
@@ -229,7 +231,10 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
             kernel_manager_class=LabKernelManager,
             config=kernel_config(env),
         )
-        client.execute()
+        try:
+            cancellable(client.execute)
+        finally:  # nbclient leaves its exit-time kernel clean-up registered when a run is cancelled
+            atexit.unregister(client._cleanup_kernel)
         for cell in nb.cells:
             cell.metadata.pop("execution", None)
         with atomic.replacing(nb_path) as tmp_nb:
