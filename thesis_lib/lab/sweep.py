@@ -154,12 +154,18 @@ def dask_client(
                 cluster = LocalCluster(n_workers=_check_jobs(jobs), threads_per_worker=1, processes=True,
                                        dashboard_address=":0", silence_logs=logging.ERROR)
                 client = Client(cluster)
-        except (OSError, TimeoutError, ValueError) as exc:
+        except (OSError, TimeoutError, ValueError, RuntimeError) as exc:
             if cluster is not None:
                 cluster.close()
-            raise ClusterError(f"could not reach the Dask scheduler at {scheduler!r} within {timeout:g} s: {exc}") from None
+            if scheduler:
+                raise ClusterError(f"could not reach the Dask scheduler at {scheduler!r} within {timeout:g} s: {exc}") from None
+            raise ClusterError(f"could not start a local Dask cluster of {jobs} workers: {exc}") from None
         try:
-            client.wait_for_workers(1, timeout=max(timeout, 60.0))
+            try:
+                client.wait_for_workers(1, timeout=max(timeout, 60.0))
+            except TimeoutError:
+                raise ClusterError(f"no Dask worker joined the scheduler at {client.scheduler.address} "
+                                   f"within {max(timeout, 60.0):g} s") from None
             missing = {w: m for w, m in client.run(_by_value(missing_on_worker)).items() if m}
             if missing:
                 worker, names = next(iter(missing.items()))
