@@ -125,7 +125,7 @@ def _cmd_report(args) -> int:
     from .report import markdown, report, to_json
 
     rows = report()
-    print(to_json(rows) if args.json else markdown(rows))
+    print(to_json(rows) if args.json else markdown(rows, with_summary=True))
     return 0
 
 
