@@ -34,7 +34,7 @@ scalars = st.one_of(st.text(max_size=30), st.integers(), st.integers(min_value=1
                     st.from_regex(r" ?\[?[-+0-9., eEnaif]{0,12}\]? ?", fullmatch=True))
 values = st.one_of(scalars, st.lists(scalars, max_size=4), st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
                    st.tuples(st.integers(), st.integers()))
-TOY_KEYS = ["n", "x", "label", "flag", "sizes", "fail", "sleep", "data_name", "output_mb", "output_dir"]
+TOY_KEYS = ["n", "x", "label", "flag", "sizes", "fail", "sleep", "data_name", "output_mb", "work", "output_dir"]
 keys = st.one_of(st.sampled_from(TOY_KEYS), st.text(max_size=10))
 
 

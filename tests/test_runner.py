@@ -34,7 +34,7 @@ def root(tmp_path, monkeypatch):
 
 
 TOY_DEFAULTS = {"n": 3, "x": 0.5, "label": "a", "flag": False, "sizes": [60, 100], "fail": False,
-                "sleep": 0.0, "data_name": "", "output_mb": 0.0}
+                "sleep": 0.0, "data_name": "", "output_mb": 0.0, "work": 0}
 
 
 def test_parameters_are_read_from_the_tagged_cell(root):
@@ -297,3 +297,28 @@ def test_cli_works_from_any_folder_with_project(root, tmp_path):
     proc = subprocess.run([sys.executable, "-m", "thesis_lib.lab.cli", "list"], cwd=root / "experiments",
                           env=env, capture_output=True, text=True)
     assert proc.returncode == 0 and proc.stdout.startswith("toy: ")  # found upward from the current folder
+
+
+def test_kernels_start_with_transport_encryption_so_ipykernel_does_not_warn(tmp_path):
+    """Issue 10: the cause of `Kernel is running over TCP without encryption` is a manager that gives
+    the kernel no CurveZMQ keys; LabKernelManager provisions them (the kernelspec declares support)."""
+    import asyncio
+
+    from thesis_lib.lab.execute import LabKernelManager, kernel_config
+
+    log = tmp_path / "kernel.log"
+
+    async def start_and_stop():
+        km = LabKernelManager(kernel_name="python3", config=kernel_config(log=log))
+        await km.start_kernel()
+        kc = km.client()
+        kc.start_channels()
+        await kc.wait_for_ready(timeout=120)
+        info = km.get_connection_info()
+        kc.stop_channels()
+        await km.shutdown_kernel(now=True)
+        return info
+
+    info = asyncio.run(start_and_stop())
+    assert info["transport"] == "tcp" and info.get("curve_publickey")
+    assert "without encryption" not in log.read_text()

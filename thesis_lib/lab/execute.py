@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from jupyter_client import AsyncKernelManager
-from traitlets import Dict
+from traitlets import Dict, Unicode
 
 from . import atomic
 from .experiments import OUTPUT_PARAMETER
@@ -82,13 +82,19 @@ class LabKernelManager(AsyncKernelManager):
     """The kernel manager of every run: encrypted transport, a per-run environment, tracked kernels."""
 
     extra_env = Dict(config=True, help="variables added to the kernel's environment")
+    kernel_log = Unicode("", config=True, help="file for the kernel process's own output (its log lines)")
 
     async def start_kernel(self, **kw):  # noqa: D102 (same as the base class)
         if _CANCELLED.is_set():
             raise RuntimeError("the run was cancelled before its kernel started")
         env = dict(kw.pop("env", None) or os.environ)
         env.update(self.extra_env)
-        await super().start_kernel(env=env, **kw)
+        if self.kernel_log:  # the kernel's log lines (e.g. ipykernel's notice of an interrupt at shut-down)
+            with open(self.kernel_log, "ab") as log:  # stay with the run, never on the user's terminal
+                kw.update(stdout=log, stderr=log)
+                await super().start_kernel(env=env, **kw)
+        else:
+            await super().start_kernel(env=env, **kw)
         process = getattr(self.provisioner, "process", None)
         if process is not None:
             with _LIVE_LOCK:
@@ -104,7 +110,7 @@ class LabKernelManager(AsyncKernelManager):
         await super().cleanup_resources(restart=restart)
 
 
-def kernel_config(extra_env: dict[str, str] | None = None):
+def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | None = None):
     """traitlets configuration for a notebook client: :class:`LabKernelManager` with encryption.
 
     ipykernel warns ``Kernel is running over TCP without encryption`` when its manager gives it no
@@ -122,6 +128,7 @@ def kernel_config(extra_env: dict[str, str] | None = None):
     else:
         cfg.LabKernelManager.transport = "ipc"
     cfg.LabKernelManager.extra_env = dict(extra_env or {})
+    cfg.LabKernelManager.kernel_log = str(log or "")
     return cfg
 
 
@@ -279,12 +286,15 @@ def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False
                 execution_timeout=spec.timeout,
                 resources={"metadata": {"path": str(project / "experiments")}},
                 kernel_manager_class=LabKernelManager,
-                config=kernel_config(env),
+                config=kernel_config(env, log=scratch / "kernel.log"),
             )
         except Exception as exc:  # papermill re-raises the notebook's error; keep its message
             result.status = "failed"
             result.error = _error_text(exc)
             (out / "error.txt").write_text(str(exc))
+            log = scratch / "kernel.log"
+            if log.is_file() and log.stat().st_size:
+                shutil.copy(log, out / "kernel.log")
         try:
             result.files = _collect(out, spec.max_output_mb)
         except OutputTooLarge as exc:

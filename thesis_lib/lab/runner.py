@@ -229,7 +229,7 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
             kernel_name="python3",
             resources={"metadata": {"path": str(nb_path.parent)}},
             kernel_manager_class=LabKernelManager,
-            config=kernel_config(env),
+            config=kernel_config(env, log=staging_root / "kernel.log"),
         )
         try:
             cancellable(client.execute)
