@@ -14,6 +14,7 @@ import time
 from pathlib import Path
 
 import nbformat
+import pytest
 
 FIXTURES = Path(__file__).resolve().parent / "fixtures"
 PAYLOAD = b"ATOM      1  N   GLY A   1\n"
@@ -37,6 +38,25 @@ def make_project(root: Path, experiments: tuple[str, ...] = ("toy",)) -> Path:
     )
     (root.parent / "shared" / "data").mkdir(parents=True, exist_ok=True)
     return root
+
+
+@pytest.fixture
+def root(tmp_path, monkeypatch):
+    """A throw-away project with the fast experiment ``toy`` (import this fixture into a test file)."""
+    project = make_project(tmp_path / "project")
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(project))
+    monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "shared"))
+    return project
+
+
+def commit_fake_results(root: Path) -> Path:
+    """A committed default run of ``toy`` that no run could write: results, a figure, a kept sweep."""
+    folder = root / "experiments" / "results" / "toy"
+    (folder / "sweeps").mkdir(parents=True)
+    (folder / "results.json").write_text('{"square": -1}\n')
+    (folder / "old.png").write_bytes(b"\x89PNG old")
+    (folder / "sweeps" / "kept.md").write_text("| n |\n|---|\n| 1 |\n")
+    return folder
 
 
 def set_default(root: Path, name: str, key: str, value: str) -> None:

@@ -14,6 +14,7 @@ import uuid
 import pytest
 from lab_helpers import (
     TOY_RESULTS,
+    commit_fake_results,
     cli,
     cli_env,
     complete_runs_are_whole,
@@ -33,15 +34,6 @@ COMMANDS = {
 SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGKILL)
 
 
-def _committed(root):
-    folder = root / "experiments" / "results" / "toy"
-    (folder / "sweeps").mkdir(parents=True)
-    (folder / "results.json").write_text('{"square": -1}\n')
-    (folder / "old.png").write_bytes(b"\x89PNG old")
-    (folder / "sweeps" / "kept.md").write_text("| n |\n|---|\n| 1 |\n")
-    return folder
-
-
 def _stored_whole(folder) -> bool:
     """The committed folder is a whole new store: the toy's results, its sweeps kept, nothing stale."""
     files = tree_bytes(folder)
@@ -58,7 +50,7 @@ def _leftovers(root) -> list[str]:
 def test_killed_at_random_moments_loses_nothing_and_leaves_nothing_running(tmp_path, command):
     root = make_project(tmp_path / "project")
     set_default(root, "toy", "sleep", "1.5")
-    committed = _committed(root)
+    committed = commit_fake_results(root)
     before = tree_bytes(committed)
     rng = random.Random()
     for sig in SIGNALS:

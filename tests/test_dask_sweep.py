@@ -13,7 +13,8 @@ import uuid
 from pathlib import Path
 
 import pytest
-from lab_helpers import cli, cli_env, complete_runs_are_whole, make_project, popen_args, table_rows, tagged_processes, wait_until
+from lab_helpers import cli, cli_env, complete_runs_are_whole, popen_args, table_rows, tagged_processes, wait_until
+from lab_helpers import root  # noqa: F401 (the project fixture)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab.paths import project_root
@@ -27,14 +28,6 @@ def client():
     """A LocalCluster of 2 single-threaded worker processes, started the way `--executor dask` does."""
     with dask_client(None, jobs=2, retries=2) as c:
         yield c
-
-
-@pytest.fixture
-def root(tmp_path, monkeypatch):
-    project = make_project(tmp_path / "project")
-    monkeypatch.setenv("THESIS_LAB_PROJECT", str(project))
-    monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "shared"))
-    return project
 
 
 def test_two_circles_landmarks_on_the_cluster_equals_the_local_sweep(client, tmp_path):

@@ -16,7 +16,8 @@ import pytest
 from helpers import fuzz_call, fuzz_settings
 from hypothesis import given
 from hypothesis import strategies as st
-from lab_helpers import PAYLOAD, make_project
+from lab_helpers import PAYLOAD
+from lab_helpers import root  # noqa: F401 (the project fixture)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import data, execute, runner
@@ -36,14 +37,6 @@ values = st.one_of(scalars, st.lists(scalars, max_size=4), st.dictionaries(st.te
                    st.tuples(st.integers(), st.integers()))
 TOY_KEYS = ["n", "x", "label", "flag", "sizes", "fail", "sleep", "data_name", "output_mb", "work", "output_dir"]
 keys = st.one_of(st.sampled_from(TOY_KEYS), st.text(max_size=10))
-
-
-@pytest.fixture
-def root(tmp_path, monkeypatch):
-    project = make_project(tmp_path / "project")
-    monkeypatch.setenv("THESIS_LAB_PROJECT", str(project))
-    monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "shared"))
-    return project
 
 
 def _inside(path: Path, folder: Path) -> bool:

@@ -16,21 +16,13 @@ import termios
 
 import nbformat
 import pytest
-from lab_helpers import TOY_RESULTS, cli, cli_env, make_project, popen_args, set_default, tree_bytes
+from lab_helpers import TOY_RESULTS, cli, cli_env, commit_fake_results, popen_args, set_default, tree_bytes
+from lab_helpers import root  # noqa: F401 (the project fixture)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import execute, runner
 from thesis_lib.lab.results import DEFAULT_RUN_ENV
 from thesis_lib.lab.runner import ParameterError
-
-
-@pytest.fixture
-def root(tmp_path, monkeypatch):
-    """A throw-away project with one fast experiment, ``toy``."""
-    project = make_project(tmp_path / "project")
-    monkeypatch.setenv("THESIS_LAB_PROJECT", str(project))
-    monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "shared"))
-    return project
 
 
 TOY_DEFAULTS = {"n": 3, "x": 0.5, "label": "a", "flag": False, "sizes": [60, 100], "fail": False,
@@ -199,31 +191,22 @@ def test_run_hash_refuses_non_json_values():
         runner.run_hash({"x": float("nan")})
 
 
-def _committed(root):
-    folder = root / "experiments" / "results" / "toy"
-    (folder / "sweeps").mkdir(parents=True)
-    (folder / "results.json").write_text('{"square": -1}\n')
-    (folder / "figure.png").write_bytes(b"\x89PNG old")
-    (folder / "sweeps" / "abc.md").write_text("| n |\n|---|\n| 1 |\n")
-    return folder
-
-
 def test_store_executes_in_place_and_replaces_results_keeping_sweeps(root, monkeypatch, tmp_path):
     monkeypatch.setenv(DEFAULT_RUN_ENV, str(tmp_path / "elsewhere"))  # storing is never redirected
-    folder = _committed(root)
+    folder = commit_fake_results(root)
     path = runner.store("toy")
     nb = nbformat.read(path, as_version=4)
     assert all(c.execution_count for c in nb.cells if c.cell_type == "code")
     assert json.loads((folder / "results.json").read_text()) == TOY_RESULTS
-    assert not (folder / "figure.png").exists()  # a stored run holds what the notebook made, nothing stale
-    assert (folder / "sweeps" / "abc.md").read_text().startswith("| n |")
+    assert not (folder / "old.png").exists()  # a stored run holds what the notebook made, nothing stale
+    assert (folder / "sweeps" / "kept.md").read_text().startswith("| n |")
     assert not [p for p in folder.parent.iterdir() if p.name.startswith(".")]
     assert not (tmp_path / "elsewhere").exists()
 
 
 def test_a_failing_store_leaves_committed_results_byte_identical(root):
     """Regression (issue 11): store cleared results.json when the notebook started, then failed."""
-    folder = _committed(root)
+    folder = commit_fake_results(root)
     before, notebook = tree_bytes(folder), (root / "experiments" / "toy.ipynb").read_bytes()
     set_default(root, "toy", "fail", "True")
     notebook = (root / "experiments" / "toy.ipynb").read_bytes()

@@ -7,20 +7,13 @@ import concurrent.futures as cf
 import csv
 
 import pytest
-from lab_helpers import cli, make_project, table_rows
+from lab_helpers import cli, table_rows
+from lab_helpers import root  # noqa: F401 (the project fixture)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import sweep as lab_sweep
 from thesis_lib.lab.experiments import ParameterError
 from thesis_lib.lab.sweep import collect, expand_grid, parse_shard, stored_sweeps, sweep
-
-
-@pytest.fixture
-def root(tmp_path, monkeypatch):
-    project = make_project(tmp_path / "project")
-    monkeypatch.setenv("THESIS_LAB_PROJECT", str(project))
-    monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "shared"))
-    return project
 
 
 def test_sweep_resumes_keeps_going_past_failures_and_writes_a_table(root):

@@ -11,13 +11,13 @@ from __future__ import annotations
 import hashlib
 import re
 import shutil
-import tomllib
 import urllib.request
 from dataclasses import dataclass, fields
 from pathlib import Path, PurePosixPath
 
 from . import atomic
 from .paths import project_root, shared_dir
+from .registry import read_tables
 
 __all__ = ["DataError", "Entry", "manifest", "path", "verify", "fetch", "sha256_of", "check", "inside"]
 
@@ -104,18 +104,7 @@ def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
         a ``file`` outside ``data/``, a repeated name).
     """
     path = Path(manifest_file) if manifest_file else _manifest_path()
-    try:
-        with open(path, "rb") as fh:
-            raw = tomllib.load(fh)
-    except FileNotFoundError:
-        raise DataError(f"no data manifest at {path}") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise DataError(f"{path} is not valid TOML: {exc}") from None
-    except UnicodeDecodeError as exc:
-        raise DataError(f"{path} is not UTF-8 text: {exc}") from None
-    items = raw.get("file", [])
-    if not isinstance(items, list):
-        raise DataError(f"{path}: 'file' must be an array of tables ([[file]])")
+    items = read_tables(path, "file", DataError)
     entries: dict[str, Entry] = {}
     for item in items:
         entry = _validated(item, path)

@@ -22,12 +22,12 @@ import functools
 import json
 import math
 import re
-import tomllib
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
 from .paths import project_root, shared_dir
+from .registry import read_tables
 from .results import ResultsError, check_name, load
 from .tables import markdown_table
 
@@ -135,16 +135,7 @@ def load_claims(directory: Path | None = None) -> list[Claim]:
     """Every claim of the registry in the thesis's order (stable); ids must be unique."""
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
-        try:
-            with open(file, "rb") as fh:
-                raw = tomllib.load(fh)
-        except tomllib.TOMLDecodeError as exc:
-            raise ClaimError(f"{file} is not valid TOML: {exc}") from None
-        except UnicodeDecodeError as exc:
-            raise ClaimError(f"{file} is not UTF-8 text: {exc}") from None
-        items = raw.get("claim", [])
-        if not isinstance(items, list):
-            raise ClaimError(f"{file}: 'claim' must be an array of tables ([[claim]])")
+        items = read_tables(file, "claim", ClaimError)
         claims += [_parse(item, file.name) for item in items]
     ids = [c.id for c in claims]
     dup = {i for i in ids if ids.count(i) > 1}
