@@ -53,6 +53,13 @@ def test_sweep_in_parallel_gives_the_same_table(root):
     assert table_rows(parallel) == table_rows(serial)
 
 
+def test_a_result_named_like_a_parameter_gets_its_own_column(root):
+    runs, table = sweep("toy", {"x": ["2"]}, progress=False)
+    header = table.read_text().splitlines()[0].split(",")
+    assert header[:2] == ["x", "status"] and "x (result)" in header and header.count("x") == 1
+    assert table_rows(table)[0]["x (result)"] == "2.0"
+
+
 def test_duplicate_values_run_once(root):
     """Regression (issue 11): two identical values ran concurrently in the same folder."""
     assert [p["n"] for p in expand_grid("toy", {"n": [1, "1", " 1", 2, 1]})] == [1, 2]

@@ -237,7 +237,8 @@ def _running(pending: dict, client) -> int:
 def _table(rows: list[RunResult], keys: list[str], volatile: bool) -> tuple[str, str]:
     result_keys = sorted({k for r in rows for k in r.results})
     extra = list(VOLATILE) if volatile else []
-    header = keys + ["status"] + result_keys + extra + ["run"]
+    named = [f"{k} (result)" if k in keys or k in ("status", "run", *VOLATILE) else k for k in result_keys]
+    header = keys + ["status"] + named + extra + ["run"]
     lines = []
     for r in rows:
         status = "ok" if r.status == "skipped" else r.status
