@@ -243,8 +243,9 @@ def test_sampled_barcodes_invisible_bars_and_readings():
     # On the 0.02 grid only [0.011, 0.05) and [0.3, ...) hold a sample; on the 0.005 grid all four do.
     assert invisible_bars(iv, 0.02, 0.005, (0.0, 0.5)) == 2
     assert invisible_bars(iv[2:], 0.02, 0.005, (0.0, 0.5)) == 0
-    with pytest.raises(ValueError, match="finer"):
-        invisible_bars(iv, 0.02, 0.05, (0.0, 0.5))
+    assert invisible_bars(iv, 0.02, 0.02, (0.0, 0.5)) == 0
+    with pytest.raises(ValueError, match="increment"):
+        invisible_bars(iv, 0.02, 0.0, (0.0, 0.5))
     # Radius grid: steps of 0.1 in ε = sqrt(ε²); [0.01, 0.04) in ε² is [0.1, 0.2) in ε.
     np.testing.assert_allclose(sample_barcode([[0.01, 0.04]], 0.1, (0.0, 1.0), grid="radius"), [[0.01, 0.04]])
     assert len(sample_barcode([[0.012, 0.015]], 0.1, (0.0, 1.0), grid="radius")) == 0

@@ -452,10 +452,9 @@ def invisible_bars(
 
     A bar [b, d) is seen on a grid when a sample falls in it (:func:`discretise_intervals`); a bar
     seen on the finer grid but born and dead between two samples of the coarser one is a hole that
-    only the finer increments detect.  The count is 0 when refining detects nothing new.
+    only the finer increments detect.  The count is 0 when refining detects nothing new (and when
+    the two increments are equal).
     """
-    if not (np.isfinite(finer) and 0 < finer < increment):
-        raise ValueError(f"finer must be a positive increment smaller than {increment!r}, got {finer!r}")
     _, seen_fine = _snap(intervals, finer, window)
     _, seen_coarse = _snap(intervals, increment, window)
     return int(np.count_nonzero(seen_fine & ~seen_coarse))
