@@ -3,8 +3,9 @@
 from .algorithm import compute_intervals, trace_matrices
 from .barcode import Barcode
 from .engine import persistence
+from .implicit import rips_persistence
 
-__all__ = ["Barcode", "compute_intervals", "persistence", "trace_matrices"]
+__all__ = ["Barcode", "compute_intervals", "persistence", "rips_persistence", "trace_matrices"]
 from .plotting import plot_barcode, plot_diagram
 
 __all__ += ["plot_barcode", "plot_diagram"]

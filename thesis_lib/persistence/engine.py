@@ -497,6 +497,8 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
 
     Notes
     -----
+    A filtration cut at ``max_dim`` (``filtration.truncated``, set by :func:`rips`) has an incomplete
+    top dimension: the barcode marks it (``complete_dimensions``) and shows it only when asked.
     The top dimension's essential classes (a truncated Rips complex has millions) are listed lazily:
     they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
@@ -557,5 +559,6 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
     # often millions of classes of a truncated complex, which nobody reads)
     essential_top = {D: (K.values[D], ~cleared)}
     return Barcode(
-        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top
+        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top,
+        complete=range(D if getattr(K, "truncated", False) else D + 1),
     )

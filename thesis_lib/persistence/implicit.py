@@ -50,6 +50,10 @@ from .kernels import grow, heap_push, mod_inverse, pop_run_pivot
 
 __all__ = ["rips_persistence", "rips_graph"]
 
+#: up to this many points a dense distance matrix (8 n² bytes, 128 MB at the limit) is kept for
+#: constant-time lookups; beyond, distances are found by binary search in the neighbour lists
+DENSE_MAX = 4096
+
 
 # ---------------------------------------------------------------------------- the graph
 def rips_graph(points=None, *, max_radius: float = np.inf, distance_matrix=None):
@@ -160,6 +164,17 @@ def _by_distance(indptr, nbr, length):
     return dnbr, dlen
 
 
+@numba.njit(cache=True)
+def _dense(n, indptr, nbr, length):
+    """The n × n distance matrix of the graph, inf where there is no edge (the diagonal too: as in
+    the neighbour lists, a vertex is not its own neighbour)."""
+    D = np.full((n, n), np.inf)
+    for u in range(n):
+        for e in range(indptr[u], indptr[u + 1]):
+            D[u, nbr[e]] = length[e]
+    return D
+
+
 # ---------------------------------------------------------------------------- combinatorial number system
 @numba.njit(cache=True)
 def _binomials(n, kmax):
@@ -191,8 +206,11 @@ def _vertices(idx, k, n, B, out):
 
 
 @numba.njit(cache=True)
-def _dist(indptr, nbr, length, u, v):
-    """Distance of u and v from u's neighbour list (decreasing): binary search; inf if no edge."""
+def _dist(indptr, nbr, length, D, u, v):
+    """Distance of u and v: from the dense matrix ``D`` when there is one (small n), else by binary
+    search in u's neighbour list (decreasing); inf if there is no edge."""
+    if D.shape[0] > 0:
+        return D[u, v]
     lo, hi = indptr[u], indptr[u + 1]
     end = hi
     while lo < hi:
@@ -278,7 +296,7 @@ def _upper(arr, lo, hi, x):
 
 
 @numba.njit(cache=True)
-def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, dnbr, dlen, B, cur, od, oi, om):
+def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen, B, cur, od, oi, om):
     """The earliest coface of the k-simplex σ if it has σ's diameter (else −1), and its m.
 
     The cofaces of σ's diameter are σ ∪ {j} for the j within ``diam`` of every vertex; the earliest is
@@ -306,7 +324,7 @@ def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, dnbr, dlen, B,
             continue
         ok = True
         for i in range(k + 1):
-            if i != best and _dist(indptr, nbr, length, verts[i], j) > diam:
+            if i != best and _dist(indptr, nbr, length, D, verts[i], j) > diam:
                 ok = False
                 break
         if ok:
@@ -324,13 +342,13 @@ def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, dnbr, dlen, B,
 
 
 @numba.njit(cache=True)
-def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, B, w, pd):
+def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd):
     """The latest facet of the (k1)-simplex ``tau`` if it has tau's diameter, else −1; also its
     position r (the omitted vertex is w[r], so its sign in ∂τ is (−1)^r)."""
     _vertices(tau, k1, n, B, w)
     for a in range(k1 + 1):
         for b in range(a + 1, k1 + 1):
-            d = _dist(indptr, nbr, length, w[a], w[b])
+            d = _dist(indptr, nbr, length, D, w[a], w[b])
             pd[a, b] = d
             pd[b, a] = d
     idx_above = np.int64(0)
@@ -402,12 +420,15 @@ def _h0(n, order, ed, ei, B):
     deaths = np.empty(n, dtype=np.float64)
     nd = 0
     positive = np.zeros(order.shape[0], dtype=np.bool_)
-    w = np.empty(2, dtype=np.int64)
     for t in range(order.shape[0]):
         e = order[t]
-        _vertices(ei[e], 1, n, B, w)
-        a = _find(parent, w[0])
-        b = _find(parent, w[1])
+        u = np.int64((1.0 + np.sqrt(1.0 + 8.0 * ei[e])) / 2.0)  # ei = C(u, 2) + v with v < u
+        while u * (u - 1) // 2 > ei[e]:
+            u -= 1
+        while (u + 1) * u // 2 <= ei[e]:
+            u += 1
+        a = _find(parent, u)
+        b = _find(parent, ei[e] - u * (u - 1) // 2)
         if a == b:
             positive[e] = True
             continue
@@ -425,7 +446,7 @@ def _h0(n, order, ed, ei, B):
 
 # ---------------------------------------------------------------------------- apparent pairs
 @numba.njit(cache=True, parallel=True)
-def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, dnbr, dlen, B, nthreads):
+def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nthreads):
     """For each candidate k-simplex: its earliest coface if that has the same diameter (else −1), and
     whether the two form a (zero) apparent pair.  Independent per candidate: ``prange`` over them."""
     m = cand_i.shape[0]
@@ -443,12 +464,12 @@ def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, dnbr, dlen, B, nthreads
         pd = np.zeros((k + 2, k + 2), dtype=np.float64)
         for c in range(t * chunk, min(m, (t + 1) * chunk)):
             _vertices(cand_i[c], k, n, B, verts)
-            t_c, m_c = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, dnbr, dlen, B,
-                                           cur, od, oi, om)
+            t_c, m_c = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, D, dnbr, dlen,
+                                           B, cur, od, oi, om)
             if t_c != -1:
                 tau[c] = t_c
                 sign[c] = 1 - 2 * (m_c & 1)
-                f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, B, w, pd)
+                f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd)
                 apparent[c] = f == cand_i[c]
     return tau, sign, apparent
 
@@ -753,6 +774,7 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     B = _binomials(np.int64(n), np.int64(max_dim + 1))
     maxdeg = int(np.diff(indptr).max(initial=0))
     dnbr, dlen = _by_distance(indptr, nbr, length)
+    D = _dense(np.int64(n), indptr, nbr, length) if n <= DENSE_MAX else np.empty((0, 0))
     intervals: dict[int, np.ndarray] = {}
     # ---- H0: union–find
     ed, ei = _edges(np.int64(n), indptr, nbr, length)
@@ -770,7 +792,7 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     all_i, all_d = ei, ed  # every (k−1)-simplex, to generate the k-simplices
     cand_i, cand_d = ei[positive], ed[positive]
     for k in range(1, max_dim):
-        tau, sign, apparent = _apparent(k, cand_i, cand_d, np.int64(n), indptr, nbr, length, dnbr, dlen, B,
+        tau, sign, apparent = _apparent(k, cand_i, cand_d, np.int64(n), indptr, nbr, length, D, dnbr, dlen, B,
                                         np.int64(4 * numba.get_num_threads()))
         app_keys, app_vals = _apparent_table(cand_i, tau, apparent)
         keep = ~apparent
