@@ -12,3 +12,6 @@ __all__ += ["plot_barcode", "plot_diagram"]
 from .summaries import long_bars, long_betti
 
 __all__ += ["long_bars", "long_betti"]
+from .apparent import apparent_pairs, apparent_summary
+
+__all__ += ["apparent_pairs", "apparent_summary"]

@@ -445,43 +445,82 @@ def _h0(n, order, ed, ei, B):
 
 
 # ---------------------------------------------------------------------------- apparent pairs
+@numba.njit(cache=True)
+def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, tau, sign, apparent):
+    """:func:`_apparent` for the candidates ``lo .. hi − 1`` (each one independent of the others)."""
+    verts = np.empty(k + 2, dtype=np.int64)
+    cur = np.empty(k + 2, dtype=np.int64)
+    od = np.empty(1, dtype=np.float64)
+    oi = np.empty(1, dtype=np.int64)
+    om = np.empty(1, dtype=np.int64)
+    w = np.empty(k + 2, dtype=np.int64)
+    pd = np.zeros((k + 2, k + 2), dtype=np.float64)
+    for c in range(lo, hi):
+        _vertices(cand_i[c], k, n, B, verts)
+        t_c, m_c = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, D, dnbr, dlen,
+                                       B, cur, od, oi, om)
+        if t_c != -1:
+            tau[c] = t_c
+            sign[c] = 1 - 2 * (m_c & 1)
+            f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd)
+            apparent[c] = f == cand_i[c]
+
+
 @numba.njit(cache=True, parallel=True)
-def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nthreads):
-    """For each candidate k-simplex: its earliest coface if that has the same diameter (else −1), and
-    whether the two form a (zero) apparent pair.  Independent per candidate: ``prange`` over them."""
+def _apparent_parallel(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nblocks, tau, sign, apparent):
+    m = cand_i.shape[0]
+    size = (m + nblocks - 1) // nblocks
+    for t in numba.prange(nblocks):
+        _apparent_block(t * size, min(m, (t + 1) * size), k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen,
+                        B, tau, sign, apparent)
+
+
+#: below this many candidate columns the apparent pairs are found on one thread (starting the
+#: thread pool costs more than it saves, and much more on a loaded machine)
+PARALLEL_MIN = 50_000
+
+
+def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B):
+    """For each candidate k-simplex: its earliest coface if that has the same diameter (else −1), its
+    sign, and whether the two form a zero apparent pair.  The candidates are independent, so above
+    ``PARALLEL_MIN`` they are split in blocks over every core (``numba.prange``)."""
     m = cand_i.shape[0]
     tau = np.full(m, -1, dtype=np.int64)
     sign = np.zeros(m, dtype=np.int64)
     apparent = np.zeros(m, dtype=np.bool_)
-    chunk = (m + nthreads - 1) // nthreads
-    for t in numba.prange(nthreads):
-        verts = np.empty(k + 2, dtype=np.int64)
-        cur = np.empty(k + 2, dtype=np.int64)
-        od = np.empty(1, dtype=np.float64)
-        oi = np.empty(1, dtype=np.int64)
-        om = np.empty(1, dtype=np.int64)
-        w = np.empty(k + 2, dtype=np.int64)
-        pd = np.zeros((k + 2, k + 2), dtype=np.float64)
-        for c in range(t * chunk, min(m, (t + 1) * chunk)):
-            _vertices(cand_i[c], k, n, B, verts)
-            t_c, m_c = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, D, dnbr, dlen,
-                                           B, cur, od, oi, om)
-            if t_c != -1:
-                tau[c] = t_c
-                sign[c] = 1 - 2 * (m_c & 1)
-                f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd)
-                apparent[c] = f == cand_i[c]
+    args = (k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B)
+    if m >= PARALLEL_MIN and numba.get_num_threads() > 1:
+        _apparent_parallel(*args, np.int64(8 * numba.get_num_threads()), tau, sign, apparent)
+    else:
+        _apparent_block(0, m, *args, tau, sign, apparent)
     return tau, sign, apparent
 
 
 # ---------------------------------------------------------------------------- the reduction
+@numba.njit(cache=True)
+def _compact(rv, rk, rc, rpos, rend, nruns):
+    """Move the unread part of every run to the front of the pool (runs keep their order); returns
+    the entries in use."""
+    dst = 0
+    for r in range(nruns):
+        a, b = rpos[r], rend[r]
+        for q in range(a, b):
+            rv[dst + q - a] = rv[q]
+            rk[dst + q - a] = rk[q]
+            rc[dst + q - a] = rc[q]
+        rpos[r] = dst
+        rend[r] = dst + b - a
+        dst += b - a
+    return dst
+
+
 @numba.njit(cache=True)
 def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, oi, om, W, rv, rk, rc, rpos, rend,
              hv, hk, hr, hn, p):
     """Add f · δ(s) (every coface but ``skip``) to the working column as one sorted run.
 
     The cofaces come out with decreasing index, so a stable sort by diameter alone puts them in
-    filtration order (diameter up, index down).  ``W = [entries used, runs used]``.
+    filtration order (diameter up, index down).  ``W = [entries in the pool, runs, entries added]``.
     Returns the (possibly grown) arrays and the heap size.
     """
     _vertices(s, k, n, B, verts)
@@ -491,7 +530,11 @@ def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, o
     order = np.argsort(od[:cnt], kind="mergesort")
     used, nruns = W[0], W[1]
     if used + cnt > rv.shape[0]:
-        rv, rk, rc = grow(rv, rk, rc, used, used + cnt)
+        # the consumed heads of the runs are garbage: compact first, grow only when the live
+        # entries fill half the pool (memory stays at most twice what a heap would hold)
+        used = _compact(rv, rk, rc, rpos, rend, nruns)
+        if 2 * (used + cnt) > rv.shape[0]:
+            rv, rk, rc = grow(rv, rk, rc, used, 2 * (used + cnt))
     if nruns + 1 > rpos.shape[0]:
         rpos, rend, _ = grow(rpos, rend, rend, nruns, nruns + 1)
         hv, hk, hr = grow(hv, hk, hr, hn, nruns + 1)
@@ -509,6 +552,7 @@ def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, o
         hn = heap_push(hv, hk, hr, hn, rv[start], rk[start], nruns)
         nruns += 1
     W[0], W[1] = used, nruns
+    W[2] += cnt
     return rv, rk, rc, rpos, rend, hv, hk, hr, hn
 
 
@@ -550,13 +594,12 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
     rc = np.empty(4096, dtype=np.int64)
     rpos = np.empty(256, dtype=np.int64)
     rend = np.empty(256, dtype=np.int64)
-    W = np.zeros(2, dtype=np.int64)
+    W = np.zeros(3, dtype=np.int64)  # entries in the pool, runs, entries added in all
     wk = np.empty(64, dtype=np.int64)
     wc = np.empty(64, dtype=np.int64)
     wd = np.empty(64, dtype=np.float64)
     worked = 0
     additions = 0
-    entries = 0
     for c in range(ncol):
         s = col_i[c]
         ds = col_d[c]
@@ -638,7 +681,6 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
             pvals[h] = c
             pcoef[c] = pc
             break
-        entries += W[0]
         if wn > 0:
             worked += 1
         if piv == -1:
@@ -666,7 +708,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                     q += 1
             vlen[c] = q
             used += q
-    return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, entries
+    return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, W[2]
 
 
 @numba.njit(cache=True)
@@ -792,8 +834,7 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     all_i, all_d = ei, ed  # every (k−1)-simplex, to generate the k-simplices
     cand_i, cand_d = ei[positive], ed[positive]
     for k in range(1, max_dim):
-        tau, sign, apparent = _apparent(k, cand_i, cand_d, np.int64(n), indptr, nbr, length, D, dnbr, dlen, B,
-                                        np.int64(4 * numba.get_num_threads()))
+        tau, sign, apparent = _apparent(k, cand_i, cand_d, np.int64(n), indptr, nbr, length, D, dnbr, dlen, B)
         app_keys, app_vals = _apparent_table(cand_i, tau, apparent)
         keep = ~apparent
         cols = np.lexsort((cand_i[keep], -cand_d[keep]))  # latest first: diameter down, index up
