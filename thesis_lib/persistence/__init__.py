@@ -15,3 +15,6 @@ __all__ += ["long_bars", "long_betti"]
 from .apparent import apparent_pairs, apparent_summary
 
 __all__ += ["apparent_pairs", "apparent_summary"]
+from .chains import chain_persistence
+
+__all__ += ["chain_persistence"]

@@ -26,68 +26,9 @@ import numpy as np
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
 from .barcode import Barcode
+from .kernels import grow, heap_push, mod_inverse, pop_pivot
 
 __all__ = ["persistence"]
-
-
-# ---------------------------------------------------------------------------- facet lookup
-@numba.njit(cache=True)
-def _hash(key: np.int64, mask: np.int64) -> np.int64:
-    h = np.uint64(key) * np.uint64(0x9E3779B97F4A7C15)
-    return np.int64(h >> np.uint64(20)) & mask
-
-
-@numba.njit(cache=True)
-def _facet_lookup(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.ndarray:
-    """Index in ``lower`` of facet i (omitting vertex i) of every row of ``upper``; -1 if missing."""
-    m0, k = lower.shape
-    m1 = upper.shape[0]
-    size = 1
-    while size < 2 * m0 + 2:
-        size *= 2
-    mask = np.int64(size - 1)
-    keys = np.full(size, -1, dtype=np.int64)
-    vals = np.empty(size, dtype=np.int64)
-    for r in range(m0):
-        key = np.int64(0)
-        for c in range(k):
-            key = key * base + lower[r, c]
-        h = _hash(key, mask)
-        while keys[h] != -1:
-            h = (h + 1) & mask
-        keys[h] = key
-        vals[h] = r
-    out = np.empty((m1, k + 1), dtype=np.int32)
-    for r in range(m1):
-        for i in range(k + 1):
-            key = np.int64(0)
-            for c in range(k + 1):
-                if c != i:
-                    key = key * base + upper[r, c]
-            h = _hash(key, mask)
-            found = -1
-            while keys[h] != -1:
-                if keys[h] == key:
-                    found = vals[h]
-                    break
-                h = (h + 1) & mask
-            out[r, i] = found
-    return out
-
-
-@numba.njit(cache=True)
-def _edge_facets_dense(edges: np.ndarray, tris: np.ndarray, n: np.int64) -> np.ndarray:
-    """Facets of triangles through a dense n × n table of edge indices (small n: cache friendly)."""
-    table = np.full(n * n, -1, dtype=np.int32)
-    for r in range(edges.shape[0]):
-        table[edges[r, 0] * n + edges[r, 1]] = r
-    out = np.empty((tris.shape[0], 3), dtype=np.int32)
-    for r in range(tris.shape[0]):
-        a, b, c = tris[r, 0], tris[r, 1], tris[r, 2]
-        out[r, 0] = table[b * n + c]
-        out[r, 1] = table[a * n + c]
-        out[r, 2] = table[a * n + b]
-    return out
 
 
 # ---------------------------------------------------------------------------- coboundary columns
@@ -150,7 +91,7 @@ def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_v
 def _coboundary_matrix(K, d: int, up_values: np.ndarray):
     """(indptr, rows, signs, pivot, pivot_sign) of δ on the d-simplices of K."""
     m_d = K.simplices[d].shape[0]
-    if d == 1 and "_facet_cache" not in K.__dict__:
+    if d == 1:  # edges: the triangles' facets through a dense edge table, fused with the assembly
         lower, upper = K.simplices[1], K.simplices[2]
         n = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
         if n * n <= max(1 << 22, 8 * lower.shape[0]):
@@ -159,27 +100,7 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
                 t = upper[out[5]]
                 raise ValueError(f"an edge of the triangle {tuple(int(v) for v in t)} is missing from the filtration")
             return out[:5]
-    return _coboundary(_facets(K, d + 1), up_values, m_d)
-
-
-def _facets(K, d: int) -> np.ndarray:
-    """(m_d, d + 1) indices into ``K.simplices[d - 1]``; column i omits vertex i (as ``facet_indices``)."""
-    cache = K.__dict__.get("_facet_cache")
-    if cache is not None and d in cache:  # a validated Filtration already found them
-        return cache[d]
-    lower, upper = K.simplices[d - 1], K.simplices[d]
-    base = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
-    if d * np.log2(base) >= 62:  # keys would overflow: use the generic lookup
-        return K.facet_indices(d)
-    if d == 2 and base * base <= max(1 << 22, 8 * lower.shape[0]):
-        out = _edge_facets_dense(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
-    else:
-        out = _facet_lookup(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
-    if (out < 0).any():
-        r, i = np.argwhere(out < 0)[0]
-        face = tuple(int(v) for j, v in enumerate(upper[r]) if j != i)
-        raise ValueError(f"face {face} of {tuple(int(v) for v in upper[r])} is missing from the filtration")
-    return out
+    return _coboundary(K.facet_indices(d + 1), up_values, m_d)
 
 
 # ---------------------------------------------------------------------------- H0: union-find
@@ -258,62 +179,6 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
 
 # ---------------------------------------------------------------------------- reduction over Z/p
 @numba.njit(cache=True)
-def _inv(a: np.int64, p: np.int64) -> np.int64:
-    # extended Euclid: a^{-1} mod p
-    t, newt, r, newr = np.int64(0), np.int64(1), p, a % p
-    while newr != 0:
-        q = r // newr
-        t, newt = newt, t - q * newt
-        r, newr = newr, r - q * newr
-    return t % p
-
-
-@numba.njit(cache=True)
-def _heap_push(hv, ht, hc, n, v, t, c):
-    """Push (value v, index t, coefficient c) on the binary min-heap keyed by (value, index)."""
-    i = n
-    hv[i] = v
-    ht[i] = t
-    hc[i] = c
-    while i > 0:
-        par = (i - 1) >> 1
-        if hv[i] < hv[par] or (hv[i] == hv[par] and ht[i] < ht[par]):
-            hv[i], hv[par] = hv[par], hv[i]
-            ht[i], ht[par] = ht[par], ht[i]
-            hc[i], hc[par] = hc[par], hc[i]
-            i = par
-        else:
-            break
-    return n + 1
-
-
-@numba.njit(cache=True)
-def _heap_pop(hv, ht, hc, n):
-    """Remove the top of the heap of size n (returns the new size); read the top before calling."""
-    n -= 1
-    hv[0] = hv[n]
-    ht[0] = ht[n]
-    hc[0] = hc[n]
-    i = 0
-    while True:
-        left = 2 * i + 1
-        if left >= n:
-            break
-        m = left
-        right = left + 1
-        if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and ht[right] < ht[left])):
-            m = right
-        if hv[m] < hv[i] or (hv[m] == hv[i] and ht[m] < ht[i]):
-            hv[i], hv[m] = hv[m], hv[i]
-            ht[i], ht[m] = ht[m], ht[i]
-            hc[i], hc[m] = hc[m], hc[i]
-            i = m
-        else:
-            break
-    return n
-
-
-@numba.njit(cache=True)
 def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared, up_values, p):
     """Reduce the coboundary columns, latest d-simplex first, with clearing (Ripser's scheme).
 
@@ -372,40 +237,24 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
         wc[0] = 1
         wn = 1
         a, b = indptr[c], indptr[c + 1]
-        if b - a > hcap:
-            while hcap < b - a:
-                hcap *= 2
-            hv = np.empty(hcap)
-            ht = np.empty(hcap, dtype=np.int64)
-            hc = np.empty(hcap, dtype=np.int64)
+        hv, ht, hc = grow(hv, ht, hc, 0, b - a)
         for k in range(a, b):
             t = np.int64(rows[k])
-            hn = _heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
+            hn = heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
         piv = -1
         pc = 0
         while True:
             # pop the pivot: the earliest coface whose coefficients do not cancel
-            piv = -1
-            while hn > 0:
-                t = ht[0]
-                cc = hc[0]
-                hn = _heap_pop(hv, ht, hc, hn)
-                while hn > 0 and ht[0] == t:
-                    cc += hc[0]
-                    hn = _heap_pop(hv, ht, hc, hn)
-                cc %= p
-                if cc != 0:
-                    piv = t
-                    pc = cc
-                    break
-            if piv == -1:
+            hn, _, piv, pc = pop_pivot(hv, ht, hc, hn, p)
+            if pc == 0:
+                piv = -1
                 break
             o = np.int64(owner[piv])
             if o == -1:
                 break
             # add factor · (reduced column of o) = factor · Σ_k V_o[k] δ(σ_k)
             additions += 1
-            factor = (p - pc * _inv(pcoef[o], p) % p) % p
+            factor = (p - pc * mod_inverse(pcoef[o], p) % p) % p
             # the pivot entry cancels exactly: drop it rather than pushing it back
             if vstart[o] == -1:
                 ol = 1
@@ -428,21 +277,12 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
                 wc[wn] = f
                 wn += 1
                 a, b = indptr[k_s], indptr[k_s + 1]
-                if hn + (b - a) > hcap:
-                    while hcap < hn + (b - a):
-                        hcap *= 2
-                    nv = np.empty(hcap)
-                    nt = np.empty(hcap, dtype=np.int64)
-                    ncf = np.empty(hcap, dtype=np.int64)
-                    nv[:hn] = hv[:hn]
-                    nt[:hn] = ht[:hn]
-                    ncf[:hn] = hc[:hn]
-                    hv, ht, hc = nv, nt, ncf
+                hv, ht, hc = grow(hv, ht, hc, hn, hn + (b - a))
                 for k in range(a, b):
                     t = np.int64(rows[k])
                     if t == piv:  # σ_k's entry at the pivot: it cancels with the popped one
                         continue
-                    hn = _heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
+                    hn = heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
         if piv == -1:
             ess[ness] = c
             ness += 1
@@ -535,7 +375,7 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
     vrank = np.empty(K.simplices[0].shape[0], dtype=np.int64)
     vrank[orders[0]] = np.arange(orders[0].shape[0])
     order1 = orders[1] if D > 1 else np.argsort(K.values[1], kind="stable")
-    pv, pe, cleared, ess = _h0(_facets(K, 1), vrank, order1)
+    pv, pe, cleared, ess = _h0(K.facet_indices(1), vrank, order1)
     finish(0, pv, pe, ess)
     if stats is not None:
         stats[0] = {"columns": int(K.simplices[1].shape[0]), "additions": 0}
