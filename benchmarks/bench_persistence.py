@@ -1,6 +1,6 @@
 """Persistent homology of Rips filtrations: thesis_lib against Ripser, giotto-ph and GUDHI (§2.3, §2.4.1).
 
-Usage: ``python benchmarks/bench_persistence.py [--quick] [--rounds N] [--output FILE]``;
+Usage: ``python benchmarks/bench_persistence.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``;
 writes ``benchmarks/results/persistence.json`` (``persistence_quick.json`` with ``--quick``).
 
 Every figure is a **whole pipeline, points → barcode**, for every tool (the harness's rules,
@@ -160,14 +160,15 @@ COLUMNS = [("case", "{case}"), ("rounds", "{rounds}"), ("ours s", "{ours_s:.3g}"
 
 def main(argv: list[str] | None = None) -> list[dict]:
     args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
-                             memory=("TOOL", "CASE"))
+                             memory=("TOOL", "CASE"), cases=list(CASES))
     if args.memory:
         memory_child(*args.memory)
         return []
     meta = harness.environment()
-    names = QUICK if args.quick else FULL
+    names = args.cases or (QUICK if args.quick else FULL)
     rows = harness.stream_table(COLUMNS, names, lambda name: run_case(name, args.rounds))
-    harness.write_results("persistence", rows, args.quick, args.output, meta)
+    output = args.output or (str(harness.RESULTS / "persistence_partial.json") if args.cases else None)
+    harness.write_results("persistence", rows, args.quick, output, meta)
     return rows
 
 

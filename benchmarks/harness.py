@@ -312,11 +312,14 @@ def arguments(
     worker: Sequence[str] | None = None,
     output: bool = False,
     memory: Sequence[str] | None = None,
+    cases: Sequence[str] | None = None,
 ) -> argparse.Namespace:
     """Parse the common options: ``--quick``; ``--repeat N`` (default ``repeat``; omitted when False);
     ``--worker`` with the metavars ``worker`` (hidden, for the subprocesses); ``--memory`` with the
     metavars ``memory`` (hidden, for :func:`memory`); ``--output FILE`` (default None:
-    :func:`write_results` picks the file); ``--rounds N`` (default None: :func:`default_rounds`)."""
+    :func:`write_results` picks the file); ``--rounds N`` (default None: :func:`default_rounds`);
+    with ``cases`` (the known case names) ``--cases NAME ...`` to run only some (``args.cases``, None
+    for all) — a partial run is written to ``--output`` or ``<topic>_partial.json`` by the caller."""
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help=quick_help)
     if repeat is not False:
@@ -326,6 +329,9 @@ def arguments(
     if memory:
         ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
         ap.add_argument("--rounds", type=int, default=None, help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
+    if cases:
+        ap.add_argument("--cases", nargs="+", choices=list(cases), default=None, metavar="CASE",
+                        help="run only these cases: " + ", ".join(cases))
     if output:
         ap.add_argument("--output", default=None, help="JSON file for the rows (default: benchmarks/results)")
     return ap.parse_args(argv)

@@ -89,3 +89,27 @@ def test_memory_worker_subtracts_the_baseline(capsys):
     assert res["peak_mb"] >= res["baseline_mb"] > 0
     if res["hwm_reset"]:
         assert res["delta_mb"] > 30  # the 40 MB array
+
+
+def test_ratios_figures_and_exponents(tmp_path, monkeypatch):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    (tmp_path / "benchmarks" / "results").mkdir(parents=True)
+    rows = [{"case": f"scaling-{n}", "n_per_circle": n, "rounds": 5, "ours_s": 0.001 * n**2, "ripser_s": 0.002 * n**3,
+             "ours_mb": float(n), "ripser_mb": 2.0 * n, "ratio_ripser": 0.5 * n**-1} for n in (10, 20, 40)]
+    (tmp_path / "benchmarks" / "results" / "p.json").write_text(
+        json.dumps({"meta": {"commit": "abc", "date": "d", "cores": 2, "load_average": [1, 1, 1],
+                             "load_average_end": [2, 2, 2]}, "rows": rows}))
+    assert bench.ratios("p", ["scaling-10"]) == [("scaling-10", "ripser", 0.05, 5)]
+    assert bench.meta("p")["commit"] == "abc" and "load average 1 at the start and 2" in bench.provenance("p")
+    assert abs(bench.fit_exponent([1, 2, 4], [3, 12, 48]) - 2.0) < 1e-12
+    with pytest.raises(ValueError):
+        bench.fit_exponent([1], [1])
+    fig = bench.ratio_figure("p")
+    assert len(fig.axes[0].patches) == 3
+    fig, exps = bench.scaling_figure("p", "scaling-", {"ours": "ours", "ripser": "Ripser"})
+    assert abs(exps["ours"][0] - 2) < 1e-9 and abs(exps["ripser"][0] - 3) < 1e-9 and abs(exps["ours"][1] - 1) < 1e-9
+    with pytest.raises(ValueError, match="no cases"):
+        bench.scaling_figure("p", "nothing", {"ours": "ours"})
