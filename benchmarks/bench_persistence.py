@@ -166,9 +166,15 @@ def main(argv: list[str] | None = None) -> list[dict]:
         return []
     meta = harness.environment()
     names = args.cases or (QUICK if args.quick else FULL)
-    rows = harness.stream_table(COLUMNS, names, lambda name: run_case(name, args.rounds))
     output = args.output or (str(harness.RESULTS / "persistence_partial.json") if args.cases else None)
-    harness.write_results("persistence", rows, args.quick, output, meta)
+    rows: list[dict] = []
+
+    def row(name: str) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(run_case(name, args.rounds))
+        harness.write_results("persistence", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
     return rows
 
 

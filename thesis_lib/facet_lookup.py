@@ -8,21 +8,22 @@ triangles when n² is small.  Keys that would not fit in 63 bits fall back to a 
 
 from __future__ import annotations
 
-import numba
 import numpy as np
+
+from .jit import njit
 
 from .simplicial import facets, find_rows
 
 __all__ = ["facet_indices"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _hash(key: np.int64, mask: np.int64) -> np.int64:
     h = np.uint64(key) * np.uint64(0x9E3779B97F4A7C15)
     return np.int64(h >> np.uint64(20)) & mask
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _hashed(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.ndarray:
     """Index in ``lower`` of facet i (omitting vertex i) of every row of ``upper``; -1 if missing."""
     m0, k = lower.shape
@@ -60,7 +61,7 @@ def _hashed(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.ndarray:
     return out
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _edge_table(edges: np.ndarray, tris: np.ndarray, n: np.int64) -> np.ndarray:
     """Facets of triangles through a dense n × n table of edge indices (small n: cache friendly)."""
     table = np.full(n * n, -1, dtype=np.int64)

@@ -9,8 +9,9 @@ column are the library's one kernel (:mod:`.kernels`).
 
 from __future__ import annotations
 
-import numba
 import numpy as np
+
+from ..jit import njit
 
 from .._validate import check_coefficients
 from .barcode import Barcode
@@ -19,7 +20,7 @@ from .kernels import grow, heap_push, mod_inverse, pop_pivot
 __all__ = ["chain_persistence"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _reduce(n, indptr, indices, data, col_order, p):
     """Column reduction with clearing mod p on a boundary matrix in filtration positions.
 

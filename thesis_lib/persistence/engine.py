@@ -20,8 +20,9 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
 
 from __future__ import annotations
 
-import numba
 import numpy as np
+
+from ..jit import njit
 
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
@@ -32,7 +33,7 @@ __all__ = ["persistence"]
 
 
 # ---------------------------------------------------------------------------- coboundary columns
-@numba.njit(cache=True)
+@njit(cache=True)
 def _column_storage(indptr: np.ndarray, m_d: int):
     """Turn the per-column counts ``indptr[c + 1]`` into offsets (in place) and allocate the columns:
     (fill cursors, rows, signs, pivot, pivot_sign, pivot_value), no pivot found yet.
@@ -51,7 +52,7 @@ def _column_storage(indptr: np.ndarray, m_d: int):
     return fill, rows, signs, pivot, pivot_sign, pivot_value
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_values: np.ndarray):
     """:func:`_coboundary` of the edges, fused with the dense facet lookup (no facet array at all)."""
     m_d = edges.shape[0]
@@ -104,7 +105,7 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
 
 
 # ---------------------------------------------------------------------------- H0: union-find
-@numba.njit(cache=True)
+@njit(cache=True)
 def _find(parent: np.ndarray, x: np.int64) -> np.int64:
     while parent[x] != x:
         parent[x] = parent[parent[x]]
@@ -112,7 +113,7 @@ def _find(parent: np.ndarray, x: np.int64) -> np.int64:
     return x
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
     """Elder-rule union–find over the edges in filtration order.
 
@@ -148,7 +149,7 @@ def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
 
 
 # ---------------------------------------------------------------------------- coboundary matrix
-@numba.njit(cache=True)
+@njit(cache=True)
 def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     """Compressed columns of δ on the d-simplices (by index): entries are indices of the (d+1)-cofaces.
 
@@ -178,7 +179,7 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
 
 
 # ---------------------------------------------------------------------------- reduction over Z/p
-@numba.njit(cache=True)
+@njit(cache=True)
 def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared, up_values, p):
     """Reduce the coboundary columns, latest d-simplex first, with clearing (Ripser's scheme).
 

@@ -41,8 +41,9 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
+
+from ..jit import load_numba, njit
 
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
 from .barcode import Barcode
@@ -123,7 +124,7 @@ def _csr(n: int, edges: np.ndarray, lengths: np.ndarray):
     return _csr_kernel(np.int64(n), np.ascontiguousarray(edges), np.ascontiguousarray(lengths))
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _csr_kernel(n, edges, lengths):
     indptr = np.zeros(n + 1, dtype=np.int64)
     for e in range(edges.shape[0]):
@@ -151,7 +152,7 @@ def _csr_kernel(n, edges, lengths):
     return indptr, nbr, length
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _by_distance(indptr, nbr, length):
     """The same neighbour lists sorted by increasing distance (for the apparent-pair test)."""
     dnbr = np.empty_like(nbr)
@@ -164,7 +165,7 @@ def _by_distance(indptr, nbr, length):
     return dnbr, dlen
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _dense(n, indptr, nbr, length):
     """The n × n distance matrix of the graph, inf where there is no edge (the diagonal too: as in
     the neighbour lists, a vertex is not its own neighbour)."""
@@ -176,7 +177,7 @@ def _dense(n, indptr, nbr, length):
 
 
 # ---------------------------------------------------------------------------- combinatorial number system
-@numba.njit(cache=True)
+@njit(cache=True)
 def _binomials(n, kmax):
     """B[v, k] = C(v, k) for 0 <= v <= n, 0 <= k <= kmax."""
     B = np.zeros((n + 1, kmax + 1), dtype=np.int64)
@@ -187,7 +188,7 @@ def _binomials(n, kmax):
     return B
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _vertices(idx, k, n, B, out):
     """The vertices of the k-simplex ``idx``, decreasing, into ``out[:k + 1]``."""
     top = n - 1
@@ -205,7 +206,7 @@ def _vertices(idx, k, n, B, out):
         top = lo - 1
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _dist(indptr, nbr, length, D, u, v):
     """Distance of u and v: from the dense matrix ``D`` when there is one (small n), else by binary
     search in u's neighbour list (decreasing); inf if there is no edge."""
@@ -224,7 +225,7 @@ def _dist(indptr, nbr, length, D, u, v):
     return np.inf
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _cofaces(verts, k, idx, diam, indptr, nbr, length, B, cur, out_d, out_i, out_m, first_equal, above_only):
     """Enumerate the cofaces σ ∪ {j} of the k-simplex σ (vertices ``verts`` decreasing), j decreasing.
 
@@ -283,7 +284,7 @@ def _cofaces(verts, k, idx, diam, indptr, nbr, length, B, cur, out_d, out_i, out
     return count
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _upper(arr, lo, hi, x):
     """First position in the increasing ``arr[lo:hi]`` with a value > x."""
     while lo < hi:
@@ -295,7 +296,7 @@ def _upper(arr, lo, hi, x):
     return lo
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen, B, cur, od, oi, om):
     """The earliest coface of the k-simplex σ if it has σ's diameter (else −1), and its m.
 
@@ -341,7 +342,7 @@ def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen,
     return idx_above + B[jmax, k + 2 - m] + idx_below, np.int64(m)
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd):
     """The latest facet of the (k1)-simplex ``tau`` if it has tau's diameter, else −1; also its
     position r (the omitted vertex is w[r], so its sign in ∂τ is (−1)^r)."""
@@ -369,7 +370,7 @@ def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd):
 
 
 # ---------------------------------------------------------------------------- hash table of int64 keys
-@numba.njit(cache=True)
+@njit(cache=True)
 def _slot(keys, key):
     mask = keys.shape[0] - 1
     h = np.int64((np.uint64(key) * np.uint64(0x9E3779B97F4A7C15)) >> np.uint64(17)) & mask
@@ -378,7 +379,7 @@ def _slot(keys, key):
     return h
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _table(size):
     cap = 16
     while cap < 2 * size + 2:
@@ -387,7 +388,7 @@ def _table(size):
 
 
 # ---------------------------------------------------------------------------- dimension 0
-@numba.njit(cache=True)
+@njit(cache=True)
 def _find(parent, x):
     while parent[x] != x:
         parent[x] = parent[parent[x]]
@@ -395,7 +396,7 @@ def _find(parent, x):
     return x
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _edges(n, indptr, nbr, length):
     """Every edge as (diameter, index = C(u, 2) + v for u > v), by increasing index."""
     m = indptr[n] // 2
@@ -413,7 +414,7 @@ def _edges(n, indptr, nbr, length):
     return ed, ei
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _h0(n, order, ed, ei, B):
     """Union–find over the edges in filtration order: deaths of H0 classes, and the positive edges."""
     parent = np.arange(n, dtype=np.int64)
@@ -445,7 +446,7 @@ def _h0(n, order, ed, ei, B):
 
 
 # ---------------------------------------------------------------------------- apparent pairs
-@numba.njit(cache=True)
+@njit(cache=True)
 def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, tau, sign, apparent):
     """:func:`_apparent` for the candidates ``lo .. hi − 1`` (each one independent of the others)."""
     verts = np.empty(k + 2, dtype=np.int64)
@@ -466,7 +467,7 @@ def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, 
             apparent[c] = f == cand_i[c]
 
 
-@numba.njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True)
 def _apparent_parallel(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nblocks, tau, sign, apparent):
     m = cand_i.shape[0]
     size = (m + nblocks - 1) // nblocks
@@ -489,15 +490,16 @@ def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B):
     sign = np.zeros(m, dtype=np.int64)
     apparent = np.zeros(m, dtype=np.bool_)
     args = (k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B)
-    if m >= PARALLEL_MIN and numba.get_num_threads() > 1:
-        _apparent_parallel(*args, np.int64(8 * numba.get_num_threads()), tau, sign, apparent)
+    threads = load_numba().get_num_threads()
+    if m >= PARALLEL_MIN and threads > 1:
+        _apparent_parallel(*args, np.int64(8 * threads), tau, sign, apparent)
     else:
         _apparent_block(0, m, *args, tau, sign, apparent)
     return tau, sign, apparent
 
 
 # ---------------------------------------------------------------------------- the reduction
-@numba.njit(cache=True)
+@njit(cache=True)
 def _compact(rv, rk, rc, rpos, rend, nruns):
     """Move the unread part of every run to the front of the pool (runs keep their order); returns
     the entries in use."""
@@ -514,7 +516,7 @@ def _compact(rv, rk, rc, rpos, rend, nruns):
     return dst
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, oi, om, W, rv, rk, rc, rpos, rend,
              hv, hk, hr, hn, p):
     """Add f · δ(s) (every coface but ``skip``) to the working column as one sorted run.
@@ -556,7 +558,7 @@ def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, o
     return rv, rk, rc, rpos, rend, hv, hk, hr, hn
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, B, p, maxdeg):
     """Reduce the coboundary columns of the k-simplices ``col_i`` (latest first) over Z/p.
 
@@ -711,7 +713,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
     return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, W[2]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _grow3(a, b, c, n, need=-1):
     """Three parallel buffers with room for ``need`` entries (default: twice ``n``), first n kept."""
     cap = max(2 * a.shape[0], 16)
@@ -727,7 +729,7 @@ def _grow3(a, b, c, n, need=-1):
 
 
 # ---------------------------------------------------------------------------- candidates of dimension k >= 2
-@numba.njit(cache=True)
+@njit(cache=True)
 def _next_simplices(k, prev_i, prev_d, n, indptr, nbr, length, B, maxdeg):
     """All (k)-simplices as cofaces of the (k−1)-simplices whose new vertex is the largest."""
     cap = max(16, prev_i.shape[0])
@@ -756,7 +758,7 @@ def _next_simplices(k, prev_i, prev_d, n, indptr, nbr, length, B, maxdeg):
     return out_i[:cnt], out_d[:cnt]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _not_in(keys_a, keys_b, cand_i):
     """Mask of the candidates found in neither hash table (the cleared simplices are dropped)."""
     out = np.ones(cand_i.shape[0], dtype=np.bool_)
@@ -766,7 +768,7 @@ def _not_in(keys_a, keys_b, cand_i):
     return out
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _apparent_table(cand_i, tau, apparent):
     keys, vals = _table(int(apparent.sum()))
     for c in range(cand_i.shape[0]):

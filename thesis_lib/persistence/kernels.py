@@ -10,8 +10,9 @@ whose coefficients (entries of the same key are summed lazily, as in Ripser) do 
 
 from __future__ import annotations
 
-import numba
 import numpy as np
+
+from ..jit import njit
 
 __all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "pop_run_pivot", "grow"]
 
@@ -24,7 +25,7 @@ def inverse(a: int, p: int) -> int:
     return pow(int(a) % p, p - 2, p)
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def mod_inverse(a: np.int64, p: np.int64) -> np.int64:
     """a⁻¹ in Z/p (extended Euclid) inside compiled kernels; ``p < 2**31`` so products fit in int64."""
     t, newt, r, newr = np.int64(0), np.int64(1), np.int64(p), np.int64(a % p)
@@ -35,7 +36,7 @@ def mod_inverse(a: np.int64, p: np.int64) -> np.int64:
     return t % p
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def heap_push(hv, hk, hc, n, v, k, c):
     """Push ``(value v, key k, coefficient c)`` on the heap of size ``n`` (arrays large enough); returns n + 1."""
     i = n
@@ -54,7 +55,7 @@ def heap_push(hv, hk, hc, n, v, k, c):
     return n + 1
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def heap_pop(hv, hk, hc, n):
     """Remove the top of the heap of size ``n`` (read it first); returns n − 1."""
     n -= 1
@@ -82,7 +83,7 @@ def heap_pop(hv, hk, hc, n):
     return n
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def heap_replace_top(hv, hk, hc, n, v, k, c):
     """Replace the top of the heap of size ``n`` by ``(v, k, c)`` and restore the order (one sift-down)."""
     i = 0
@@ -106,7 +107,7 @@ def heap_replace_top(hv, hk, hc, n, v, k, c):
     hc[i] = c
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def pop_pivot(hv, hk, hc, n, p):
     """Pop entries until the least key whose summed coefficient is non-zero mod p.
 
@@ -127,7 +128,7 @@ def pop_pivot(hv, hk, hc, n, p):
     return n, np.inf, np.int64(0), np.int64(0)
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def pop_run_pivot(hv, hk, hr, n, rv, rk, rc, rpos, rend, p):
     """:func:`pop_pivot` of a working column held as sorted *runs* (one per added coboundary).
 
@@ -153,7 +154,7 @@ def pop_run_pivot(hv, hk, hr, n, rv, rk, rc, rpos, rend, p):
     return n, np.inf, np.int64(0), np.int64(0)
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def grow(hv, hk, hc, n, need):
     """The heap arrays with room for ``need`` entries (the first ``n`` kept): doubled when too small."""
     if need <= hv.shape[0]:
