@@ -27,7 +27,7 @@ from ..jit import njit
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
 from .barcode import Barcode
-from .kernels import grow, heap_push, mod_inverse, pop_pivot
+from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
 
 __all__ = ["persistence"]
 
@@ -197,17 +197,15 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
     pcoef = np.zeros(m_d, dtype=np.int64)  # coefficient of its pivot in each reduced column
     vstart = np.full(m_d, -1, dtype=np.int64)  # -1: V_c = c (the column was not reduced)
     vlen = np.zeros(m_d, dtype=np.int64)
-    vcap = 1024
-    pool_k = np.empty(vcap, dtype=np.int64)
-    pool_c = np.empty(vcap, dtype=np.int64)
+    pool_k = np.empty(1024, dtype=np.int64)
+    pool_c = np.empty(1024, dtype=np.int64)
     vused = 0
     hcap = 1024
     hv = np.empty(hcap)
     ht = np.empty(hcap, dtype=np.int64)
     hc = np.empty(hcap, dtype=np.int64)
-    wcap = 64
-    wk = np.empty(wcap, dtype=np.int64)
-    wc = np.empty(wcap, dtype=np.int64)
+    wk = np.empty(64, dtype=np.int64)
+    wc = np.empty(64, dtype=np.int64)
     npmax = min(m_d, m_up)
     pair_c = np.empty(npmax, dtype=np.int64)
     pair_r = np.empty(npmax, dtype=np.int64)
@@ -267,13 +265,8 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
                 else:
                     k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
                 f = factor * k_c % p
-                if wn == wcap:
-                    wcap *= 2
-                    nk = np.empty(wcap, dtype=np.int64)
-                    nc = np.empty(wcap, dtype=np.int64)
-                    nk[:wn] = wk[:wn]
-                    nc[:wn] = wc[:wn]
-                    wk, wc = nk, nc
+                if wn == wk.shape[0]:
+                    wk, wc, _ = grow(wk, wc, wc, wn, wn + 1)
                 wk[wn] = k_s
                 wc[wn] = f
                 wn += 1
@@ -289,31 +282,15 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
             ness += 1
             continue
         # store V_c (duplicates merged, zeros dropped) and the pair
-        order = np.argsort(wk[:wn], kind="mergesort")
-        if vused + wn > vcap:
-            while vcap < vused + wn:
-                vcap *= 2
-            nk = np.empty(vcap, dtype=np.int64)
-            nc = np.empty(vcap, dtype=np.int64)
-            nk[:vused] = pool_k[:vused]
-            nc[:vused] = pool_c[:vused]
-            pool_k, pool_c = nk, nc
+        pos, sums = merge_entries(wk, wc, wn, p)
+        if vused + pos.shape[0] > pool_k.shape[0]:
+            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + pos.shape[0])
         vstart[c] = vused
-        q = 0
-        i = 0
-        while i < wn:
-            k_s = wk[order[i]]
-            s_c = np.int64(0)
-            while i < wn and wk[order[i]] == k_s:
-                s_c += wc[order[i]]
-                i += 1
-            s_c %= p
-            if s_c != 0:
-                pool_k[vused + q] = k_s
-                pool_c[vused + q] = s_c
-                q += 1
-        vlen[c] = q
-        vused += q
+        for q in range(pos.shape[0]):
+            pool_k[vused + q] = wk[pos[q]]
+            pool_c[vused + q] = sums[q]
+        vlen[c] = pos.shape[0]
+        vused += pos.shape[0]
         owner[piv] = c
         pcoef[c] = pc
         pair_c[npairs] = c

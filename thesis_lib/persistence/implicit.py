@@ -47,7 +47,7 @@ from ..jit import load_numba, njit
 
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
 from .barcode import Barcode
-from .kernels import grow, heap_push, mod_inverse, pop_run_pivot
+from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_run_pivot
 
 __all__ = ["rips_persistence", "rips_graph"]
 
@@ -559,6 +559,17 @@ def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, o
 
 
 @njit(cache=True)
+def _record(wk, wc, wd, wn, s, c, d):
+    """Append (simplex s, coefficient c, diameter d) to the working reduction chain V."""
+    if wn == wk.shape[0]:
+        wk, wc, wd = grow(wk, wc, wd, wn, wn + 1)
+    wk[wn] = s
+    wc[wn] = c
+    wd[wn] = d
+    return wk, wc, wd, wn + 1
+
+
+@njit(cache=True)
 def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, B, p, maxdeg):
     """Reduce the coboundary columns of the k-simplices ``col_i`` (latest first) over Z/p.
 
@@ -641,12 +652,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                         so, co = pool_s[vstart[o] + q - 1], pool_c[vstart[o] + q - 1]
                         dso = pool_d[vstart[o] + q - 1]
                     f = factor * co % p
-                    if wn == wk.shape[0]:
-                        wk, wc, wd = _grow3(wk, wc, wd, wn)
-                    wk[wn] = so
-                    wc[wn] = f
-                    wd[wn] = dso
-                    wn += 1
+                    wk, wc, wd, wn = _record(wk, wc, wd, wn, so, f, dso)
                     rv, rk, rc, rpos, rend, hv, hk, hr, hn = _add_run(
                         so, f, piv, k, n, dso, indptr, nbr, length, B, verts, cur, od, oi, om, W,
                         rv, rk, rc, rpos, rend, hv, hk, hr, hn, p)
@@ -663,12 +669,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                     r += 1
                 se = 1 if (r & 1) == 0 else p - 1  # coefficient of τ in δe: (−1)^r
                 factor = (p - pc * mod_inverse(se, p) % p) % p
-                if wn == wk.shape[0]:
-                    wk, wc, wd = _grow3(wk, wc, wd, wn)
-                wk[wn] = e
-                wc[wn] = factor
-                wd[wn] = de
-                wn += 1
+                wk, wc, wd, wn = _record(wk, wc, wd, wn, e, factor, de)
                 rv, rk, rc, rpos, rend, hv, hk, hr, hn = _add_run(
                     e, factor, piv, k, n, de, indptr, nbr, length, B, verts, cur, od, oi, om, W,
                     rv, rk, rc, rpos, rend, hv, hk, hr, hn, p)
@@ -689,43 +690,18 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
             ess[ness] = ds
             ness += 1
             continue
-        if wn > 0:  # store V_c (merged, zeros dropped) for later additions
-            order = np.argsort(wk[:wn])
-            if used + wn > pool_s.shape[0]:
-                pool_s, pool_c, pool_d = _grow3(pool_s, pool_c, pool_d, used, used + wn)
+        if wn > 0:  # store V_c (merged, zeros dropped; σ itself is implicit) for later additions
+            pos, sums = merge_entries(wk, wc, wn, p)
+            if used + pos.shape[0] > pool_s.shape[0]:
+                pool_s, pool_c, pool_d = grow(pool_s, pool_c, pool_d, used, used + pos.shape[0])
             vstart[c] = used
-            q = 0
-            i = 0
-            while i < wn:
-                so = wk[order[i]]
-                sc = np.int64(0)
-                while i < wn and wk[order[i]] == so:
-                    sc += wc[order[i]]
-                    i += 1
-                sc %= p
-                if sc != 0 and so != s:
-                    pool_s[used + q] = so
-                    pool_c[used + q] = sc
-                    pool_d[used + q] = wd[order[i - 1]]
-                    q += 1
-            vlen[c] = q
-            used += q
+            for q in range(pos.shape[0]):
+                pool_s[used + q] = wk[pos[q]]
+                pool_c[used + q] = sums[q]
+                pool_d[used + q] = wd[pos[q]]
+            vlen[c] = pos.shape[0]
+            used += pos.shape[0]
     return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, W[2]
-
-
-@njit(cache=True)
-def _grow3(a, b, c, n, need=-1):
-    """Three parallel buffers with room for ``need`` entries (default: twice ``n``), first n kept."""
-    cap = max(2 * a.shape[0], 16)
-    while cap < need:
-        cap *= 2
-    a2 = np.empty(cap, dtype=a.dtype)
-    b2 = np.empty(cap, dtype=b.dtype)
-    c2 = np.empty(cap, dtype=c.dtype)
-    a2[:n] = a[:n]
-    b2[:n] = b[:n]
-    c2[:n] = c[:n]
-    return a2, b2, c2
 
 
 # ---------------------------------------------------------------------------- candidates of dimension k >= 2

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..jit import njit
 
-__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "pop_run_pivot", "grow"]
+__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "pop_run_pivot", "merge_entries", "grow"]
 
 
 def inverse(a: int, p: int) -> int:
@@ -59,27 +59,8 @@ def heap_push(hv, hk, hc, n, v, k, c):
 def heap_pop(hv, hk, hc, n):
     """Remove the top of the heap of size ``n`` (read it first); returns n − 1."""
     n -= 1
-    v, k, c = hv[n], hk[n], hc[n]
-    i = 0
-    while True:
-        left = 2 * i + 1
-        if left >= n:
-            break
-        m = left
-        right = left + 1
-        if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and hk[right] < hk[left])):
-            m = right
-        if hv[m] < v or (hv[m] == v and hk[m] < k):
-            hv[i] = hv[m]
-            hk[i] = hk[m]
-            hc[i] = hc[m]
-            i = m
-        else:
-            break
     if n > 0:
-        hv[i] = v
-        hk[i] = k
-        hc[i] = c
+        heap_replace_top(hv, hk, hc, n, hv[n], hk[n], hc[n])
     return n
 
 
@@ -152,6 +133,33 @@ def pop_run_pivot(hv, hk, hr, n, rv, rk, rc, rpos, rend, p):
         if c != 0:
             return n, v, k, c
     return n, np.inf, np.int64(0), np.int64(0)
+
+
+@njit(cache=True)
+def merge_entries(keys, coefs, n, p):
+    """The distinct keys of ``keys[:n]`` with their coefficients summed mod p, zeros dropped.
+
+    Returns ``(positions, sums)``: for each surviving key (increasing) one position in ``keys``
+    holding it (to read parallel arrays) and its summed coefficient.  Used to store a reduction
+    chain V after a column was reduced.
+    """
+    order = np.argsort(keys[:n])
+    pos = np.empty(n, dtype=np.int64)
+    sums = np.empty(n, dtype=np.int64)
+    q = 0
+    i = 0
+    while i < n:
+        first = order[i]
+        c = np.int64(0)
+        while i < n and keys[order[i]] == keys[first]:
+            c += coefs[order[i]]
+            i += 1
+        c %= p
+        if c != 0:
+            pos[q] = first
+            sums[q] = c
+            q += 1
+    return pos[:q], sums[:q]
 
 
 @njit(cache=True)
