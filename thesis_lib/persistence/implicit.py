@@ -27,10 +27,14 @@ The reduction is Ripser's (Bauer 2021), on the cohomology side with clearing:
   (``numba.prange`` on every core; the candidates are independent).
 * **Emergent pairs**: a column whose earliest coface has σ's diameter and is not yet a pivot is
   paired at once, without enumerating the rest of its coboundary.
-* **The rest is reduced lazily**: the working coboundary is a heap of entries (value, −index,
-  coefficient) whose equal entries are summed only when popped; an added column is regenerated from
-  its reduction chain V (the simplices whose coboundaries sum to it), never stored reduced.  This
-  loop is sequential (each column depends on the pivots found before it).
+* **The rest is reduced lazily**: the working coboundary is a set of sorted *runs*, one per added
+  coboundary, merged through a small heap of run heads (:func:`~.kernels.pop_run_pivot`); equal
+  entries are summed only when they reach the top, and consumed run heads are compacted away.  An
+  added column is regenerated from its reduction chain V (the simplices whose coboundaries sum to
+  it), never stored reduced.  This loop is sequential (each column depends on the pivots found
+  before it), which is why it does not share the explicit engine's loop over stored columns: the
+  field arithmetic, the heap and the chain merging are shared (:mod:`.kernels`), the coboundary
+  enumeration cannot be.
 
 The columns of each dimension are only the candidates that survive clearing and the apparent
 pairs, so memory holds the graph, one (diameter, index) pair per column, the pivot and apparent
