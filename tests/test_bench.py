@@ -103,6 +103,7 @@ def test_ratios_figures_and_exponents(tmp_path, monkeypatch):
         json.dumps({"meta": {"commit": "abc", "date": "d", "cores": 2, "load_average": [1, 1, 1],
                              "load_average_end": [2, 2, 2]}, "rows": rows}))
     assert bench.ratios("p", ["scaling-10"]) == [("scaling-10", "ripser", 0.05, 5)]
+    assert "No stored rows" in bench.markdown("p", ["case"], cases=["absent"])
     assert bench.meta("p")["commit"] == "abc" and "load average 1 at the start and 2" in bench.provenance("p")
     assert abs(bench.fit_exponent([1, 2, 4], [3, 12, 48]) - 2.0) < 1e-12
     with pytest.raises(ValueError):
