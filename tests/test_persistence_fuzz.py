@@ -7,13 +7,14 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from helpers import fuzz_call, fuzz_settings
+from hypothesis import given
 from hypothesis import strategies as st
 
 from thesis_lib.datasets import example_filtration
 from thesis_lib.persistence import Barcode, compute_intervals, persistence, rips_persistence
 
-FUZZ = settings(deadline=None, max_examples=60, suppress_health_check=[HealthCheck.too_slow])
+FUZZ = fuzz_settings(60)  # 100 times more with --fuzz-long
 
 numbers = st.one_of(st.integers(-3, 6), st.floats(allow_nan=True, allow_infinity=True), st.just(10**30),
                     st.booleans(), st.text(max_size=3), st.none())
@@ -27,12 +28,10 @@ coefficients = st.one_of(st.sampled_from([0, 1, 2, 3, 4, -3, 2.5, "2", None, Tru
 
 
 def _clear(call):
-    """Run call(); a ValueError/TypeError must carry a message; any other exception fails."""
-    try:
-        return call()
-    except (ValueError, TypeError) as err:
-        assert str(err), f"{type(err).__name__} without a message"
-        return None
+    """Run call() through the shared fuzz harness: the value, or None after a ValueError/TypeError
+    with a message; any other exception, an empty message or a hang fails (and is counted)."""
+    ok, value = fuzz_call("persistence", call)
+    return value if ok else None
 
 
 @FUZZ
