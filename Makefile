@@ -10,7 +10,7 @@ export PATH := $(abspath $(BIN)):$(PATH)
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 export VTK_DEFAULT_OPENGL_WINDOW := vtkEGLRenderWindow
 
-.PHONY: book test experiments notebooks sweep bench clean install chromium
+.PHONY: book test experiments notebooks sweep bench bench-check clean install chromium
 
 # $(call unchanged,COMMAND): run COMMAND, then fail if it changed what `git status` shows
 define unchanged
@@ -62,9 +62,14 @@ notebooks: $(STAMP)
 sweep: $(STAMP)
 	$(BIN)/thesis-lab sweep $(NAME) $(ARGS) -j 2
 
-## bench: speed and memory against the reference libraries, one run each (writes benchmarks/results)
+## bench: speed and memory against the reference libraries (interleaved rounds, medians, paired
+## ratios; writes benchmarks/results/<topic>.json with commit, date and load). make bench ONLY=persistence
 bench: $(STAMP)
-	for b in benchmarks/bench_*.py; do echo "== $$b"; $(BIN)/python $$b || exit 1; done
+	for b in $(if $(ONLY),benchmarks/bench_$(ONLY).py,benchmarks/bench_*.py); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
+
+## bench-check: re-run every benchmark's quick cases; fail if a stored ratio moved by more than 35 %
+bench-check: $(STAMP)
+	$(BIN)/python benchmarks/check.py
 
 ## clean: remove what the commands build (the book, its execution cache, runs, test caches)
 clean:
