@@ -15,7 +15,7 @@ linear solves.
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
@@ -28,7 +28,7 @@ from .triangulation import prepare_geometry, triangulate
 __all__ = ["alpha"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _facet_ids(nb):
     """Number the facets of a triangulation: ``ids[s, i]`` for the facet opposite vertex i of
     simplex s (both occurrences of an interior facet get the same id), and one (s, i) per id."""
@@ -53,7 +53,7 @@ def _facet_ids(nb):
     return ids, rep_s[:count], rep_i[:count]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _coface_min(fidx, values, size):
     """For each face, the smallest value among the cofaces listing it in ``fidx``."""
     out = np.full(size, np.inf)

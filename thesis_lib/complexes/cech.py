@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
@@ -16,7 +16,7 @@ from .scaling import scaled, unscale_values
 __all__ = ["cech"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _meb_radii(points, simplices):
     m, k = simplices.shape
     out = np.empty(m)

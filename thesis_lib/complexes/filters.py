@@ -10,7 +10,7 @@ and flags the rows whose error amplification is too large to trust.
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 
 __all__ = ["orient_filter", "insphere_filter", "orient_one", "insphere_one", "orthoball_float", "power_filter"]
@@ -19,7 +19,7 @@ _U = 2.0**-53
 _TINY = 1e-290
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _popcount(x):
     c = 0
     while x:
@@ -28,7 +28,7 @@ def _popcount(x):
     return c
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _det_perm(mat, mag, k, dbuf, pbuf):
     """Determinant and permanent of the leading k × k block (subset dynamic programme)."""
     for mask in range(1, 1 << k):
@@ -59,7 +59,7 @@ def _det_perm(mat, mag, k, dbuf, pbuf):
     return dbuf[full], pbuf[full]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _signed(det, perm, k, entry_error):
     bound = (entry_error * k + (k * k + 2 * k) * _U) * 1.01 * perm + _TINY
     if det > bound:
@@ -69,7 +69,7 @@ def _signed(det, perm, k, entry_error):
     return 0
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def orient_filter(points, simplices):
     """Certain signs of det[x_i − x_0] (0 where undecided) for rows of ``simplices`` (m, d + 1)."""
     m = simplices.shape[0]
@@ -92,7 +92,7 @@ def orient_filter(points, simplices):
     return out
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def insphere_filter(points, weights, simplices, y):
     """Certain signs (0: undecided) of det[[x_i − y, |x_i − y|² − (w_i − w_y)]] over the d + 1
     vertices of each full simplex: the power test of y against the simplex's orthogonal sphere."""
@@ -121,13 +121,13 @@ def insphere_filter(points, weights, simplices, y):
     return out
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def orient_one(points, v):
     """:func:`orient_filter` for one simplex ``v`` (d + 1 point indices)."""
     return orient_filter(points, v.reshape(1, -1))[0]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def insphere_one(points, weights, v, y):
     """:func:`insphere_filter` for one full simplex ``v`` and point ``y``."""
     yy = np.empty(1, dtype=np.int64)
@@ -135,7 +135,7 @@ def insphere_one(points, weights, v, y):
     return insphere_filter(points, weights, v.reshape(1, -1), yy)[0]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _invert(mat, k, inv, work):
     """Gauss–Jordan with partial pivoting; False if (numerically) singular."""
     for i in range(k):
@@ -173,7 +173,7 @@ def _invert(mat, k, inv, work):
     return True
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def orthoball_float(points, weights, simplices, max_amplification):
     """Smallest orthogonal spheres of k-simplices (k >= 1) in floating point.
 
@@ -281,7 +281,7 @@ def orthoball_float(points, weights, simplices, max_amplification):
     return centre, r2, err, flag
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def power_filter(points, weights, centre, r2, err, faces, face_idx, y):
     """Certain signs (0: undecided) of π_y(c) − r² for the orthoballs (c, r²) of ``faces[face_idx]``,
     given the centres' error bounds ``err``."""

@@ -12,7 +12,7 @@ Two independent implementations:
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
@@ -90,7 +90,7 @@ def smallest_enclosing_ball(points: npt.ArrayLike, seed: int = 0) -> tuple[np.nd
     return np.ldexp(centre, -e), float(np.ldexp(np.sqrt(max(r2, 0.0)), -e))
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _solve_small(a, b, k):
     """Gaussian elimination with partial pivoting on the leading k x k block; False if singular."""
     m = a.copy()
@@ -131,7 +131,7 @@ def _solve_small(a, b, k):
     return x, True
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def meb_radius_small(pts):
     """Radius of the smallest enclosing ball of a few points (rows of ``pts``), by subset search.
 

@@ -26,7 +26,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import comb
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 from scipy.sparse import coo_matrix
@@ -184,7 +184,7 @@ def _locate(geo: Geometry, tri: np.ndarray, nb: np.ndarray, queries: np.ndarray,
     return cur
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _hint_pairs(tri, hint):
     """Facet pairs claimed by ``hint`` (s1 < s2), checked: the back pointer exists and the facets
     have the same vertices.  Returns (s1, i1, s2, i2, ok) with one row per claimed pair."""

@@ -18,7 +18,7 @@ Vertices of both complexes are landmark positions ``0..L-1``: vertex ``i`` is th
 
 from __future__ import annotations
 
-import numba
+from ..jit import load_numba, njit
 import numpy as np
 import numpy.typing as npt
 
@@ -78,7 +78,7 @@ _SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted w
 _BIG = 1e300  # stands for "not a witness" (finite, so the fastmath reductions stay valid)
 
 
-@numba.njit(cache=True, fastmath=True)
+@njit(cache=True, fastmath=True)
 def _minmax_full(cur, row):
     best = _BIG
     for x in range(cur.shape[0]):
@@ -87,7 +87,7 @@ def _minmax_full(cur, row):
     return best
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _minmax_gather(cur, idx, cnt, row):
     best = _BIG
     for j in range(cnt):
@@ -99,7 +99,7 @@ def _minmax_gather(cur, idx, cnt, row):
     return best
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _candidate_counts(parents, ev, eps):
     """Per parent: the landmarks w > last vertex whose edges to every vertex have value <= eps."""
     m, width = parents.shape
@@ -119,7 +119,7 @@ def _candidate_counts(parents, ev, eps):
     return counts
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid, start,
                     cur, ccur, idx):
     """Children of parent ``r`` written into rows ``start, start + 1, ...`` (one per candidate)."""
@@ -200,7 +200,7 @@ def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, ou
         slot += 1
 
 
-@numba.njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True)
 def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chunks):
     """Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.
 
@@ -234,7 +234,7 @@ def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chun
     return out[keep], out_v[keep]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _edge_values(D):
     """Unclamped edge values min_x max(D[a, x], D[b, x]) and a witness realising each."""
     n_l, n_x = D.shape
@@ -305,7 +305,7 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
             if simplices[-1].shape[0] == 0:
                 break
             s, v = _witness_level(simplices[-1], D, ev, arg, eps, order, sorted_d, use_sorted,
-                                  64 * numba.get_num_threads())
+                                  64 * load_numba().get_num_threads())
             simplices.append(s)
             values.append(v)
     return Filtration(simplices, values, validate=False)

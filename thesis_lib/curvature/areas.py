@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import warnings
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
@@ -91,7 +91,7 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
     return frac[full]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _triangle_areas(s, dot, edge_sq, twice, nv, mixed):
     """Vertex areas of a triangle mesh from the validated corner data, in one pass.
 

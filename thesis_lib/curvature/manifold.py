@@ -14,7 +14,7 @@ on meshes of 10⁵ vertices, and names the simplex or vertex that breaks it.
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
@@ -23,7 +23,7 @@ from .validate import Mesh, validate_mesh
 __all__ = ["check_pseudomanifold", "checked_mesh"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _find(parent, x):
     while parent[x] != x:
         parent[x] = parent[parent[x]]
@@ -31,7 +31,7 @@ def _find(parent, x):
     return x
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _edge_codes(s):
     """:func:`_ridge_codes` for triangles: the two other vertices of each corner, (min, max)."""
     m = s.shape[0]
@@ -46,7 +46,7 @@ def _edge_codes(s):
     return lo, hi
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _pseudomanifold_kernel(s, lo, key, nv, check_links):
     """(code, a, b, c): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+ simplices;
     3 vertex a pinched between simplices b and c.

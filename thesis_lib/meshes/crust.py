@@ -31,7 +31,7 @@ the medial axis, where Qhull builds about 34 tetrahedra per point (6·10⁴ toru
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 from scipy.spatial import Delaunay, QhullError, cKDTree
@@ -301,7 +301,7 @@ def _edge_structure(tris: np.ndarray, nv: int):
     return uniq, edge_of, start, tri_of
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _sharp_edges(pts, tris, alive, uniq, start, tri_of, nv):
     ne = len(uniq)
     sharp = np.zeros(ne, dtype=np.bool_)
@@ -357,7 +357,7 @@ def _prune_sharp(pts, tris, max_rounds=10000):
     return tris[alive]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _walk(pts, tris, edge_of, start, tri_of, seed_tri, seed_flip):
     nt = len(tris)
     orient = np.zeros((nt, 3), dtype=np.int64)
@@ -428,7 +428,7 @@ def _walk(pts, tris, edge_of, start, tri_of, seed_tri, seed_flip):
     return orient, visit[:nvisit], conflicts
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _greedy_manifold(edge_of, order, n_edges):
     """Keep faces in visiting order while each of their edges has fewer than two kept faces."""
     used = np.zeros(n_edges, dtype=np.int64)
