@@ -1,6 +1,6 @@
 """Construction of the complexes of §2.1.2: thesis_lib against GUDHI, time and peak memory as ratios.
 
-Usage: ``python benchmarks/bench_complexes.py [--quick] [--rounds N] [--output FILE]``.
+Usage: ``python benchmarks/bench_complexes.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
 
 Time: both tools build the same complex from the same points in one process, interleaved
 (ours, GUDHI, ours, ...) after a warm-up, for 5 rounds (15 under 0.1 s); the table gives the
@@ -159,13 +159,22 @@ def make_row(name: str, rounds: int | None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, output=True, memory=("CASE", "TOOL"))
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("CASE", "TOOL"), cases=list(CASES))
     if args.memory:
         memory_run(*args.memory)
         return []
     meta = harness.environment()
-    rows = harness.stream_table(COLUMNS, QUICK if args.quick else FULL, lambda name: make_row(name, args.rounds))
-    harness.write_results("complexes", rows, args.quick, args.output, meta=meta)
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "complexes_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(name, args.rounds))
+        harness.write_results("complexes", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
     return rows
 
 

@@ -1,6 +1,6 @@
 """Crust [ABK98] against pymeshlab's ball pivoting on uniform torus samples (R = 10, r = 5, §3.4.1).
 
-Usage: ``python benchmarks/bench_crust.py [--quick] [--rounds N] [--output FILE]``.
+Usage: ``python benchmarks/bench_crust.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
 
 Time: both reconstructions run on the same samples in one process, interleaved (Crust, ball
 pivoting, Crust, ...) after a warm-up, 5 rounds; medians and ``ratio_ball_pivoting``, the median
@@ -91,13 +91,22 @@ def make_row(n: int, rounds: int | None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, output=True, memory=("N", "TOOL"))
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("N", "TOOL"), cases=[str(n) for n in FULL])
     if args.memory:
         memory_run(*args.memory)
         return []
     meta = harness.environment()
-    rows = harness.stream_table(COLUMNS, QUICK if args.quick else FULL, lambda n: make_row(n, args.rounds))
-    harness.write_results("crust", rows, args.quick, args.output, meta=meta)
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "crust_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(int(name), args.rounds))
+        harness.write_results("crust", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
     return rows
 
 

@@ -1,6 +1,6 @@
 """Discrete curvature of thesis_lib against libigl on torus grids (thesis §3.4.1).
 
-Usage: ``python benchmarks/bench_curvature.py [--quick] [--rounds N] [--output FILE]``.
+Usage: ``python benchmarks/bench_curvature.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
 
 Cases (ours vs libigl on the same mesh, whole calls from arrays to per-vertex arrays):
 
@@ -122,13 +122,22 @@ def make_row(name: str, rounds: int | None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, output=True, memory=("CASE", "TOOL"))
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("CASE", "TOOL"), cases=FULL)
     if args.memory:
         memory_run(*args.memory)
         return []
     meta = harness.environment()
-    rows = harness.stream_table(COLUMNS, QUICK if args.quick else FULL, lambda name: make_row(name, args.rounds))
-    harness.write_results("curvature", rows, args.quick, args.output, meta=meta)
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "curvature_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(name, args.rounds))
+        harness.write_results("curvature", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
     return rows
 
 

@@ -38,6 +38,7 @@ __all__ = [
     "check_real",
     "check_indices",
     "check_simplices",
+    "resolve_alias",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -309,3 +310,17 @@ def check_simplices(simplices, n_vertices: int | None = None, name: str = "simpl
             row = int(np.argmax(rep))
             raise ValueError(f"{name}: row {row} {arr[row].tolist()} repeats a vertex")
     return arr
+
+
+def resolve_alias(value, alias, *, name: str, alias_name: str, default, hint: str = "", stacklevel: int = 3):
+    """``value``, or the deprecated keyword ``alias`` (with a ``FutureWarning``) when only that is given.
+
+    Call as ``resolve_alias(area, kind, name="area", alias_name="kind", default="mixed")`` from a
+    public function whose signature keeps ``kind=None`` one release for old callers.
+    """
+    if alias is not None:
+        if value is not None:
+            raise InvalidTypeError(f"give {name}= only ({alias_name}= is its deprecated alias), not both")
+        warnings.warn(f"{alias_name}= is deprecated{hint}; use {name}=", FutureWarning, stacklevel=stacklevel)
+        value = alias
+    return default if value is None else value

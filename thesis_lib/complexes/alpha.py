@@ -23,7 +23,7 @@ from ..filtration import Filtration
 from ..simplicial import facets, find_rows, row_keys
 from .orthoballs import attached, orthoballs
 from .scaling import unscale_values
-from .triangulation import prepare_geometry, triangulate
+from .triangulation import lexicographic, lexicographic_order, prepare_geometry, triangulate
 
 __all__ = ["alpha"]
 
@@ -67,24 +67,15 @@ def _coface_min(fidx, values, size):
     return out
 
 
-def _lex_order(rows: np.ndarray, n: int) -> np.ndarray:
-    keys = row_keys(rows, n)
-    return np.lexsort(rows.T[::-1]) if keys is None else np.argsort(keys, kind="stable")
-
-
-def _face_levels(tri: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
-    """All faces of the top simplices, per dimension in lexicographic order, with facet indices.
+def _face_levels(top: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
+    """All faces of the top simplices (lexicographically sorted, with their neighbours), per
+    dimension in lexicographic order, with facet indices.
 
     ``fidx_of[k][r, i]`` is the row in ``levels[k - 1]`` of the facet of ``levels[k][r]`` that omits
     its vertex i.  The facets of the top simplices come from the neighbours (no search), the
     vertices directly; the levels in between by sorting.
     """
-    k_top = tri.shape[1] - 1
-    order = _lex_order(tri, n)
-    inverse = np.empty_like(order)
-    inverse[order] = np.arange(len(order))
-    top = tri[order]
-    nb = np.where(nb[order] >= 0, inverse[np.maximum(nb[order], 0)], -1)
+    k_top = top.shape[1] - 1
     levels: list[np.ndarray] = [None] * (k_top + 1)  # type: ignore[list-item]
     levels[k_top] = top
     fidx_of: dict[int, np.ndarray] = {}
@@ -103,7 +94,7 @@ def _face_levels(tri: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarr
             ids, rep_s, rep_i = _facet_ids(nb)
             keep = np.array([[j for j in range(k + 2) if j != i] for i in range(k + 2)])
             lower = np.take_along_axis(upper[rep_s], keep[rep_i], axis=1)
-            srt = _lex_order(lower, n)
+            srt = lexicographic_order(lower, n)
             relabel = np.empty_like(srt)
             relabel[srt] = np.arange(len(srt))
             levels[k] = lower[srt]
@@ -154,7 +145,7 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     values that do not fit in float64 raise ``ValueError``.
     """
     geo, e = prepare_geometry(points, weights)
-    t = triangulate(geo)
+    t = lexicographic(triangulate(geo))
     weighted = weights is not None
     levels, fidx_of = _face_levels(t.simplices, t.neighbours, geo.n)
     top = len(levels) - 1

@@ -40,7 +40,8 @@ from .incremental import DegenerateInput, exact_triangulation
 from .predicates import Geometry
 from .scaling import power_of_two_scale, scale_points
 
-__all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic"]
+__all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic",
+           "lexicographic_order"]
 
 #: expected number of top simplices per point of the Delaunay triangulation of uniform random points
 #: in R^d (d = 1..8; Poisson–Delaunay cell counts), used to refuse constructions that cannot finish
@@ -507,12 +508,18 @@ def triangulate(geo: Geometry) -> Triangulation:
     return Triangulation(tri, cert.neighbours, cert.ties)
 
 
+def lexicographic_order(rows: np.ndarray, n: int) -> np.ndarray:
+    """The permutation sorting sorted-row simplices (vertices < n) lexicographically."""
+    keys = row_keys(rows, n)
+    return np.lexsort(rows.T[::-1]) if keys is None else np.argsort(keys, kind="stable")
+
+
 def lexicographic(t: Triangulation) -> Triangulation:
     """The same triangulation with its simplices in lexicographic order (neighbours renumbered).
 
     Thesis: Definition 2.13 (simplices listed as DESIGN.md orders them).
     """
-    order = np.lexsort(t.simplices.T[::-1])
+    order = lexicographic_order(t.simplices, int(t.simplices.max()) + 1 if t.simplices.size else 1)
     inverse = np.empty_like(order)
     inverse[order] = np.arange(len(order))
     nb = t.neighbours[order]

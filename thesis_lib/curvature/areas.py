@@ -18,12 +18,11 @@
 
 from __future__ import annotations
 
-import warnings
-
 from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import resolve_alias
 from .manifold import checked_mesh
 from .validate import Mesh
 
@@ -147,13 +146,8 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
 
 def resolve_area(area: str | None, kind: str | None, *, stacklevel: int = 3) -> str:
     """The ``area`` argument, honouring the deprecated alias ``kind=`` with a ``FutureWarning``."""
-    if kind is not None:
-        if area is not None:
-            raise ValueError("give area= only (kind= is its deprecated alias), not both")
-        warnings.warn("kind= is deprecated; use area= ('mixed', 'voronoi' or 'barycentric')", FutureWarning,
-                      stacklevel=stacklevel)
-        area = kind
-    return check_area("mixed" if area is None else area)
+    return check_area(resolve_alias(area, kind, name="area", alias_name="kind", default="mixed",
+                                    stacklevel=stacklevel + 1))
 
 
 def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | None = None, *,

@@ -13,12 +13,12 @@ what the thesis's next display (the Voronoi-weighted quadrature giving H) uses.
 
 from __future__ import annotations
 
-import warnings
 from typing import NamedTuple
 
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import resolve_alias
 from .manifold import checked_mesh
 from .validate import Mesh, check_orientation
 
@@ -87,13 +87,9 @@ def _check_normals(normals) -> str:
 
 def _edge_weights(edge_weights, weights) -> str:
     """``edge_weights``, honouring the deprecated alias ``weights=`` (FutureWarning)."""
-    if weights is not None:
-        if edge_weights is not None:
-            raise ValueError("give edge_weights= only (weights= is its deprecated alias), not both")
-        warnings.warn("weights= is deprecated here (weights are the points' weights everywhere else); "
-                      "use edge_weights= ('voronoi' or 'uniform')", FutureWarning, stacklevel=3)
-        edge_weights = weights
-    edge_weights = "voronoi" if edge_weights is None else edge_weights
+    edge_weights = resolve_alias(edge_weights, weights, name="edge_weights", alias_name="weights",
+                                 default="voronoi", stacklevel=4,
+                                 hint=" here (weights are the points' weights everywhere else)")
     if not isinstance(edge_weights, str) or edge_weights not in EDGE_WEIGHTS:
         raise ValueError(f"unknown edge_weights {edge_weights!r}: use 'voronoi' or 'uniform'")
     return edge_weights
