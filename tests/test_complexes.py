@@ -477,3 +477,21 @@ def test_covering_radius_checks_indices():
     with pytest.raises(TypeError, match="integer"):
         covering_radius(pts, [0.5])
     assert covering_radius(pts, np.arange(10)) == 0.0
+
+
+def test_nerve_refuses_explosions_and_deep_chains(monkeypatch):
+    import importlib
+
+    nerve_module = importlib.import_module("thesis_lib.complexes.nerve")
+
+    # 64 sets sharing an element: C(64, 6) = 75 million simplices up to dimension 5 (it hung)
+    monkeypatch.setattr(nerve_module, "MAX_NERVE_SIMPLICES", 10_000)
+    with pytest.raises(ValueError, match="more than 10,000 simplices"):
+        nerve([{0, i} for i in range(64)], max_dim=5)
+    # a chain of 3000 consecutive overlaps goes 2 deep only, but the search used to recurse per set
+    chain = [{i, i + 1} for i in range(3000)]
+    out = nerve(chain)
+    assert len(out) == 3000 + 2999 and max(len(s) for s in out) == 2
+    # 1500 sets with one common element: the full simplex; the search must not recurse 1500 deep
+    with pytest.raises(ValueError, match="more than 10,000"):
+        nerve([{0}] * 1500)
