@@ -181,3 +181,13 @@ def test_thin_simplices_equal_gudhi(seed, dim, n, height, weighted):
     assert_alpha_equals_gudhi(pts, w)
     if not weighted:
         assert_delaunay_matches_gudhi(pts)
+
+
+@settings(deadline=None, max_examples=8)
+@given(st.integers(0, 2**32 - 1), st.integers(2, 20), st.booleans())
+def test_points_on_a_line_equal_gudhi(seed, n, weighted):
+    # R^1: the regular triangulation is a lower hull in the plane, decided exactly (ties on integers)
+    rng = np.random.default_rng(seed)
+    pts = rng.permutation(np.arange(n, dtype=float) * 0.5)[:, None]
+    w = rng.integers(0, 3, n) / 16.0 if weighted else None
+    assert_alpha_equals_gudhi(pts, w)
