@@ -27,18 +27,22 @@ The reduction is Ripser's (Bauer 2021), on the cohomology side with clearing:
   (``numba.prange`` on every core; the candidates are independent).
 * **Emergent pairs**: a column whose earliest coface has σ's diameter and is not yet a pivot is
   paired at once, without enumerating the rest of its coboundary.
-* **The rest is reduced lazily**: the working coboundary is a set of sorted *runs*, one per added
-  coboundary, merged through a small heap of run heads (:func:`~.kernels.pop_run_pivot`); equal
-  entries are summed only when they reach the top, and consumed run heads are compacted away.  An
-  added column is regenerated from its reduction chain V (the simplices whose coboundaries sum to
-  it), never stored reduced.  This loop is sequential (each column depends on the pivots found
-  before it), which is why it does not share the explicit engine's loop over stored columns: the
-  field arithmetic, the heap and the chain merging are shared (:mod:`.kernels`), the coboundary
-  enumeration cannot be.
+* **The rest is reduced lazily**: the working coboundary is a heap of *coboundary enumerators*,
+  one per added coboundary f · δs, each yielding the cofaces of s one at a time in filtration order
+  (the cofaces of s's own diameter by decreasing index, then the others by merging the vertices'
+  distance-sorted neighbour lists); the heap holds each enumerator's head, equal entries are summed
+  only when they reach the top, and an enumerator is advanced only when its head is popped.  So the
+  column costs a few words per added coboundary, never its entries (Ripser's heap holds every entry
+  pushed and not yet popped).  An added column is regenerated from its reduction chain V (the
+  simplices whose coboundaries sum to it), never stored reduced.  This loop is sequential (each
+  column depends on the pivots found before it), which is why it does not share the explicit
+  engine's loop over stored columns: the field arithmetic, the heap and the chain merging are
+  shared (:mod:`.kernels`), the coboundary enumeration cannot be.
 
 The columns of each dimension are only the candidates that survive clearing and the apparent
 pairs, so memory holds the graph, one (diameter, index) pair per column, the pivot and apparent
-tables and the reduction chains of the columns that needed work.
+tables, the reduction chains of the columns that needed work and, while a column is reduced, its
+enumerators.
 """
 
 from __future__ import annotations
@@ -51,7 +55,7 @@ from ..jit import load_numba, njit
 
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
 from .barcode import Barcode
-from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_run_pivot
+from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
 
 __all__ = ["rips_persistence", "rips_graph"]
 
@@ -502,66 +506,211 @@ def _apparent(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B):
     return tau, sign, apparent
 
 
+# ---------------------------------------------------------------------------- lazy coboundary enumerators
+# The working column is a heap of *enumerators*, one per added coboundary f · δs: each holds s's
+# vertices and a few list positions, and yields the cofaces of s one at a time in filtration order,
+# so the heap holds one head per added coboundary and nothing else (Ripser's heap holds every entry
+# pushed and not yet popped: hundreds of millions at 1000 points per circle).  An enumerator's row
+# of the int64 state table S (width 2k + 8):
+#   S[r, 0:k+1] the vertices of s (decreasing); S[r, k+1:2k+2] list positions; S[r, AUX] the base
+#   vertex (phase 0, 1) ; S[r, PHASE]; S[r, COEF] = f; S[r, SKIP] a coface index to leave out (the
+#   pivot being cancelled) or −1; S[r, KEY], S[r, HEAD_C] the head's key (−index) and coefficient.
+# and of the float table F: F[r, 0] the diameter of s, F[r, 1] the head's diameter.
+# Phases: the cofaces of s's own diameter d come first (phase 0: a scan of the base vertex's
+# neighbours by decreasing index, the base being the vertex with fewest neighbours within d; phase 1:
+# the same set by selection from the base's distance-sorted prefix, when that prefix is short), then
+# the rest (phase 2: a merge of the k + 1 distance-sorted lists beyond d by (distance, −neighbour);
+# σ ∪ {j} is emitted from the list of the vertex farthest from j, the last list to reach j), so the
+# keys come out increasing: (diameter up, index down).
+@njit(cache=True)
+def _coface_index(S, r, k, j, B):
+    """Index of s ∪ {j} (s the vertices in row r of S) and m = #vertices of s above j."""
+    idx = np.int64(0)
+    m = 0
+    for q in range(k + 1):
+        v = S[r, q]
+        if v > j:
+            idx += B[v, k + 2 - q]
+            m += 1
+        else:
+            idx += B[v, k + 1 - q]
+    return idx + B[j, k + 2 - m], m
+
+
+@njit(cache=True)
+def _emit(S, F, r, k, j, d, B, p):
+    """Make σ ∪ {j} (diameter d) the head of enumerator r; False when it is the one to skip."""
+    idx, m = _coface_index(S, r, k, j, B)
+    if idx == S[r, 2 * k + 5]:
+        return False
+    S[r, 2 * k + 6] = -idx
+    f = S[r, 2 * k + 4]
+    S[r, 2 * k + 7] = f if (m & 1) == 0 else p - f
+    F[r, 1] = d
+    return True
+
+
+@njit(cache=True)
+def _start_far(S, F, r, k, indptr, dlen):
+    """Enter phase 2: each list position just past the neighbours within s's diameter."""
+    d = F[r, 0]
+    for q in range(k + 1):
+        v = S[r, q]
+        S[r, k + 1 + q] = _upper(dlen, indptr[v], indptr[v + 1], d)
+    S[r, 2 * k + 3] = 2
+
+
+@njit(cache=True)
+def _advance(S, F, r, k, indptr, nbr, length, D, dnbr, dlen, B, p):
+    """Move enumerator r to its next coface; False when it has none left."""
+    P0 = k + 1
+    AUX = 2 * k + 2
+    PH = 2 * k + 3
+    d = F[r, 0]
+    while True:
+        ph = S[r, PH]
+        if ph == 0:  # cofaces of diameter d, by a scan of the base vertex's neighbours (j decreasing)
+            b = S[r, AUX]
+            e = S[r, P0 + b]
+            end = indptr[S[r, b] + 1]
+            while e < end:
+                j = nbr[e]
+                le = length[e]
+                e += 1
+                if le > d:
+                    continue
+                ok = True
+                for q in range(k + 1):
+                    if q != b and _dist(indptr, nbr, length, D, S[r, q], j) > d:
+                        ok = False
+                        break
+                if ok and _emit(S, F, r, k, j, d, B, p):
+                    S[r, P0 + b] = e
+                    return True
+            _start_far(S, F, r, k, indptr, dlen)
+        elif ph == 1:  # the same set by selection: the largest j below the last one emitted
+            b = S[r, AUX]
+            vb = S[r, b]
+            last = S[r, P0]
+            hi = S[r, P0 + 1]
+            best = np.int64(-1)
+            for e in range(indptr[vb], hi):
+                j = dnbr[e]
+                if j >= last or j <= best:
+                    continue
+                ok = True
+                for q in range(k + 1):
+                    if q != b and _dist(indptr, nbr, length, D, S[r, q], j) > d:
+                        ok = False
+                        break
+                if ok:
+                    best = j
+            if best == -1:
+                _start_far(S, F, r, k, indptr, dlen)
+                continue
+            S[r, P0] = best
+            if _emit(S, F, r, k, best, d, B, p):
+                return True
+        elif ph == 2:  # the far cofaces: merge the distance-sorted lists by (distance, −neighbour)
+            while True:
+                qi = -1
+                bd = np.inf
+                bj = np.int64(-1)
+                for q in range(k + 1):
+                    c = S[r, P0 + q]
+                    if c < indptr[S[r, q] + 1]:
+                        x = dlen[c]
+                        if qi == -1 or x < bd or (x == bd and dnbr[c] > bj):
+                            qi = q
+                            bd = x
+                            bj = dnbr[c]
+                if qi == -1:
+                    S[r, PH] = 3
+                    return False
+                S[r, P0 + qi] += 1
+                ok = True
+                for q in range(k + 1):
+                    if q != qi:
+                        x = _dist(indptr, nbr, length, D, S[r, q], bj)
+                        if x > bd or (x == bd and q > qi):
+                            ok = False
+                            break
+                if ok and _emit(S, F, r, k, bj, bd, B, p):
+                    return True
+        else:
+            return False
+
+
+@njit(cache=True)
+def _open(S, F, r, s, f, skip, ds, k, n, indptr, nbr, length, D, dnbr, dlen, B, p):
+    """Set up enumerator r for f · δs without the coface ``skip``; False when it yields nothing."""
+    _vertices(s, k, n, B, S[r, : k + 1])
+    F[r, 0] = ds
+    S[r, 2 * k + 4] = f
+    S[r, 2 * k + 5] = skip
+    b = 0
+    cb = np.int64(1) << 62
+    for q in range(k + 1):  # the base: the vertex with the fewest neighbours within ds
+        v = S[r, q]
+        c = _upper(dlen, indptr[v], indptr[v + 1], ds) - indptr[v]
+        if c < cb:
+            cb = c
+            b = q
+    vb = S[r, b]
+    S[r, 2 * k + 2] = b
+    if cb == 0:
+        _start_far(S, F, r, k, indptr, dlen)
+    elif cb * cb <= indptr[vb + 1] - indptr[vb]:
+        S[r, 2 * k + 3] = 1
+        S[r, k + 1] = n  # last j emitted: none yet
+        S[r, k + 2] = indptr[vb] + cb
+    else:
+        S[r, 2 * k + 3] = 0
+        S[r, k + 1 + b] = indptr[vb]
+    return _advance(S, F, r, k, indptr, nbr, length, D, dnbr, dlen, B, p)
+
+
+@njit(cache=True)
+def _add(S, F, nr, hv, hk, hr, hn, s, f, skip, ds, k, n, indptr, nbr, length, D, dnbr, dlen, B, p):
+    """Add f · δs (without ``skip``) to the working column: a new enumerator, its head on the heap.
+    Returns the (possibly grown) tables, the number of enumerators and the heap size."""
+    if nr == S.shape[0]:
+        S2 = np.empty((2 * nr, S.shape[1]), dtype=S.dtype)
+        S2[:nr] = S
+        F2 = np.empty((2 * nr, 2), dtype=F.dtype)
+        F2[:nr] = F
+        S, F = S2, F2
+        hv, hk, hr = grow(hv, hk, hr, hn, 2 * nr)
+    if _open(S, F, nr, s, f, skip, ds, k, n, indptr, nbr, length, D, dnbr, dlen, B, p):
+        hn = heap_push(hv, hk, hr, hn, F[nr, 1], S[nr, 2 * k + 6], nr)
+        nr += 1
+    return S, F, nr, hv, hk, hr, hn
+
+
+@njit(cache=True)
+def _pop_pivot(S, F, hv, hk, hr, hn, k, indptr, nbr, length, D, dnbr, dlen, B, p):
+    """The pivot of the working column (its earliest coface whose summed coefficient is non-zero),
+    removed from it: returns (heap size, diameter, key, coefficient, entries read); coefficient 0
+    when the column is zero."""
+    read = 0
+    while hn > 0:
+        v, key = hv[0], hk[0]
+        c = np.int64(0)
+        while hn > 0 and hk[0] == key:
+            r = hr[0]
+            c += S[r, 2 * k + 7]
+            read += 1
+            if _advance(S, F, r, k, indptr, nbr, length, D, dnbr, dlen, B, p):
+                heap_replace_top(hv, hk, hr, hn, F[r, 1], S[r, 2 * k + 6], r)
+            else:
+                hn = heap_pop(hv, hk, hr, hn)
+        c %= p
+        if c != 0:
+            return hn, v, key, c, read
+    return hn, np.inf, np.int64(0), np.int64(0), read
+
+
 # ---------------------------------------------------------------------------- the reduction
-@njit(cache=True)
-def _compact(rv, rk, rc, rpos, rend, nruns):
-    """Move the unread part of every run to the front of the pool (runs keep their order); returns
-    the entries in use."""
-    dst = 0
-    for r in range(nruns):
-        a, b = rpos[r], rend[r]
-        for q in range(a, b):
-            rv[dst + q - a] = rv[q]
-            rk[dst + q - a] = rk[q]
-            rc[dst + q - a] = rc[q]
-        rpos[r] = dst
-        rend[r] = dst + b - a
-        dst += b - a
-    return dst
-
-
-@njit(cache=True)
-def _add_run(s, f, skip, k, n, diam_s, indptr, nbr, length, B, verts, cur, od, oi, om, W, rv, rk, rc, rpos, rend,
-             hv, hk, hr, hn, p):
-    """Add f · δ(s) (every coface but ``skip``) to the working column as one sorted run.
-
-    The cofaces come out with decreasing index, so a stable sort by diameter alone puts them in
-    filtration order (diameter up, index down).  ``W = [entries in the pool, runs, entries added]``.
-    Returns the (possibly grown) arrays and the heap size.
-    """
-    _vertices(s, k, n, B, verts)
-    cnt = _cofaces(verts, k, s, diam_s, indptr, nbr, length, B, cur, od, oi, om, False, False)
-    if cnt == 0:
-        return rv, rk, rc, rpos, rend, hv, hk, hr, hn
-    order = np.argsort(od[:cnt], kind="mergesort")
-    used, nruns = W[0], W[1]
-    if used + cnt > rv.shape[0]:
-        # the consumed heads of the runs are garbage: compact first, grow only when the live
-        # entries fill half the pool (memory stays at most twice what a heap would hold)
-        used = _compact(rv, rk, rc, rpos, rend, nruns)
-        if 2 * (used + cnt) > rv.shape[0]:
-            rv, rk, rc = grow(rv, rk, rc, used, 2 * (used + cnt))
-    if nruns + 1 > rpos.shape[0]:
-        rpos, rend, _ = grow(rpos, rend, rend, nruns, nruns + 1)
-        hv, hk, hr = grow(hv, hk, hr, hn, nruns + 1)
-    start = used
-    for q in order:
-        if oi[q] == skip:
-            continue
-        rv[used] = od[q]
-        rk[used] = -oi[q]
-        rc[used] = f if (om[q] & 1) == 0 else p - f
-        used += 1
-    if used > start:
-        rpos[nruns] = start
-        rend[nruns] = used
-        hn = heap_push(hv, hk, hr, hn, rv[start], rk[start], nruns)
-        nruns += 1
-    W[0], W[1] = used, nruns
-    W[2] += cnt
-    return rv, rk, rc, rpos, rend, hv, hk, hr, hn
-
-
 @njit(cache=True)
 def _record(wk, wc, wd, wn, s, c, d):
     """Append (simplex s, coefficient c, diameter d) to the working reduction chain V."""
@@ -574,13 +723,14 @@ def _record(wk, wc, wd, wn, s, c, d):
 
 
 @njit(cache=True)
-def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, B, p, maxdeg):
+def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, D, dnbr, dlen, B, p):
     """Reduce the coboundary columns of the k-simplices ``col_i`` (latest first) over Z/p.
 
     ``col_tau``/``col_sign``: each column's earliest coface when it has the column's diameter (else
     −1) and its sign; ``app_keys``/``app_vals``: the table τ → σ of the zero apparent pairs (σ, τ)
     of this dimension.  Returns (births, deaths, essential births, pivot table keys, number of
-    columns reduced with at least one addition, number of additions).
+    emergent pairs, of columns reduced with at least one addition, of additions, of entries read,
+    the largest number of enumerators a column needed).
     """
     ncol = col_i.shape[0]
     pkeys, pvals = _table(ncol)
@@ -598,25 +748,19 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
     ess = np.empty(ncol, dtype=np.float64)
     ness = 0
     verts = np.empty(k + 2, dtype=np.int64)
-    cur = np.empty(k + 2, dtype=np.int64)
     w = np.empty(k + 2, dtype=np.int64)
-    od = np.empty(maxdeg + 1, dtype=np.float64)
-    oi = np.empty(maxdeg + 1, dtype=np.int64)
-    om = np.empty(maxdeg + 1, dtype=np.int64)
-    hv = np.empty(256, dtype=np.float64)  # heap of run heads
-    hk = np.empty(256, dtype=np.int64)
-    hr = np.empty(256, dtype=np.int64)
-    rv = np.empty(4096, dtype=np.float64)  # the runs' entries
-    rk = np.empty(4096, dtype=np.int64)
-    rc = np.empty(4096, dtype=np.int64)
-    rpos = np.empty(256, dtype=np.int64)
-    rend = np.empty(256, dtype=np.int64)
-    W = np.zeros(3, dtype=np.int64)  # entries in the pool, runs, entries added in all
+    S = np.empty((64, 2 * k + 8), dtype=np.int64)  # the enumerators (see above)
+    F = np.empty((64, 2), dtype=np.float64)
+    hv = np.empty(64, dtype=np.float64)  # heap of their heads
+    hk = np.empty(64, dtype=np.int64)
+    hr = np.empty(64, dtype=np.int64)
     wk = np.empty(64, dtype=np.int64)
     wc = np.empty(64, dtype=np.int64)
     wd = np.empty(64, dtype=np.float64)
     worked = 0
     additions = 0
+    read = 0
+    most = 0
     for c in range(ncol):
         s = col_i[c]
         ds = col_d[c]
@@ -629,16 +773,13 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                 pcoef[c] = col_sign[c] % p
                 emergent += 1
                 continue
-        hn = 0
-        W[0] = 0
-        W[1] = 0
-        rv, rk, rc, rpos, rend, hv, hk, hr, hn = _add_run(
-            s, np.int64(1), np.int64(-1), k, n, ds, indptr, nbr, length, B, verts, cur, od, oi, om, W,
-            rv, rk, rc, rpos, rend, hv, hk, hr, hn, p)
+        S, F, nr, hv, hk, hr, hn = _add(S, F, 0, hv, hk, hr, 0, s, np.int64(1), np.int64(-1), ds, k, n, indptr, nbr,
+                                        length, D, dnbr, dlen, B, p)
         wn = 0
         piv = np.int64(-1)
         while True:
-            hn, pv, pk, pc = pop_run_pivot(hv, hk, hr, hn, rv, rk, rc, rpos, rend, p)
+            hn, pv, pk, pc, got = _pop_pivot(S, F, hv, hk, hr, hn, k, indptr, nbr, length, D, dnbr, dlen, B, p)
+            read += got
             if pc == 0:  # the column is zero: σ creates an essential class
                 piv = -1
                 break
@@ -657,9 +798,8 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                         dso = pool_d[vstart[o] + q - 1]
                     f = factor * co % p
                     wk, wc, wd, wn = _record(wk, wc, wd, wn, so, f, dso)
-                    rv, rk, rc, rpos, rend, hv, hk, hr, hn = _add_run(
-                        so, f, piv, k, n, dso, indptr, nbr, length, B, verts, cur, od, oi, om, W,
-                        rv, rk, rc, rpos, rend, hv, hk, hr, hn, p)
+                    S, F, nr, hv, hk, hr, hn = _add(S, F, nr, hv, hk, hr, hn, so, f, piv, dso, k, n, indptr, nbr,
+                                                    length, D, dnbr, dlen, B, p)
                 additions += 1
                 continue
             ha = _slot(app_keys, piv)
@@ -674,9 +814,8 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                 se = 1 if (r & 1) == 0 else p - 1  # coefficient of τ in δe: (−1)^r
                 factor = (p - pc * mod_inverse(se, p) % p) % p
                 wk, wc, wd, wn = _record(wk, wc, wd, wn, e, factor, de)
-                rv, rk, rc, rpos, rend, hv, hk, hr, hn = _add_run(
-                    e, factor, piv, k, n, de, indptr, nbr, length, B, verts, cur, od, oi, om, W,
-                    rv, rk, rc, rpos, rend, hv, hk, hr, hn, p)
+                S, F, nr, hv, hk, hr, hn = _add(S, F, nr, hv, hk, hr, hn, e, factor, piv, de, k, n, indptr, nbr,
+                                                length, D, dnbr, dlen, B, p)
                 additions += 1
                 continue
             # the pivot is free: (σ, τ) is a persistence pair
@@ -688,6 +827,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
             pvals[h] = c
             pcoef[c] = pc
             break
+        most = max(most, nr)
         if wn > 0:
             worked += 1
         if piv == -1:
@@ -705,7 +845,7 @@ def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, n
                 pool_d[used + q] = wd[pos[q]]
             vlen[c] = pos.shape[0]
             used += pos.shape[0]
-    return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, W[2]
+    return births[:npairs], deaths[:npairs], ess[:ness], pkeys, emergent, worked, additions, read, most
 
 
 # ---------------------------------------------------------------------------- candidates of dimension k >= 2
@@ -822,9 +962,9 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
         cols = np.lexsort((cand_i[keep], -cand_d[keep]))  # latest first: diameter down, index up
         col_i, col_d = cand_i[keep][cols], cand_d[keep][cols]
         col_tau, col_sign = tau[keep][cols], sign[keep][cols]
-        births, deaths, ess, pkeys, emergent, worked, adds, entries = _reduce(
-            k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, np.int64(n), indptr, nbr, length, B,
-            np.int64(p), maxdeg)
+        births, deaths, ess, pkeys, emergent, worked, adds, entries, most = _reduce(
+            k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, np.int64(n), indptr, nbr, length, D, dnbr, dlen,
+            B, np.int64(p))
         iv = np.empty((births.shape[0] + ess.shape[0], 2))
         iv[: births.shape[0], 0] = births
         iv[: births.shape[0], 1] = deaths
@@ -835,7 +975,7 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
             stats[k] = {"simplices": int(cand_i.shape[0]), "apparent": int(apparent.sum()),
                         "columns": int(col_i.shape[0]), "emergent": int(emergent),
                         "reduced": int(worked), "additions": int(adds),
-                        "entries": int(entries)}
+                        "entries": int(entries), "enumerators": int(most)}
         if k + 1 < max_dim:
             all_i, all_d = _next_simplices(k + 1, all_i, all_d, np.int64(n), indptr, nbr, length, B, maxdeg)
             mask = _not_in(pkeys, app_keys, all_i)

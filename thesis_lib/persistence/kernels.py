@@ -14,7 +14,7 @@ import numpy as np
 
 from ..jit import njit
 
-__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "pop_run_pivot", "merge_entries", "grow"]
+__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "merge_entries", "grow"]
 
 
 def inverse(a: int, p: int) -> int:
@@ -103,32 +103,6 @@ def pop_pivot(hv, hk, hc, n, p):
         while n > 0 and hk[0] == k and hv[0] == v:
             c += hc[0]
             n = heap_pop(hv, hk, hc, n)
-        c %= p
-        if c != 0:
-            return n, v, k, c
-    return n, np.inf, np.int64(0), np.int64(0)
-
-
-@njit(cache=True)
-def pop_run_pivot(hv, hk, hr, n, rv, rk, rc, rpos, rend, p):
-    """:func:`pop_pivot` of a working column held as sorted *runs* (one per added coboundary).
-
-    Run r is ``rv/rk/rc[rpos[r]:rend[r]]``, sorted by (value, key); the heap holds one entry per
-    unfinished run, its head, with the run's number as coefficient.  Popping advances the runs, so
-    the heap stays as small as the number of runs (it fits in cache) however long the column grows:
-    a reduction that passes millions of cancelling entries costs a small-heap step per entry.
-    """
-    while n > 0:
-        v, k = hv[0], hk[0]
-        c = np.int64(0)
-        while n > 0 and hk[0] == k and hv[0] == v:
-            r = hr[0]
-            c += rc[rpos[r]]
-            rpos[r] += 1
-            if rpos[r] < rend[r]:
-                heap_replace_top(hv, hk, hr, n, rv[rpos[r]], rk[rpos[r]], r)
-            else:
-                n = heap_pop(hv, hk, hr, n)
         c %= p
         if c != 0:
             return n, v, k, c
