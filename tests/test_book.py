@@ -82,6 +82,16 @@ def built_book(tmp_path_factory) -> Path:
     return out / "_build" / "html"
 
 
+def test_pages_that_read_stored_files_are_rebuilt_every_time(built_book):
+    """The report and the summary read the claims and stored results, which Sphinx does not track."""
+    out = built_book.parent.parent
+    proc = jupyter_book(BOOK, out / "_config.yml", out)
+    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
+    log = re.sub(r"\x1b\[[0-9;]*m", "", proc.stdout)
+    reread = set(re.findall(r"reading sources\.\.\. \[\s*\d+%\] (\S+)", log))
+    assert reread == {"report", "ch5-summary"}
+
+
 def test_every_toc_page_is_built(built_book):
     for file in PAGES:
         assert (built_book / (file + ".html")).is_file(), f"{file} missing from the built book"
