@@ -71,6 +71,11 @@ def _claim(**kw) -> str:
         ({"compare": "eq", "thesis": [3, 1], "result": ["exp:b1", "exp:b2"]}, "reproduced"),
         ({"compare": "eq", "thesis": "β = (3, 2)", "value": [3, 2], "result": ["exp:b1", "exp:b2"], "note": "β₂"}, "differs"),
         ({"not_reproducible": True, "note": "data unavailable"}, "not-reproducible"),
+        ({"rtol": 0.01, "thesis": 1000, "correct": 288100, "note": "typo"}, "erratum"),
+        ({"rtol": 0.01, "correct": 1000}, "reproduced"),
+        ({"rtol": 0.01, "thesis": 1000, "correct": 2000, "note": "neither"}, "differs"),
+        ({"compare": "none", "thesis": "a picture", "note": "drawn only", "provenance": "computed"}, "figure-only"),
+        ({"rtol": 0.01, "section": "beyond", "note": "new work"}, "new"),
     ],
 )
 def test_comparisons_give_the_right_status(registry, kw, status):
@@ -94,6 +99,9 @@ def test_missing_results_are_reported_not_hidden(registry):
         (_claim(result="count"), "is not '<results name>:<key>'"),
         (_claim(colour="red"), "unknown keys"),
         (_claim(compare="between"), "needs low and high"),
+        (_claim(rtol=0.1, provenance="guessed"), "provenance must be one of"),
+        (_claim(rtol=0.1, section="appendix"), "section must be one of"),
+        (_claim(compare="none", correct=1.0), "needs a comparison"),
         (_claim(rtol=0.1) + _claim(rtol=0.1), "repeated"),
     ],
 )

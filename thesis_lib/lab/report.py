@@ -26,8 +26,10 @@ from .results import load
 
 __all__ = ["Claim", "ClaimError", "load_claims", "evaluate", "report", "markdown"]
 
-STATUSES = ("reproduced", "differs", "not-reproducible")
-COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between")
+STATUSES = ("reproduced", "differs", "erratum", "not-reproducible", "figure-only", "new")
+COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
+PROVENANCES = ("computed", "reconstructed input", "transcribed")
+SECTIONS = ("thesis", "beyond")
 
 
 class ClaimError(ValueError):
@@ -51,10 +53,16 @@ class Claim:
     high: float | None = None
     note: str = ""
     not_reproducible: bool = False
+    provenance: str | None = None
+    correct: object = None
+    section: str = "thesis"
+    link: str | None = None
 
-    def reference(self) -> list[float]:
-        """The numbers the comparison uses, one per result key."""
-        ref = self.thesis if self.value is None else self.value
+    def reference(self, ref: object = None) -> list[float]:
+        """The numbers the comparison uses, one per result key (``ref``: another reference, e.g. the
+        erratum's ``correct``)."""
+        if ref is None:
+            ref = self.thesis if self.value is None else self.value
         values = ref if isinstance(ref, list) else [ref] * len(self.result)
         if len(values) != len(self.result):
             raise ClaimError(f"claim {self.id}: {len(values)} reference values for {len(self.result)} results")
@@ -66,7 +74,10 @@ def claims_dir() -> Path:
     return repo_root() / "experiments" / "claims"
 
 
-_KEYS = {"id", "where", "thesis", "result", "compare", "value", "rtol", "atol", "low", "high", "note", "not_reproducible"}
+_KEYS = {
+    "id", "where", "thesis", "result", "compare", "value", "rtol", "atol", "low", "high", "note",
+    "not_reproducible", "provenance", "correct", "section", "link",
+}
 
 
 def _parse(item: dict, source: str) -> Claim:
@@ -83,6 +94,12 @@ def _parse(item: dict, source: str) -> Claim:
         raise ClaimError(f"{source}: claim {item['id']}: compare must be one of {COMPARISONS}")
     if item["compare"] == "between" and ("low" not in item or "high" not in item):
         raise ClaimError(f"{source}: claim {item['id']}: 'between' needs low and high")
+    if item.get("provenance", PROVENANCES[0]) not in PROVENANCES:
+        raise ClaimError(f"{source}: claim {item['id']}: provenance must be one of {PROVENANCES}")
+    if item.get("section", "thesis") not in SECTIONS:
+        raise ClaimError(f"{source}: claim {item['id']}: section must be one of {SECTIONS}")
+    if "correct" in item and item["compare"] in ("between", "none"):
+        raise ClaimError(f"{source}: claim {item['id']}: an erratum's 'correct' needs a comparison with a value")
     fields = {k: v for k, v in item.items() if k != "result"}
     return Claim(result=result, source=source, **fields)
 
@@ -122,11 +139,11 @@ def _ours(claim: Claim, cache: dict[str, dict]) -> list[float] | None:
     return values
 
 
-def _holds(claim: Claim, ours: list[float]) -> bool:
+def _holds(claim: Claim, ours: list[float], ref: object = None) -> bool:
     if claim.compare == "between":
         return all(claim.low <= o <= claim.high for o in ours)
     checks = []
-    for o, t in zip(ours, claim.reference()):
+    for o, t in zip(ours, claim.reference(ref)):
         if math.isnan(o):
             checks.append(False)
         elif claim.compare == "eq":
@@ -145,12 +162,18 @@ def _holds(claim: Claim, ours: list[float]) -> bool:
 def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, object]:
     """The report row of one claim: id, where, thesis, ours, status, note."""
     ours = _ours(claim, {} if cache is None else cache)
-    if claim.not_reproducible:
+    if claim.not_reproducible or ours is None:
         status = "not-reproducible"
-    elif ours is None:
-        status = "not-reproducible"
+    elif claim.section == "beyond":
+        status = "new"
+    elif claim.compare == "none":
+        status = "figure-only"
+    elif _holds(claim, ours):
+        status = "reproduced"
+    elif claim.correct is not None and _holds(claim, ours, claim.correct):
+        status = "erratum"
     else:
-        status = "reproduced" if _holds(claim, ours) else "differs"
+        status = "differs"
     note = claim.note
     if ours is None and not claim.not_reproducible:
         note = f"no stored result for {', '.join(claim.result)}: run `make experiments`"
