@@ -207,3 +207,16 @@ def test_bad_input():
         ball_pivoting(sample_sphere(50, 3), normals=np.zeros((3, 3)))
     with pytest.raises(ValueError, match="radii"):
         ball_pivoting(sample_sphere(50, 3), radii=[-1.0])
+
+
+def test_reconstruct_surface_dispatch():
+    from thesis_lib.meshes import reconstruct_surface
+
+    pts = sample_torus(1500, 10.0, 5.0, seed=3)
+    assert np.array_equal(reconstruct_surface(pts, "crust"), crust(pts))
+    open_cat = sample_catenoid(800, seed=2)
+    assert np.array_equal(reconstruct_surface(open_cat, "crust", closed=False), crust(open_cat, prune=False))
+    f = reconstruct_surface(pts, "ball-pivoting")
+    assert f.shape[1] == 3 and facet_degrees(f).max() <= 2
+    with pytest.raises(ValueError, match="unknown reconstruction"):
+        reconstruct_surface(pts, "poisson")

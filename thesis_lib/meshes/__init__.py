@@ -16,11 +16,13 @@ from .grids import (
 from .hull import convex_hull_surface, orient_outward, sphere_hull
 from .plotting import mesh_figure, render_mesh
 from .pivoting import ball_pivoting, estimate_normals
+from .reconstruct import RECONSTRUCTIONS, reconstruct_surface
 from .sampling import sample_catenoid, sample_sphere, sample_torus
 from .stencil import cross_stars, neighbour_grid_mean_curvature
 from .topology import euler_characteristic, facet_degrees, faces_of, is_closed_pseudomanifold
 
 __all__ = [
+    "RECONSTRUCTIONS",
     "ball_pivoting",
     "catenoid_freudenthal",
     "convex_hull_surface",
@@ -41,6 +43,7 @@ __all__ = [
     "neighbour_grid_mean_curvature",
     "orient_outward",
     "poles",
+    "reconstruct_surface",
     "render_mesh",
     "sample_catenoid",
     "sample_sphere",
