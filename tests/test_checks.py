@@ -12,6 +12,7 @@ from thesis_lib.curvature.checks import (
     barycentric_gradients,
     corollary_3_19_coefficient,
     dihedral_cotangent_sum,
+    exterior_angles,
     hyperarea_gradient_fd,
     nearest_vertex_volumes,
     principal_curvatures_from_mean_and_gaussian,
@@ -109,13 +110,27 @@ def test_principal_curvatures_from_h_and_k_on_a_sphere_and_the_torus():
 
 
 def test_printed_sum_has_no_stationary_point():
-    rng = np.random.default_rng(0)
-    for _ in range(20):
-        d = rng.normal(size=(7, 2))
-        d /= np.linalg.norm(d, axis=1, keepdims=True)
-        assert printed_sum_gradient(d, rng.uniform(0.1, 1.0, 7)) >= 1 / np.sqrt(2) - 1e-12
-    with pytest.raises(ValueError):
-        printed_sum_gradient(np.ones((3, 2)), np.ones(2))
+    v, f = torus_grid(40)
+    g = printed_sum_gradient(v, f)
+    assert np.all(g >= 1 / np.sqrt(2) - 1e-12) and np.all(g <= 1 + 1e-12)
+    pts, hull = sphere_hull(3, 500, seed=2)
+    assert np.nanmin(printed_sum_gradient(pts, hull)) >= 1 / np.sqrt(2) - 1e-12
+
+
+def test_exterior_angles_turning_number():
+    t = 2 * np.pi * np.arange(400) / 400
+    r = 1 + 0.3 * np.cos(3 * t)  # a non-convex closed curve: it turns back and forth
+    curve = np.column_stack([r * np.cos(t), r * np.sin(t)])
+    delta = exterior_angles(curve)
+    assert delta.min() < 0 < delta.max()
+    assert delta.sum() == pytest.approx(2 * np.pi, abs=1e-12)
+    assert exterior_angles(curve[::-1]).sum() == pytest.approx(-2 * np.pi, abs=1e-12)
+    loop = 0.4 + np.cos(t)  # a limaçon with an inner loop turns twice
+    assert exterior_angles(np.column_stack([loop * np.cos(t), loop * np.sin(t)])).sum() == pytest.approx(4 * np.pi, abs=1e-9)
+    square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
+    assert exterior_angles(square) == pytest.approx([np.pi / 2] * 4)  # δ = π − α (Figure 3.1)
+    with pytest.raises(ValueError, match="repeated"):
+        exterior_angles(np.array([[0, 0], [0, 0], [1, 1]], dtype=float))
 
 
 def test_bad_input():

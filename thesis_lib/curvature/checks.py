@@ -1,10 +1,11 @@
 """Numerical evidence for statements of chapter 3 that the reproduction report checks.
 
 Each function computes, from the thesis's own definitions, the number one of its statements
-predicts: the coefficient of Corollary 3.19 (fitted to a finite-difference area gradient), the
-part of a simplex nearest each vertex (§3.3.2 and §3.4.2), Thales's circle of Figure 3.2, the
-principal curvatures from H and K (§3.3.4) and the gradient of §3.3.4's least-squares sum as
-printed.  The book's chapter 3 page calls them; the tests pin them to closed forms.
+predicts: the exterior angles of a closed polygon (Figure 3.1, Example 3.6), the coefficient of
+Corollary 3.19 (fitted to a finite-difference area gradient), the part of a simplex nearest each
+vertex (§3.3.2 and §3.4.2), Thales's circle of Figure 3.2, the principal curvatures from H and K
+(§3.3.4) and the gradient of §3.3.4's least-squares sum as printed.  The book's chapter 3 page
+calls them; the tests pin them to closed forms.
 """
 
 from __future__ import annotations
@@ -18,10 +19,11 @@ from scipy.spatial import ConvexHull, HalfspaceIntersection
 from .areas import vertex_areas
 from .gaussian import gaussian_curvature
 from .mean import mean_curvature_vector
-from .shape import vertex_normals
+from .shape import normal_curvatures, vertex_normals
 from .validate import simplex_hyperareas
 
 __all__ = [
+    "exterior_angles",
     "random_simplices",
     "barycentric_gradients",
     "dihedral_cotangent_sum",
@@ -43,6 +45,26 @@ def _simplices(points: ArrayLike) -> NDArray[np.float64]:
     if not np.isfinite(p).all():
         raise ValueError("points contain NaN or infinite values")
     return p
+
+
+def exterior_angles(polygon: ArrayLike) -> NDArray[np.float64]:
+    """Signed exterior angles δ_i ∈ (−π, π) at the corners of a closed plane polygon (k, 2).
+
+    δ_i is the turn from edge i − 1 to edge i (positive to the left), π − α_i at a convex corner with
+    interior angle α_i.  For a simple closed polygon traversed counter-clockwise they add up to 2π
+    (the turning number is 1); a sampled smooth curve gives ∫ κ ds = ∫ dψ = 2π (Example 3.6).
+    Thesis: Figure 3.1, eq. (3.7) and Example 3.6.
+    """
+    p = np.asarray(polygon, dtype=np.float64)
+    if p.ndim != 2 or p.shape[1] != 2 or len(p) < 3:
+        raise ValueError(f"polygon must be a (k, 2) array of k >= 3 corners, got shape {p.shape}")
+    if not np.isfinite(p).all():
+        raise ValueError("polygon contains NaN or infinite values")
+    e = np.roll(p, -1, axis=0) - p  # edge i from corner i to corner i + 1
+    prev = np.roll(e, 1, axis=0)
+    if np.any(np.einsum("ka,ka->k", e, e) == 0):
+        raise ValueError("polygon has repeated consecutive corners")
+    return np.arctan2(prev[:, 0] * e[:, 1] - prev[:, 1] * e[:, 0], np.einsum("ka,ka->k", prev, e))
 
 
 def random_simplices(n: int, count: int, *, seed: int = 0) -> NDArray[np.float64]:
@@ -197,17 +219,26 @@ def principal_curvatures_from_mean_and_gaussian(vertices, faces, area: str = "vo
     return H - root, H + root
 
 
-def printed_sum_gradient(directions: ArrayLike, weights: ArrayLike) -> float:
-    """‖∇_S Σ_j w_j (d_jᵀ S d_j − κ_j)‖_F / Σ_j w_j for one vertex: the sum as §3.3.4 prints it.
+def printed_sum_gradient(vertices, faces) -> NDArray[np.float64]:
+    """‖∇_S Σ_j (d_ijᵀ S d_ij − κ_ij)‖_F / deg(i) at every vertex i: the sum as §3.3.4 prints it.
 
-    The printed sum (no square) is linear in S with gradient Σ_j w_j d_j d_jᵀ, whatever the κ_j;
-    for unit d_j and w_j ≥ 0 its trace is Σ w_j, so the ratio is at least 1/√(dim): the printed sum
-    has no minimiser.  With the square it is a least-squares problem (see
-    :func:`thesis_lib.curvature.shape_operator`).  Thesis: §3.3.4, "Estimating the Shape Operator".
+    The printed sum (no square) is linear in S, with gradient Σ_j d_ij d_ijᵀ whatever the κ_ij, where
+    d_ij is the unit projection of x_j − x_i onto the tangent plane at x_i (vertex normals of
+    :func:`thesis_lib.curvature.vertex_normals`; weights 1, Voronoi weights change nothing here).
+    Its trace is deg(i), so the ratio is at least 1/√2: the gradient never vanishes and the printed
+    sum has no minimiser.  With the square it is the least-squares problem of
+    :func:`thesis_lib.curvature.shape_operator`.  NaN at isolated vertices.
+    Thesis: §3.3.4, "Estimating the Shape Operator".
     """
-    d = np.asarray(directions, dtype=np.float64)
-    w = np.asarray(weights, dtype=np.float64)
-    if d.ndim != 2 or w.shape != (len(d),) or len(d) == 0:
-        raise ValueError("directions must be (k, dim) and weights (k,) with k >= 1")
-    grad = np.einsum("k,ka,kb->ab", w, d, d)
-    return float(np.linalg.norm(grad) / w.sum())
+    edges, _ = normal_curvatures(vertices, faces)
+    v = np.asarray(vertices, dtype=np.float64)
+    nrm = vertex_normals(vertices, faces)
+    i = edges[:, 0]
+    d = v[edges[:, 1]] - v[i]
+    d -= np.einsum("ea,ea->e", d, nrm[i])[:, None] * nrm[i]
+    d /= np.linalg.norm(d, axis=1, keepdims=True)
+    grad = np.zeros((len(v), 3, 3))
+    np.add.at(grad, i, np.einsum("ea,eb->eab", d, d))
+    deg = np.bincount(i, minlength=len(v)).astype(np.float64)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.linalg.norm(grad, axis=(1, 2)) / deg
