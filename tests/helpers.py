@@ -109,3 +109,45 @@ def fuzz_call(module: str, fn, *args, seconds: float = 30.0, **kwargs):
         raise
     tally["value"] += 1
     return True, value
+
+
+def claims_of(name: str) -> list[dict]:
+    """The ``[[claim]]`` tables of ``experiments/claims/<name>.toml``."""
+    import tomllib
+
+    from thesis_lib.lab.paths import repo_root
+
+    with open(repo_root() / "experiments" / "claims" / f"{name}.toml", "rb") as fh:
+        return tomllib.load(fh)["claim"]
+
+
+def page_labels(page: str) -> set[str]:
+    """The MyST labels of a book page: ``(label)=`` targets and ``:name:`` options of its Markdown cells."""
+    import re
+
+    import nbformat
+
+    from thesis_lib.lab.paths import repo_root
+
+    nb = nbformat.read(repo_root() / "book" / f"{page}.ipynb", as_version=4)
+    text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+    return set(re.findall(r"^\(([\w-]+)\)=\s*$", text, re.M)) | set(re.findall(r"^:name:\s*([\w-]+)\s*$", text, re.M))
+
+
+PROVENANCES = {"computed", "reconstructed input", "transcribed"}
+
+
+def check_claim_file(name: str) -> None:
+    """Every claim of ``experiments/claims/<name>.toml`` has a provenance and a link to a label of its
+    book page, and (for an experiment) none compares one of the experiment's input parameters."""
+    from thesis_lib.lab import runner
+
+    params = set(runner.experiment_parameters(name)) if name in runner.list_experiments() else set()
+    for claim in claims_of(name):
+        assert claim.get("provenance") in PROVENANCES, claim["id"]
+        page, _, label = claim["link"].partition("#")
+        assert label in page_labels(page), f"{claim['id']}: no label {label!r} on book/{page}.ipynb"
+        results = claim.get("result", [])
+        for ref in results if isinstance(results, list) else [results]:
+            experiment, key = ref.split(":", 1)
+            assert experiment != name or key not in params, f"{claim['id']} compares the parameter {key!r} of {name}"

@@ -27,6 +27,12 @@ pole whose half-line removes the midpoint.  This gives the triangles of Del(S �
 compares with Qhull's triangulation of S ∪ P — at a fraction of the cost: the poles cluster along
 the medial axis, where Qhull builds about 34 tetrahedra per point (6·10⁴ torus samples) and took
 70 s at 10⁵ samples for this step alone.
+
+Degenerate samples.  Four co-circular samples (the isosceles-trapezoid quads of a parameter grid,
+such as the thesis's chosen points on the torus) make a flat Delaunay tetrahedron with no
+circumcentre.  They are resolved as a symbolic perturbation would (:func:`_flat_tetrahedra`): one
+diagonal per quadrilateral, its two triangles joined to the Voronoi vertices on both sides, so the
+Crust of such a grid is closed.
 """
 
 from __future__ import annotations
@@ -159,38 +165,103 @@ def poles(points: npt.ArrayLike, far: float | None = None) -> tuple[np.ndarray, 
     return np.ldexp(p_plus, -e), np.ldexp(p_minus, -e)
 
 
+def _flat_tetrahedra(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray):
+    """Degenerate (co-circular) Delaunay cells, seen as a symbolic perturbation would see them.
+
+    Four co-circular samples (an isosceles trapezoid of a parameter grid, say) have a one-parameter
+    family of empty spheres, and Qhull's triangulated output puts a flat tetrahedron between the
+    two cells on either side of the quadrilateral: one diagonal's two triangles face one side, the
+    other diagonal's face the other, and no circumcentre exists.  A slight perturbation of the
+    points would keep one diagonal on both sides.  We keep the diagonal through the smallest sample
+    index (a combinatorial rule, so the choice does not depend on rounding) and drop the other
+    diagonal's two faces; the Voronoi edge dual to a kept face joins the circumcentres of the cells
+    on the two sides (all of them lie on the axis of the circle), which is the dual edge the
+    perturbed triangulation would have.
+
+    Returns ``(centre, keep, across)``: ``centre`` is ``cc`` with the circle's centre for flat
+    tetrahedra; ``keep[t, k]`` says whether face slot k of tetrahedron t stays a Delaunay face;
+    ``across[t, k]`` is, for a kept face of a flat tetrahedron, the cell on the far side of the flat
+    tetrahedron (a neighbour across a dropped face; -1 for the outside) and otherwise t itself.
+    """
+    tets, nbr = tri.simplices, tri.neighbors
+    n_tets = len(tets)
+    centre = cc.copy()
+    keep = np.ones((n_tets, 4), dtype=bool)
+    across = np.repeat(np.arange(n_tets)[:, None], 4, axis=1)
+    flat = np.flatnonzero(~ok)
+    if len(flat) == 0:
+        return centre, keep, across
+    p = pts[tets[flat]]  # (f, 4, 3)
+    # circle centre: circumcentre of the largest of the four faces (they share one circle)
+    faces = np.stack([np.delete(p, k, axis=1) for k in range(4)], axis=1)  # (f, 4, 3, 3)
+    a, b = faces[:, :, 1] - faces[:, :, 0], faces[:, :, 2] - faces[:, :, 0]
+    axb = np.cross(a, b)
+    big = np.argmax(np.einsum("fkj,fkj->fk", axb, axb), axis=1)
+    rows = np.arange(len(flat))
+    a, b, axb, p0 = a[rows, big], b[rows, big], axb[rows, big], faces[rows, big, 0]
+    num = np.cross(np.einsum("ij,ij->i", a, a)[:, None] * b - np.einsum("ij,ij->i", b, b)[:, None] * a, axb)
+    centre[flat] = p0 + num / (2 * np.einsum("ij,ij->i", axb, axb)[:, None] + 1e-300)
+    # the diagonals are the pairing of the four vertices with the largest total length
+    pairings = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))
+    length = np.stack([sum(np.linalg.norm(p[:, i] - p[:, j], axis=1) for i, j in pr) for pr in pairings], axis=1)
+    best = np.argmax(length, axis=1)
+    lowest = np.argmin(tets[flat], axis=1)
+    for j, t in enumerate(flat):
+        d1, d2 = pairings[best[j]]
+        kept, other = (d1, d2) if lowest[j] in d1 else (d2, d1)
+        # a face keeps the diagonal `kept` when its opposite vertex (its slot) lies on `other`
+        keep[t, list(kept)] = False
+        far = [int(nbr[t, k]) for k in kept]
+        far = sorted(far, key=lambda x: (x < 0, x >= 0 and not ok[x]))[0]
+        across[t, list(other)] = far
+    return centre, keep, across
+
+
 def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, p_plus: np.ndarray, theta: float):
     """The triangles of Del(S) that pass the normal filter, with their dual Voronoi edges
     ``c0 + t d``, t ∈ [0, t_max].
 
     Processed one face slot of the tetrahedra at a time (peak memory); the normal filter comes
-    first as it is cheap and shortens the Voronoi filter's work.  Triangles next to a flat
-    tetrahedron (no circumcentre) are left out.
+    first as it is cheap and shortens the Voronoi filter's work.  Flat tetrahedra (co-circular
+    samples) are resolved by :func:`_flat_tetrahedra`.
     """
     tets, nbr = tri.simplices, tri.neighbors
     idx = np.arange(len(tets))
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
+    centre, keep, across = _flat_tetrahedra(pts, tri, cc, ok)
     faces, c0s, ds, tmaxs = [], [], [], []
     for k in range(4):
         other = nbr[:, k]
         sel = (other == -1) | (other > idx)  # each interior face once, from its lower tetrahedron
         i, o = idx[sel], other[sel]
         face = np.delete(tets[i], k, axis=1)
-        good = ok[i] & ok[np.where(o >= 0, o, i)]
-        good[good] = _normal_filter(pts, face[good], p_plus, theta)
-        i, o, face = i[good], o[good], face[good]
-        c0 = cc[i]
-        d = np.empty_like(c0)
+        # the slot of this face in the neighbour (to read the neighbour's flat-cell data)
+        ko = np.zeros(len(o), dtype=np.int64)
         inner = o >= 0
-        d[inner] = cc[o[inner]] - c0[inner]
-        hp = pts[face[~inner]]  # convex-hull face: a ray away from the opposite vertex
+        ko[inner] = np.argmax(nbr[o[inner]] == i[inner, None], axis=1)
+        good = keep[i, k] & np.where(inner, keep[np.maximum(o, 0), ko], True)
+        # the two cells joined by the dual Voronoi edge (-1 = outside: the edge is a ray)
+        end0 = across[i, k]
+        end1 = np.where(inner, across[np.maximum(o, 0), ko], -1)
+        end0, end1 = np.where(end0 < 0, end1, end0), np.where(end0 < 0, end0, end1)
+        good &= end0 >= 0
+        good[good] = _normal_filter(pts, face[good], p_plus, theta)
+        face, end0, end1 = face[good], end0[good], end1[good]
+        c0 = centre[end0]
+        d = np.empty_like(c0)
+        bounded = end1 >= 0
+        d[bounded] = centre[end1[bounded]] - c0[bounded]
+        # a face on the convex hull: a ray away from the vertex of end0 farthest from its plane
+        hp = pts[face[~bounded]]
         nrm = np.cross(hp[:, 1] - hp[:, 0], hp[:, 2] - hp[:, 0])
-        nrm *= np.sign(np.einsum("ij,ij->i", nrm, hp[:, 0] - pts[tets[i[~inner], k]]))[:, None]
-        d[~inner] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
+        height = np.einsum("ikj,ij->ik", pts[tets[end0[~bounded]]] - hp[:, :1], nrm)
+        apex = height[np.arange(len(height)), np.argmax(np.abs(height), axis=1)]
+        nrm *= -np.sign(apex)[:, None]
+        d[~bounded] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
         faces.append(face)
         c0s.append(c0)
         ds.append(d)
-        tmaxs.append(np.where(inner, 1.0, _RAY_LENGTH))
+        tmaxs.append(np.where(bounded, 1.0, _RAY_LENGTH))
     return np.concatenate(faces), np.concatenate(c0s), np.concatenate(ds), np.concatenate(tmaxs)
 
 
