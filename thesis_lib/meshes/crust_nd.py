@@ -171,6 +171,21 @@ def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None =
 
 
 # ---------------------------------------------------------------------------- trimming kernels
+def _unique_rows(rows: np.ndarray, return_counts: bool = False):
+    """``np.unique(rows, axis=0, return_inverse=True)`` for non-negative integer rows, by one int64
+    key per row (much faster than a row-wise unique)."""
+    rows = np.asarray(rows, dtype=np.int64)
+    base = int(rows.max()) + 1 if rows.size else 1
+    if base ** rows.shape[1] >= 2**62:
+        out = np.unique(rows, axis=0, return_inverse=True, return_counts=return_counts)
+        return (out[0], out[1].reshape(-1)) + tuple(out[2:])
+    key = np.zeros(len(rows), dtype=np.int64)
+    for c in range(rows.shape[1]):
+        key = key * base + rows[:, c]
+    out = np.unique(key, return_index=True, return_inverse=True, return_counts=return_counts)
+    return (rows[out[1]], out[2].reshape(-1)) + tuple(out[3:])
+
+
 def _ridge_structure(simplices: np.ndarray, nv: int):
     """Ridges of the n-simplices: ``ridges`` (R, n) sorted rows, ``ridge_of`` (m, n + 1) the ridge
     opposite each local vertex, and per ridge the incident simplices ``tri_of[start[r]:start[r+1]]``
@@ -180,11 +195,8 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
     slots = [k1 - 1] + list(range(k1 - 1))
     r = np.concatenate([np.delete(simplices, k, axis=1) for k in slots])
     r.sort(axis=1)
-    key = np.zeros(len(r), dtype=np.int64)
-    for c in range(r.shape[1]):
-        key = key * nv + r[:, c]
-    uniq, first, inv = np.unique(key, return_index=True, return_inverse=True)
-    ridges = r[first]
+    ridges, inv = _unique_rows(r)
+    uniq = ridges
     ridge_of = np.empty((m, k1), dtype=np.int64)
     for j, k in enumerate(slots):
         ridge_of[:, k] = inv[j * m:(j + 1) * m]
@@ -219,12 +231,12 @@ def _project(w, q):
 
 
 @numba.njit(cache=True)
-def _sharp_ridges(pts, ridges, alive, start, tri_of, opp):
-    """A ridge is sharp when one live simplex contains it, or all of them lie in a wedge < π/2."""
-    nr = ridges.shape[0]
-    sharp = np.zeros(nr, dtype=np.bool_)
+def _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp):
+    """Update ``sharp`` on the ridges ``todo``: a ridge is sharp when one live simplex contains it,
+    or all of them lie in a wedge < π/2."""
     angles = np.empty(64)
-    for e in range(nr):
+    for e in todo:
+        sharp[e] = False
         q = _complement_basis(pts, ridges[e])
         a = pts[ridges[e, 0]]
         ref = np.zeros(pts.shape[1])
@@ -265,18 +277,21 @@ def _sharp_ridges(pts, ridges, alive, start, tri_of, opp):
             gap = max(gap, srt[i] - srt[i - 1])
         if gap > 1.5 * np.pi:
             sharp[e] = True
-    return sharp
 
 
 def _prune_sharp(pts, simplices, ridges, ridge_of, start, tri_of, opp, max_rounds: int = 10000) -> np.ndarray:
-    """Mask of the simplices left after removing those with a sharp ridge until none is left."""
+    """Mask of the simplices left after removing those with a sharp ridge until none is left (each
+    round re-examines only the ridges of the simplices just removed)."""
     alive = np.ones(len(simplices), dtype=bool)
+    sharp = np.zeros(len(ridges), dtype=bool)
+    todo = np.arange(len(ridges))
     for _ in range(max_rounds):
-        sharp = _sharp_ridges(pts, ridges, alive, start, tri_of, opp)
+        _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp)
         kill = alive & sharp[ridge_of].any(axis=1)
         if not kill.any():
             break
         alive &= ~kill
+        todo = np.unique(ridge_of[kill])
     return alive
 
 
@@ -525,8 +540,7 @@ def _sorted_parity(rows: np.ndarray) -> np.ndarray:
 def _components_per_group(group: np.ndarray, a: np.ndarray, b: np.ndarray, n_groups: int) -> np.ndarray:
     """Number of connected components of the graph on nodes (group, vertex) with edges a–b, per group."""
     node_key = np.concatenate([np.stack([group, a], 1), np.stack([group, b], 1)])
-    uniq, inv = np.unique(node_key, axis=0, return_inverse=True)
-    inv = inv.reshape(-1)
+    uniq, inv = _unique_rows(node_key)
     k = len(group)
     graph = coo_matrix((np.ones(k), (inv[:k], inv[k:])), shape=(len(uniq), len(uniq)))
     _, label = connected_components(graph, directed=False)
@@ -539,7 +553,7 @@ def _faces_with_index(s: np.ndarray, k: int):
     """Distinct k-faces of the rows of ``s`` and, for each (row, combination), the face's index."""
     combos = list(combinations(range(s.shape[1]), k + 1))
     f = np.concatenate([s[:, c] for c in combos])
-    uniq, inv = np.unique(f, axis=0, return_inverse=True)
+    uniq, inv = _unique_rows(f)
     return uniq, inv.reshape(len(combos), len(s)).T, combos
 
 
@@ -568,8 +582,7 @@ def _defects(s: np.ndarray, npts: int) -> tuple[dict, np.ndarray, np.ndarray]:
     bad = np.zeros(npts, dtype=bool)
     ridge_rows = np.concatenate([np.delete(s, k, axis=1) for k in range(k1)])
     sign = np.repeat((-1) ** np.arange(k1), m) * _sorted_parity(ridge_rows)
-    ridges, rinv, rcount = np.unique(np.sort(ridge_rows, axis=1), axis=0, return_inverse=True, return_counts=True)
-    rinv = rinv.reshape(-1)
+    ridges, rinv, rcount = _unique_rows(np.sort(ridge_rows, axis=1), return_counts=True)
     boundary = rcount == 1
     sign_sum = np.bincount(rinv, weights=sign, minlength=len(ridges))
     conflict = (rcount == 2) & (sign_sum != 0)

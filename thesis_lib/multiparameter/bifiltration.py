@@ -47,6 +47,9 @@ class Bifiltration:
         if len(simplices) != len(grades) or len(simplices) == 0:
             raise ValueError("simplices and grades must have one (non-empty list of) array per dimension each")
         self.grades = [np.asarray(g, dtype=np.float64).reshape(-1, 2) for g in grades]
+        if validate and any(np.isnan(g).any() for g in self.grades):
+            d = next(d for d, g in enumerate(self.grades) if np.isnan(g).any())
+            raise ValueError(f"dimension {d} has a NaN grade")
         # a Filtration on the ε-grade holds the simplices and checks faces (validated once)
         self._eps = Filtration(simplices, [g[:, 0] for g in self.grades], validate=validate)
         self.simplices = self._eps.simplices
@@ -59,8 +62,6 @@ class Bifiltration:
         for d, (s, g) in enumerate(zip(self.simplices, self.grades)):
             if s.shape[0] != g.shape[0]:
                 raise ValueError(f"dimension {d}: {s.shape[0]} simplices but {g.shape[0]} grade pairs")
-            if np.isnan(g).any():
-                raise ValueError(f"dimension {d} has a NaN grade")
         for d in range(1, self.dimension + 1):
             faces = self._eps.facet_indices(d)
             if np.any(self.grades[d - 1][faces, 1] > self.grades[d][:, None, 1]):
