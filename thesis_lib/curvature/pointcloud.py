@@ -24,7 +24,7 @@ from scipy.spatial import cKDTree
 from .._validate import as_points, check_int
 from .shape import ShapeOperator
 
-__all__ = ["knn_shape_operator", "knn_curvature", "KNN_WEIGHTS"]
+__all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS"]
 
 KNN_WEIGHTS = ("uniform", "gaussian")
 
@@ -107,3 +107,21 @@ def knn_curvature(points, *, kind: str = "mean", k: int = 16, weights: str = "un
             raise ValueError(f"the Gaussian curvature det S is for surfaces in R^3 (n = 2), got n = {n}")
         return np.linalg.det(so.tensor)
     raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
+
+
+def neighbour_mean(points, values, *, k: int = 16) -> np.ndarray:
+    """The mean of ``values`` over each point and its ``k - 1`` nearest neighbours: a local average
+    of a noisy per-point curvature estimate.
+
+    Thesis: §3.3.1–§3.3.2 (an integrated curvature is turned into a value at p by averaging over a
+    region around p).
+    """
+    pts = as_points(points)
+    v = np.asarray(values, dtype=np.float64)
+    if v.shape != (pts.shape[0],):
+        raise ValueError(f"values must have one entry per point ({pts.shape[0]}), got shape {v.shape}")
+    k = check_int(k, "k", minimum=1)
+    if k > pts.shape[0]:
+        raise ValueError(f"k = {k} exceeds the number of points {pts.shape[0]}")
+    nb = cKDTree(pts).query(pts, k=k)[1].reshape(len(pts), -1)
+    return v[nb].mean(axis=1)
