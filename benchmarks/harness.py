@@ -182,12 +182,15 @@ def _columns(columns: Sequence) -> list[tuple[str, object]]:
 
 def table_header(columns: Sequence) -> str:
     """The two header lines of a Markdown table (columns as described above)."""
-    titles = [t for t, _ in _columns(columns)]
-    return "| " + " | ".join(titles) + " |\n|" + "---|" * len(titles)
+    from thesis_lib.lab.tables import header
+
+    return header([t for t, _ in _columns(columns)])
 
 
 def table_row(columns: Sequence, row: dict) -> str:
-    """One Markdown table line of ``row``."""
+    """One Markdown table line of ``row`` (the project's one table writer, ``thesis_lib.lab.tables``)."""
+    from thesis_lib.lab.tables import row as table_line
+
     cells = []
     for title, spec in _columns(columns):
         if spec is None:
@@ -196,7 +199,7 @@ def table_row(columns: Sequence, row: dict) -> str:
             cells.append(spec(row))
         else:
             cells.append(spec.format(**row))
-    return "| " + " | ".join(cells) + " |"
+    return table_line(cells)
 
 
 def print_table(columns: Sequence, rows: Sequence[dict]) -> None:
