@@ -8,7 +8,7 @@ from scipy.spatial import Delaunay
 from thesis_lib.curvature import mean_curvature
 from thesis_lib.homology import homology
 from thesis_lib.meshes import crust, sample_sphere, sample_torus
-from thesis_lib.meshes.crust import _normal_filter
+from thesis_lib.meshes.crust_geometry import _normal_filter, circumcentres, poles_from_delaunay
 from thesis_lib.meshes.crust_nd import (
     ReconstructionError,
     crust_nd,
@@ -16,8 +16,7 @@ from thesis_lib.meshes.crust_nd import (
     manifold_report,
     manifold_vertices,
 )
-from thesis_lib.meshes.crust import _circumcentres, _far, _poles
-from thesis_lib.meshes.crust_nd import _delaunay
+from thesis_lib.meshes.crust_nd import _delaunay, _far
 from thesis_lib.meshes.sampling import sample_n_catenoid
 
 
@@ -128,8 +127,8 @@ def test_voronoi_filter_equals_qhull_in_r4():
 
 def _poles_nd(pts):
     tri = _delaunay(pts)
-    cc, ok = _circumcentres(pts[tri.simplices])
-    return _poles(pts, tri, cc, ok, _far(pts, None))
+    cc, ok = circumcentres(pts[tri.simplices])
+    return poles_from_delaunay(pts, tri, cc, ok, _far(pts, None))
 
 
 def test_curve_in_the_plane():

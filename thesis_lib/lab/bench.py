@@ -37,9 +37,10 @@ def _cell(value) -> str:
     return "" if value is None else str(value)
 
 
-def markdown(topic: str, columns: list[str] | None = None) -> str:
-    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order."""
-    rows = load(topic)
+def markdown(topic: str, columns: list[str] | None = None, *, where=None) -> str:
+    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order; with
+    ``where`` (a predicate on a row), only the rows it accepts."""
+    rows = [r for r in load(topic) if where is None or where(r)]
     if columns is None:
         columns = []
         for row in rows:

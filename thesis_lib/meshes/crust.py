@@ -47,27 +47,15 @@ _RAY_LENGTH = 1e6
 
 
 def _circumcentres(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Circumcentres of full-dimensional simplices p (m, d + 1, d) (tetrahedra for d = 3); ``ok`` is
-    False for (nearly) flat ones."""
+    """Circumcentres of tetrahedra p (m, 4, 3); ``ok`` is False for (nearly) flat ones."""
     d = p[:, 1:] - p[:, :1]
     rhs = 0.5 * np.einsum("mij,mij->mi", d, d)
     det = np.linalg.det(d)
-    scale = np.einsum("mij,mij->m", d, d) ** (0.5 * p.shape[2]) + 1e-300
+    scale = np.einsum("mij,mij->m", d, d) ** 1.5 + 1e-300
     ok = np.abs(det) > 1e-12 * scale
-    x = np.zeros((len(p), p.shape[2]))
+    x = np.zeros((len(p), 3))
     x[ok] = np.linalg.solve(d[ok], rhs[ok][..., None])[..., 0]
     return p[:, 0] + x, ok
-
-
-def _normals(p: np.ndarray) -> np.ndarray:
-    """Normals (not unit) of n-simplices p (m, n + 1, n + 1) in R^{n+1}: the cofactors
-    N_k = (-1)^k det(E without column k) of the edge vectors E = p_i - p_0 (the cross product for
-    n = 2), so det[E; N] = (-1)^n |N|^2."""
-    e = p[:, 1:] - p[:, :1]
-    if p.shape[2] == 3:
-        return np.cross(e[:, 0], e[:, 1])
-    d = p.shape[2]
-    return np.stack([(-1) ** k * np.linalg.det(np.delete(e, k, axis=2)) for k in range(d)], axis=1)
 
 
 def _group_argmax(group: np.ndarray, value: np.ndarray, n_groups: int) -> np.ndarray:
@@ -103,23 +91,23 @@ def _poles(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: 
     n = len(pts)
     tets = tri.simplices
     owner = tets.ravel()
-    tet = np.repeat(np.arange(len(tets)), tets.shape[1])
+    tet = np.repeat(np.arange(len(tets)), 4)
     vec = cc[tet] - pts[owner]
     dist = np.linalg.norm(vec, axis=1)
     dist[~ok[tet]] = -np.inf
     best = _group_argmax(owner, dist, n)
-    plus_vec = np.zeros_like(pts)
+    plus_vec = np.zeros((n, 3))
     has = best >= 0
     plus_vec[has] = vec[best[has]]
     # unbounded Voronoi cells: samples on the convex hull, pole at infinity along the mean normal
     hull = tri.convex_hull
-    normal = _normals(pts[hull])
     hp = pts[hull]
+    normal = np.cross(hp[:, 1] - hp[:, 0], hp[:, 2] - hp[:, 0])
     centre = pts.mean(axis=0)
     normal *= np.sign(np.einsum("ij,ij->i", normal, hp[:, 0] - centre))[:, None]
     normal /= np.linalg.norm(normal, axis=1, keepdims=True) + 1e-300
-    acc = np.zeros_like(pts)
-    np.add.at(acc, hull.ravel(), np.repeat(normal, hull.shape[1], axis=0))
+    acc = np.zeros((n, 3))
+    np.add.at(acc, hull.ravel(), np.repeat(normal, 3, axis=0))
     on_hull = np.zeros(n, dtype=bool)
     on_hull[hull.ravel()] = True
     plus_vec[on_hull] = far * acc[on_hull] / np.linalg.norm(acc[on_hull], axis=1, keepdims=True)
@@ -161,7 +149,7 @@ def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndar
     idx = np.arange(len(tets))
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
     faces, c0s, ds, tmaxs = [], [], [], []
-    for k in range(tets.shape[1]):
+    for k in range(4):
         other = nbr[:, k]
         sel = (other == -1) | (other > idx)  # each interior face once, from its lower tetrahedron
         i, o = idx[sel], other[sel]
@@ -174,7 +162,7 @@ def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndar
         inner = o >= 0
         d[inner] = cc[o[inner]] - c0[inner]
         hp = pts[face[~inner]]  # convex-hull face: a ray away from the opposite vertex
-        nrm = _normals(hp)
+        nrm = np.cross(hp[:, 1] - hp[:, 0], hp[:, 2] - hp[:, 0])
         nrm *= np.sign(np.einsum("ij,ij->i", nrm, hp[:, 0] - pts[tets[i[~inner], k]]))[:, None]
         d[~inner] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
         faces.append(face)
@@ -204,7 +192,7 @@ def _voronoi_filter(pts, faces, c0, d, t_max, pole_pts) -> np.ndarray:
     a = pts[faces[:, 0]]
     lo, hi = np.zeros(len(faces)), t_max.astype(np.float64).copy()
     rows = np.arange(len(faces))
-    for k in range(faces.shape[1]):  # each vertex's own poles cut most edges that run inside the solid
+    for k in range(3):  # each vertex's own poles cut most edges that run inside the solid
         for offset in (0, n):
             _cut(lo, hi, rows, a, c0, d, pole_pts[faces[:, k] + offset])
     keep = np.zeros(len(faces), dtype=bool)
@@ -228,23 +216,23 @@ def _voronoi_filter(pts, faces, c0, d, t_max, pole_pts) -> np.ndarray:
 
 
 def _normal_filter(pts: np.ndarray, faces: np.ndarray, p_plus: np.ndarray, theta: float) -> np.ndarray:
-    """Mask of the n-simplices (triangles for n = 2) whose normal is within θ of the pole vector at
-    the vertex opposite the largest facet (for a triangle the largest-angle vertex, by the law of
-    sines) and within 3θ/2 at the others (ABK98, §5)."""
+    """Mask of the triangles whose normal is within θ of the pole vector at the largest-angle
+    vertex and within 3θ/2 at the others (ABK98, §5)."""
     p = pts[faces]
-    nrm = _normals(p)
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     nrm /= np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300
-    k1 = faces.shape[1]
-    size = np.empty((len(faces), k1))  # squared (n-1)-volume (up to a constant) of the facet opposite k
-    for k in range(k1):
-        q = np.delete(p, k, axis=1)
-        e = q[:, 1:] - q[:, :1]
-        size[:, k] = np.linalg.det(np.einsum("mia,mja->mij", e, e)) if e.shape[1] else 1.0
-    largest = np.argmax(size, axis=1)
+    cosang = np.empty((len(faces), 3))
+    for k in range(3):
+        a = p[:, (k + 1) % 3] - p[:, k]
+        b = p[:, (k + 2) % 3] - p[:, k]
+        cosang[:, k] = np.einsum("ij,ij->i", a, b) / (
+            np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1) + 1e-300
+        )
+    largest = np.argmin(cosang, axis=1)  # largest angle = smallest cosine
     pole = p_plus[faces] - p
     pole /= np.linalg.norm(pole, axis=2, keepdims=True) + 1e-300
     c = np.abs(np.einsum("ij,ikj->ik", nrm, pole))  # |cos| of line angle per vertex
-    limit = np.full((len(faces), k1), np.cos(1.5 * theta))
+    limit = np.full((len(faces), 3), np.cos(1.5 * theta))
     limit[np.arange(len(faces)), largest] = np.cos(theta)
     return np.all(c >= limit, axis=1)
 
@@ -259,18 +247,13 @@ def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None)
     if not 0 < theta < np.pi / 2:
         raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
     pts = _samples(points)
-    return _filtered_faces(pts, Delaunay(pts), theta, _far(pts, far))[0]
-
-
-def _filtered_faces(pts: np.ndarray, tri: Delaunay, theta: float, far: float):
-    """Steps 2–4 on the Delaunay triangulation ``tri`` of the samples in R^d (any d): the sorted
-    (d - 1)-faces of Del(S ∪ P) with sample vertices that pass the normal filter, and the poles."""
+    tri = Delaunay(pts)
     cc, ok = _circumcentres(pts[tri.simplices])
-    p_plus, p_minus = _poles(pts, tri, cc, ok, far)
+    p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far))
     faces, c0, d, t_max = _candidate_edges(pts, tri, cc, ok, p_plus, theta)
     faces = faces[_voronoi_filter(pts, faces, c0, d, t_max, np.vstack([p_plus, p_minus]))]
     faces = np.sort(faces, axis=1)
-    return faces[np.lexsort(faces.T[::-1])], p_plus, p_minus
+    return faces[np.lexsort(faces.T[::-1])]
 
 
 def _edge_structure(tris: np.ndarray, nv: int):

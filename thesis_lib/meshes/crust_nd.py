@@ -49,7 +49,7 @@ from scipy.spatial import Delaunay, QhullError, cKDTree
 
 from .._validate import as_points
 from .topology import euler_characteristic
-from .crust import _far, _filtered_faces, _normals
+from .crust_geometry import filtered_faces, simplex_normals
 
 __all__ = ["crust_nd", "crust_nd_candidates", "extract_manifold_nd", "manifold_report", "manifold_vertices",
            "ManifoldReport", "CrustResult", "ReconstructionError", "MAX_AMBIENT_DIM"]
@@ -151,6 +151,16 @@ def _delaunay(pts: np.ndarray) -> Delaunay:
         raise ValueError(f"Qhull could not triangulate the samples: {str(err).splitlines()[0]}") from None
 
 
+def _far(pts: np.ndarray, far) -> float:
+    """Distance of the poles at infinity: ``far``, or half the diagonal of the bounding box."""
+    if far is None:
+        return 0.5 * float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    f = float(far)
+    if not np.isfinite(f) or f <= 0:
+        raise ValueError(f"far must be a positive distance, got {far!r}")
+    return f
+
+
 def _check_theta(theta) -> float:
     theta = float(theta)
     if not 0 < theta < np.pi / 2:
@@ -167,7 +177,7 @@ def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None =
     """
     theta = _check_theta(theta)
     pts = _samples_nd(points)
-    return _filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))[0]
+    return filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))[0]
 
 
 # ---------------------------------------------------------------------------- trimming kernels
@@ -472,7 +482,7 @@ def _outer_seed(pts, s, alive) -> tuple[int, bool]:
     cand = live[(s[live] == top).any(axis=1)]
     if len(cand) == 0:
         cand = live[[int(np.argmax(pts[s[live]].max(axis=1)[:, 0]))]]
-    nrm = _normals(pts[s[cand]])
+    nrm = simplex_normals(pts[s[cand]])
     nrm /= np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300
     i = int(np.argmax(np.abs(nrm[:, 0])))
     return int(cand[i]), bool(nrm[i, 0] < 0)
@@ -709,7 +719,7 @@ def crust_nd(points, *, theta: float = np.pi / 4, closed: bool = True, far: floa
     """
     theta = _check_theta(theta)
     pts = _samples_nd(points)
-    faces, p_plus, p_minus = _filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))
+    faces, p_plus, p_minus = filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))
     ratio = _pole_ratio(pts, p_plus, p_minus)
     hint = (f"the median pole distance is {ratio:.2g} nearest-sample distances: the points fill a volume "
             "rather than sample a hypersurface" if ratio < 2.5 else
