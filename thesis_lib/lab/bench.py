@@ -72,10 +72,13 @@ def _cell(value) -> str:
     return "" if value is None else str(value)
 
 
-def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None) -> str:
+def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
+             where=None) -> str:
     """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order; only the
-    rows of ``cases`` when given (those stored)."""
-    rows = [r for r in load(topic) if cases is None or r.get("case") in cases]
+    rows of ``cases`` when given (those stored), and with ``where`` (a predicate on a row) only the
+    rows it accepts."""
+    rows = [r for r in load(topic)
+            if (cases is None or r.get("case") in cases) and (where is None or where(r))]
     if not rows:
         return f"*No stored rows of `{topic}` for the cases {', '.join(cases or [])}: run `make bench`.*\n"
     if columns is None:

@@ -7,7 +7,7 @@ import numpy as np
 from .._validate import check_int, check_real, check_seed, check_size
 from ..curvature.exact import catenoid_point, torus_point
 
-__all__ = ["sample_torus", "sample_catenoid", "sample_sphere"]
+__all__ = ["sample_torus", "sample_catenoid", "sample_sphere", "sample_n_catenoid"]
 
 
 def _count(n, dim: int) -> int:
@@ -117,3 +117,33 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
     radius = check_real(radius, "radius", positive=True)
     g = np.random.default_rng(check_seed(seed)).normal(size=(n, d))
     return radius * g / np.linalg.norm(g, axis=1, keepdims=True)
+
+
+def sample_n_catenoid(n_points: int, *, dimension: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0),
+                      seed: int = 0, return_params: bool = False):
+    """``n_points`` uniform w.r.t. volume on the piece v ∈ v_range, every w_i ∈ w_range of the
+    n-catenoid (catenoid × R^{n-2}) in R^{n+1}; volume element cosh² v du dv dw.
+
+    Thesis: §3.4.3 (the 3-catenoid on u ∈ [−π, π], v, r ∈ [−1, 1]), sampled at random (Chapter 5).
+    """
+    n_points = _count("n_points", n_points)
+    dimension = _count("dimension", dimension)
+    if dimension < 2:
+        raise ValueError(f"dimension must be >= 2, got {dimension}")
+    ranges = []
+    for name, rng_ in (("v_range", v_range), ("w_range", w_range)):
+        lo, hi = map(float, rng_)
+        if not (np.isfinite(lo) and np.isfinite(hi)) or hi <= lo:
+            raise ValueError(f"{name} must be a finite interval (low < high), got {rng_!r}")
+        ranges.append((lo, hi))
+    (vlo, vhi), (wlo, whi) = ranges
+    rng = np.random.default_rng(seed)
+    wmax = np.cosh(max(abs(vlo), abs(vhi))) ** 2
+    params = _rejection(
+        n_points, rng,
+        lambda m: np.column_stack([rng.uniform(0, 2 * np.pi, m), rng.uniform(vlo, vhi, m)]
+                                  + [rng.uniform(wlo, whi, m) for _ in range(dimension - 2)]),
+        lambda c: np.cosh(c[:, 1]) ** 2, wmax,
+    )
+    pts = catenoid_point(params)
+    return (pts, params) if return_params else pts
