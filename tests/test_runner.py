@@ -140,9 +140,17 @@ def test_cli_reports_bad_input_with_exit_code_2(root, capsys, argv, message):
                                   ["sweep", "toy", "-p", "n", "1", "--retries", "-1"]])
 def test_cli_refuses_bad_counts(root, argv, capsys):
     """Regression (issue 11): `-j 0` was accepted."""
-    with pytest.raises(SystemExit) as exc:
-        lab_cli.main(argv)
-    assert exc.value.code == 2 and "expected an integer" in capsys.readouterr().err
+    assert lab_cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("error: ") and "expected an integer" in err
+
+
+@pytest.mark.parametrize("argv", [["run", "toy", "-p", "n", "-:"], ["run"], ["bogus"], ["sweep", "toy", "--shard"]])
+def test_cli_usage_errors_are_one_clear_line(root, argv, capsys):
+    """Regression (fuzz): a value read as an option (`-p n -:`) made argparse exit from inside main()."""
+    assert lab_cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("error: ") and "--help" in err and "usage:" not in err
     with pytest.raises(ParameterError, match="jobs must be a positive integer"):
         runner.sweep("toy", {"n": [1]}, jobs=0, progress=False)
 

@@ -173,9 +173,20 @@ def _grid_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
 
 
+class UsageError(Exception):
+    """A command line that argparse cannot read (reported as ``error: ...``, exit status 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that raises :class:`UsageError` instead of printing the usage and exiting."""
+
+    def error(self, message: str):
+        raise UsageError(f"{message} (see `{self.prog} --help`)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``thesis-lab``."""
-    parser = argparse.ArgumentParser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
+    parser = _Parser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
     parser.add_argument("--project", metavar="DIR",
                         help="the project folder (default: $THESIS_LAB_PROJECT, else the current folder or above)")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -256,7 +267,13 @@ def _main(argv: list[str] | None) -> int:
     from .results import ResultsError
     from .sweep import ClusterError
 
-    args = build_parser().parse_args(argv)
+    try:
+        args = build_parser().parse_args(argv)
+    except UsageError as exc:
+        _err(f"error: {exc}")
+        return 2
+    except SystemExit as exc:  # --help printed the usage
+        return exc.code if isinstance(exc.code, int) else 0
     if args.project:
         os.environ[PROJECT_ENV] = os.path.abspath(args.project)
     try:
