@@ -1,6 +1,7 @@
 # thesis-lab: `make book` builds the whole book, `make test` runs the whole test suite.
 # Both create .venv with the project installed (editable, with the dev extras) when it is missing.
 
+SHELL  := /bin/bash
 PYTHON ?= python3
 VENV   := .venv
 BIN    := $(VENV)/bin
@@ -9,29 +10,43 @@ export PATH := $(abspath $(BIN)):$(PATH)
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 export VTK_DEFAULT_OPENGL_WINDOW := vtkEGLRenderWindow
 
-.PHONY: book test experiments notebooks sweep bench clean install chromium
+.PHONY: book test experiments notebooks sweep bench bench-check clean install chromium
+
+# $(call unchanged,COMMAND): run COMMAND, then fail if it changed what `git status` shows
+define unchanged
+	@before="$$(git status --porcelain 2>/dev/null)"; \
+	echo '$(strip $(1))'; $(1); rc=$$?; \
+	after="$$(git status --porcelain 2>/dev/null)"; \
+	if [ "$$before" != "$$after" ]; then \
+	    echo "error: this command changed files of the checkout (git status before / after):"; \
+	    diff <(echo "$$before") <(echo "$$after"); exit 1; fi; \
+	exit $$rc
+endef
 
 install: $(STAMP)
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	@# (setuptools prints an "Editable installation" notice on every editable install: not a problem)
+	PYTHONWARNINGS="ignore:Editable installation" $(BIN)/python -m pip install --quiet -e ".[dev]"
 	touch $(STAMP)
 
-## book: execute every notebook (cached in .jupyter_cache) and build the HTML book
+## book: execute every notebook (cached in book/_build/.jupyter_cache) and build the HTML book,
+## book/_build/html, and the same site as one archive, book/_build/thesis-lab-book.zip
 book: $(STAMP)
-	$(BIN)/jupyter-book build book -W -n --keep-going
+	$(call unchanged,$(BIN)/jupyter-book build book -W -n --keep-going)
 
-## test: library tests, notebooks against their stored outputs (nbval), the built book in Chromium
+## test: library tests, notebooks against their stored outputs (nbval) and again under other
+## numerics (tests/test_machine_independence.py), the built book in Chromium
 test: $(STAMP) chromium
-	$(BIN)/python -m pytest -n 2 --dist loadfile -p no:cacheprovider \
+	$(call unchanged,$(BIN)/python -m pytest -n 2 --dist loadfile -p no:cacheprovider \
 	    tests book experiments --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg \
-	    --nbval-current-env
+	    --nbval-current-env)
 
 chromium:
 	@command -v chromium >/dev/null 2>&1 || { \
-	    echo "installing Debian's chromium for the offline math test"; \
+	    echo "installing Debian's chromium for the tests that open the built book"; \
 	    SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
 	    $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq chromium >/dev/null; }
 
@@ -47,9 +62,15 @@ notebooks: $(STAMP)
 sweep: $(STAMP)
 	$(BIN)/thesis-lab sweep $(NAME) $(ARGS) -j 2
 
-## bench: speed and memory against the reference libraries, one run each (writes benchmarks/results)
+## bench: speed and memory against the reference libraries (interleaved rounds, medians, paired
+## ratios; writes benchmarks/results/<topic>.json with commit, date and load). make bench ONLY=persistence
 bench: $(STAMP)
-	for b in benchmarks/bench_*.py; do echo "== $$b"; $(BIN)/python $$b || exit 1; done
+	for b in $(if $(ONLY),benchmarks/bench_$(ONLY).py,benchmarks/bench_*.py); do echo "== $$b"; $(BIN)/python $$b || exit 1; done
 
+## bench-check: re-run every benchmark's quick cases; fail if a stored ratio moved by more than 35 %
+bench-check: $(STAMP)
+	$(BIN)/python benchmarks/check.py
+
+## clean: remove what the commands build (the book, its execution cache, runs, test caches)
 clean:
 	rm -rf book/_build .jupyter_cache runs .pytest_cache .hypothesis

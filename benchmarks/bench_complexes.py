@@ -1,26 +1,29 @@
 """Construction of the complexes of §2.1.2: thesis_lib against GUDHI, time and peak memory as ratios.
 
-Usage: ``python benchmarks/bench_complexes.py [--quick] [--repeat N]``.
+Usage: ``python benchmarks/bench_complexes.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
 
-Every (case, tool) runs in its own subprocess so that the resident-set high-water mark
-(``resource.getrusage``) belongs to that tool alone: build the input, warm up on a small input
-(numba compilation excluded), read the RSS mark (``base_mb``), time the construction (best of
-``--repeat``), read the mark again; ``work_mb = peak - base`` is what the construction added.
+Time: both tools build the same complex from the same points in one process, interleaved
+(ours, GUDHI, ours, ...) after a warm-up, for 5 rounds (15 under 0.1 s); the table gives the
+medians and ``ratio_gudhi``, the median of the per-round ratios (``harness.compare``).  Whole
+constructions are timed: points in, complex out (GUDHI's simplex tree, our ``Filtration``), and
+the warm-up checks that both built the same number of simplices.  Memory: each tool builds the
+case once in a fresh process; ``delta_mb`` is the peak resident set above the baseline after
+imports, input and warm-up (``harness.memory``).
 
-Pairs compared (same input for both tools):
+Pairs compared:
 
 * rips — ``rips(points, ε, 2)`` vs ``RipsComplex(max_edge_length=2ε).create_simplex_tree(2)``; the
   thesis case is two circles with 100 points each, ε <= 2 (1,333,500 simplices).
-* alpha — ``alpha(points)`` vs ``AlphaComplex(points).create_simplex_tree()`` (default precision).
-* alpha-weighted — the same with weights.
+* alpha — ``alpha(points)`` vs ``AlphaComplex(points).create_simplex_tree()`` (GUDHI's default,
+  ``precision="safe"``; ours is exact where it matters, see ``thesis_lib.complexes.predicates``),
+  uniform random points; ``alpha-grid`` is an exact 2-D grid (every unit square co-circular: the
+  exact predicates' worst case) against GUDHI with ``precision="exact"``.
+* alpha-weighted — the same with random weights in [0, 1e-5).
 * witness — ``witness(points, landmarks, ε, 3)`` (thesis rule, un-squared offsets) vs
-  ``EuclideanStrongWitnessComplex(...).create_simplex_tree(α², 3)`` (GUDHI's strong witness rule with
-  squared distances).  The rules differ (see ``thesis_lib.complexes.witness``), so the complexes
-  differ too: compare the simplex counts in the table with the times.  (GUDHI's construction with
-  α² = inf did not finish in 4 minutes on 400 witnesses and 30 landmarks, so thresholds are finite.)
+  ``EuclideanStrongWitnessComplex(...).create_simplex_tree(α², 3)`` (squared rule): the complexes
+  differ, so read the ratio with the simplex counts.
 * cech — GUDHI's Python API has no Čech complex; the reference is its Delaunay–Čech complex on the
-  same points (a different, smaller complex with the same miniball values).  Read that ratio as
-  context, not as a like-for-like comparison.
+  same points (a different, smaller complex with the same miniball values): context only.
 """
 
 from __future__ import annotations
@@ -31,10 +34,13 @@ CASES = {
     "rips-two-circles-20": {"kind": "rips", "data": ("two_circles", 20), "eps": 2.0, "max_dim": 2},
     "rips-two-circles-60": {"kind": "rips", "data": ("two_circles", 60), "eps": 2.0, "max_dim": 2},
     "rips-two-circles-100": {"kind": "rips", "data": ("two_circles", 100), "eps": 2.0, "max_dim": 2},
-    "alpha-2d-1000": {"kind": "alpha", "data": ("uniform", 1000, 2)},
+    "alpha-2d-10000": {"kind": "alpha", "data": ("uniform", 10_000, 2)},
     "alpha-2d-100000": {"kind": "alpha", "data": ("uniform", 100_000, 2)},
+    "alpha-3d-2000": {"kind": "alpha", "data": ("uniform", 2_000, 3)},
     "alpha-3d-20000": {"kind": "alpha", "data": ("uniform", 20_000, 3)},
+    "alpha-weighted-2d-10000": {"kind": "alpha-weighted", "data": ("uniform", 10_000, 2)},
     "alpha-weighted-2d-100000": {"kind": "alpha-weighted", "data": ("uniform", 100_000, 2)},
+    "alpha-grid-2d-100": {"kind": "alpha-grid", "data": ("grid", 100, 2)},
     "witness-torus-20-30": {"kind": "witness", "data": ("flat_torus", 20), "landmarks": 30, "max_dim": 3,
                             "eps": 0.5, "alpha2": 0.5},
     "witness-torus-50-50": {"kind": "witness", "data": ("flat_torus", 50), "landmarks": 50, "max_dim": 3,
@@ -42,128 +48,134 @@ CASES = {
     "cech-two-circles-20": {"kind": "cech", "data": ("two_circles", 20), "eps": 0.3, "max_dim": 2},
     "cech-two-circles-100": {"kind": "cech", "data": ("two_circles", 100), "eps": 0.3, "max_dim": 2},
 }
-FULL = [
-    "rips-two-circles-60",
-    "rips-two-circles-100",
-    "alpha-2d-100000",
-    "alpha-3d-20000",
-    "alpha-weighted-2d-100000",
-    "witness-torus-50-50",
-    "cech-two-circles-100",
-]
-QUICK = ["rips-two-circles-20", "alpha-2d-1000", "witness-torus-20-30", "cech-two-circles-20"]
+QUICK = ["rips-two-circles-20", "alpha-2d-10000", "alpha-3d-2000", "alpha-weighted-2d-10000",
+         "witness-torus-20-30", "cech-two-circles-20"]
+FULL = QUICK + ["rips-two-circles-60", "rips-two-circles-100", "alpha-2d-100000", "alpha-3d-20000",
+                "alpha-weighted-2d-100000", "alpha-grid-2d-100", "witness-torus-50-50", "cech-two-circles-100"]
+REFERENCE = {
+    "rips": "gudhi RipsComplex (same complex)",
+    "alpha": "gudhi AlphaComplex precision=safe (same complex)",
+    "alpha-weighted": "gudhi AlphaComplex precision=safe (same complex)",
+    "alpha-grid": "gudhi AlphaComplex precision=exact (same complex)",
+    "witness": "gudhi EuclideanStrongWitnessComplex (squared rule: a different complex)",
+    "cech": "gudhi DelaunayCechComplex (a different complex)",
+}
 
 
-def _points(case: dict):
+def _input(name: str):
+    """(points, weights) of a case."""
     import numpy as np
 
     from thesis_lib.datasets import flat_torus, two_circles
 
+    case = CASES[name]
     kind = case["data"][0]
     if kind == "two_circles":
-        return two_circles(case["data"][1], seed=0)
-    if kind == "flat_torus":
-        return flat_torus(case["data"][1], noise=0.02, seed=0)
-    _, n, dim = case["data"]
-    return np.random.default_rng(0).random((n, dim))
+        pts = two_circles(case["data"][1], seed=0)
+    elif kind == "flat_torus":
+        pts = flat_torus(case["data"][1], noise=0.02, seed=0)
+    elif kind == "grid":
+        side, dim = case["data"][1:]
+        pts = np.stack(np.meshgrid(*[np.arange(side)] * dim, indexing="ij"), -1).reshape(-1, dim).astype(float)
+    else:
+        _, n, dim = case["data"]
+        pts = np.random.default_rng(0).random((n, dim))
+    weights = np.random.default_rng(1).random(len(pts)) * 1e-5 if case["kind"] == "alpha-weighted" else None
+    return pts, weights
 
 
-def worker(tool: str, name: str, repeat: int) -> dict:
-    import numpy as np
+def builders(name: str):
+    """``{"ours": f, "gudhi": g}``: zero-argument callables building the case, each returning the
+    number of simplices it built."""
+    import gudhi
+
+    from thesis_lib import complexes as cx
 
     case = CASES[name]
-    pts = _points(case)
     kind = case["kind"]
-    weights = np.random.default_rng(1).random(pts.shape[0]) * 1e-5 if kind == "alpha-weighted" else None
-    small = pts[: min(40, pts.shape[0])]
-    if tool == "ours":
-        from thesis_lib import complexes as cx
-
-        if kind == "rips":
-            build = lambda p: cx.rips(p, case["eps"], case["max_dim"])  # noqa: E731
-        elif kind == "cech":
-            build = lambda p: cx.cech(p, case["eps"], case["max_dim"])  # noqa: E731
-        elif kind.startswith("alpha"):
-            build = lambda p: cx.alpha(p, None if weights is None else weights[: p.shape[0]])  # noqa: E731
-        elif kind == "witness":
-            lm_all = cx.maxmin_landmarks(pts, case["landmarks"], seed=0)
-
-            def build(p):
-                lm = lm_all if p is pts else np.arange(5)
-                return cx.witness(p, lm, case["eps"], case["max_dim"])
-        build(small)  # warm-up (numba compilation, cached on disk anyway)
-        run = lambda: build(pts)  # noqa: E731
-        count = lambda f: len(f)  # noqa: E731
-    elif tool == "gudhi":
-        import gudhi
-
-        if kind == "rips":
-            run = lambda: gudhi.RipsComplex(points=pts, max_edge_length=2 * case["eps"]).create_simplex_tree(  # noqa: E731
-                max_dimension=case["max_dim"]
-            )
-        elif kind == "cech":
-            run = lambda: gudhi.DelaunayCechComplex(points=pts).create_simplex_tree(  # noqa: E731
-                max_alpha_square=case["eps"] ** 2
-            )
-        elif kind.startswith("alpha"):
-            run = lambda: gudhi.AlphaComplex(points=pts, weights=weights).create_simplex_tree()  # noqa: E731
-        elif kind == "witness":
-            from thesis_lib.complexes import maxmin_landmarks
-
-            lm = maxmin_landmarks(pts, case["landmarks"], seed=0)
-            run = lambda: gudhi.EuclideanStrongWitnessComplex(  # noqa: E731
-                landmarks=pts[lm], witnesses=pts
-            ).create_simplex_tree(max_alpha_square=case["alpha2"], limit_dimension=case["max_dim"])
-        count = lambda s: s.num_simplices()  # noqa: E731
-    else:
-        raise ValueError(f"unknown tool {tool!r}")
-    stats, n = harness.measure_rss(run, repeat, summary=count)  # each output counted, then dropped
-    return {**stats, "n_simplices": n}
+    pts, weights = _input(name)
+    if kind == "rips":
+        return {"ours": lambda: len(cx.rips(pts, case["eps"], case["max_dim"])),
+                "gudhi": lambda: gudhi.RipsComplex(points=pts, max_edge_length=2 * case["eps"])
+                .create_simplex_tree(max_dimension=case["max_dim"]).num_simplices()}
+    if kind == "cech":
+        return {"ours": lambda: len(cx.cech(pts, case["eps"], case["max_dim"])),
+                "gudhi": lambda: gudhi.DelaunayCechComplex(points=pts)
+                .create_simplex_tree(max_alpha_square=case["eps"] ** 2).num_simplices()}
+    if kind.startswith("alpha"):
+        precision = "exact" if kind == "alpha-grid" else "safe"
+        return {"ours": lambda: len(cx.alpha(pts, weights)),
+                "gudhi": lambda: gudhi.AlphaComplex(points=pts, weights=weights, precision=precision)
+                .create_simplex_tree().num_simplices()}
+    if kind == "witness":
+        lm = cx.maxmin_landmarks(pts, case["landmarks"], seed=0)
+        return {"ours": lambda: len(cx.witness(pts, lm, case["eps"], case["max_dim"])),
+                "gudhi": lambda: gudhi.EuclideanStrongWitnessComplex(landmarks=pts[lm], witnesses=pts)
+                .create_simplex_tree(max_alpha_square=case["alpha2"], limit_dimension=case["max_dim"])
+                .num_simplices()}
+    raise ValueError(f"unknown case kind {kind!r}")
 
 
-def run_case(tool: str, name: str, repeat: int) -> dict:
-    return harness.run_worker(__file__, tool, name, "--repeat", repeat)
+def memory_run(name: str, tool: str) -> dict:
+    """In a fresh process: peak memory of one construction above the post-warm-up baseline."""
+
+    def setup():
+        build = builders(name)[tool]
+        build()  # warm-up: numba compilation, caches
+        return build
+
+    return harness.memory_worker(setup, lambda build: build())
 
 
 COLUMNS = [
     ("case", "{case}"),
-    ("simplices (ours / GUDHI)", "{ours_simplices} / {ref_simplices}"),
+    ("simplices (ours / GUDHI)", "{ours_simplices} / {gudhi_simplices}"),
     ("ours s", "{ours_s:.4f}"),
-    ("GUDHI s", "{ref_s:.4f}"),
-    ("time ratio", "{ratio:.2f}"),
+    ("GUDHI s", "{gudhi_s:.4f}"),
+    ("ratio (median of rounds)", "{ratio_gudhi:.2f}"),
+    ("rounds", "{rounds}"),
     ("ours MB", "{ours_mb:.1f}"),
-    ("GUDHI MB", "{ref_mb:.1f}"),
-    ("memory ratio", lambda r: "n/a" if r["mem_ratio"] is None else f"{r['mem_ratio']:.2f}"),
+    ("GUDHI MB", "{gudhi_mb:.1f}"),
 ]
 
 
-def make_row(name: str, repeat: int) -> dict:
-    """One table row: every tool on case ``name`` (each in its own subprocess)."""
-    ours = run_case("ours", name, repeat)
-    ref = run_case("gudhi", name, repeat)
-    return {
-        "case": name,
-        "kind": CASES[name]["kind"],
-        "ours_s": ours["time_s"],
-        "ref_s": ref["time_s"],
-        "ratio": ours["time_s"] / ref["time_s"],
-        "ours_mb": ours["work_mb"],
-        "ref_mb": ref["work_mb"],
-        "mem_ratio": ours["work_mb"] / ref["work_mb"] if ref["work_mb"] > 0 else None,
-        "ours_peak_mb": ours["peak_mb"],
-        "ref_peak_mb": ref["peak_mb"],
-        "ours_simplices": ours["n_simplices"],
-        "ref_simplices": ref["n_simplices"],
-        "reference": "gudhi " + ("DelaunayCechComplex (different complex)" if CASES[name]["kind"] == "cech" else
-                                 "EuclideanStrongWitnessComplex (squared rule)" if CASES[name]["kind"] == "witness"
-                                 else "same complex"),
-        "repeat": repeat,
-    }
+def make_row(name: str, rounds: int | None) -> dict:
+    counts = {}
+
+    def check(results):
+        counts.update(results)
+
+    result = harness.compare(builders(name), rounds=rounds, check=check)
+    row = {"case": name, "kind": CASES[name]["kind"], **harness.ratio_fields(result)}
+    row["ours_simplices"], row["gudhi_simplices"] = counts["ours"], counts["gudhi"]
+    if CASES[name]["kind"] in ("rips", "alpha", "alpha-weighted", "alpha-grid") and counts["ours"] != counts["gudhi"]:
+        raise AssertionError(f"{name}: ours built {counts['ours']} simplices, GUDHI {counts['gudhi']}")
+    for tool in ("ours", "gudhi"):
+        mem = harness.memory(__file__, name, tool)
+        row[f"{tool}_mb"] = mem["delta_mb"]
+        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+    row["reference"] = REFERENCE[CASES[name]["kind"]]
+    return row
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    return harness.main_per_case("complexes", __doc__, argv, worker=worker, make_row=make_row, columns=COLUMNS,
-                                 cases=(QUICK, FULL), repeat=(2, 5))
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("CASE", "TOOL"), cases=list(CASES))
+    if args.memory:
+        memory_run(*args.memory)
+        return []
+    meta = harness.environment()
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "complexes_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(name, args.rounds))
+        harness.write_results("complexes", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
+    return rows
 
 
 if __name__ == "__main__":

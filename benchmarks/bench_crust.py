@@ -1,45 +1,66 @@
 """Crust [ABK98] against pymeshlab's ball pivoting on uniform torus samples (R = 10, r = 5, §3.4.1).
 
-Usage: ``python benchmarks/bench_crust.py [--quick]``.  Prints a Markdown table and writes
-``benchmarks/results/crust.json`` (``crust_quick.json`` with ``--quick``): case, ours_s, ref_s,
-ratio, ours_mb, ref_mb, and whether each surface came out closed with χ = 0 (the issue's target:
-10⁵ samples in under a minute, closed genus 1).  Time is the best of a few runs after a warm-up
-(numba compilation excluded); memory is the peak RSS of a fresh subprocess.
+Usage: ``python benchmarks/bench_crust.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
+
+Time: both reconstructions run on the same samples in one process, interleaved (Crust, ball
+pivoting, Crust, ...) after a warm-up, 5 rounds; medians and ``ratio_ball_pivoting``, the median
+of the per-round ratios (``harness.compare``).  Each output is checked for a closed surface of
+genus 1 (every edge in two faces, χ = 0).  Memory: each method reconstructs once in a fresh
+process; ``delta_mb`` is the peak resident set above the baseline after imports, samples and
+warm-up (``harness.memory``).  A third process measures Qhull's Delaunay triangulation of the same
+samples alone (``scipy.spatial.Delaunay``: the tetrahedra, their neighbours and Qhull's own peak),
+the first step of the Crust and what bounds its peak from below: the Crust cannot use less.
 """
 
 from __future__ import annotations
 
-import json
-
 import harness
 import numpy as np
 
-QUICK, FULL = [2000], [2000, 10000, 30000, 100000]
+QUICK = [2000]
+FULL = [2000, 10000, 30000, 100000]
+TOOLS = ("crust", "ball_pivoting", "delaunay")
 
 COLUMNS = [
-    ("case", "{case}"),
+    ("samples", "{n_samples}"),
     ("Crust (s)", "{ours_s:.2f}"),
-    ("ball pivoting (s)", "{ref_s:.2f}"),
-    ("ratio", "{ratio:.2f}"),
+    ("ball pivoting (s)", "{ball_pivoting_s:.2f}"),
+    ("ratio", "{ratio_ball_pivoting:.2f}"),
+    ("rounds", "{rounds}"),
     ("Crust (MB)", "{ours_mb:.0f}"),
-    ("ball pivoting (MB)", "{ref_mb:.0f}"),
+    ("ball pivoting (MB)", "{ball_pivoting_mb:.0f}"),
+    ("Qhull Delaunay alone (MB)", "{delaunay_mb:.0f}"),
     ("Crust closed genus 1", "{ours_closed_genus1}"),
-    ("ball pivoting closed genus 1", "{ref_closed_genus1}"),
+    ("ball pivoting closed genus 1", "{ball_pivoting_closed_genus1}"),
 ]
 
 
-def _method(which: str):
+def _case(n: int) -> str:
+    return f"torus {n} samples"
+
+
+def _run(tool: str, pts: np.ndarray):
+    from scipy.spatial import Delaunay
+
     from thesis_lib.meshes import ball_pivoting, crust
 
-    return crust if which == "crust" else ball_pivoting
+    if tool == "crust":
+        return crust(pts)
+    if tool == "ball_pivoting":
+        return ball_pivoting(pts)
+    tri = Delaunay(pts)
+    return tri.simplices, tri.neighbors
 
 
-def worker(which: str, n: int) -> None:
-    """Reconstruct once in this fresh process; print the peak RSS (MB) as JSON."""
+def memory_run(n: str, tool: str) -> dict:
+    """In a fresh process: peak memory of one reconstruction above the post-warm-up baseline."""
     from thesis_lib.meshes import sample_torus
 
-    _method(which)(sample_torus(n, seed=0))
-    print(json.dumps(harness.status_mb("VmHWM")))
+    def setup():
+        _run(tool, sample_torus(500, seed=1))  # warm-up: numba compilation, pymeshlab's plugins
+        return sample_torus(int(n), seed=0)
+
+    return harness.memory_worker(setup, lambda pts: _run(tool, pts))
 
 
 def closed_genus1(faces: np.ndarray) -> bool:
@@ -48,36 +69,45 @@ def closed_genus1(faces: np.ndarray) -> bool:
     return bool(np.all(facet_degrees(faces) == 2) and euler_characteristic(faces) == 0)
 
 
-def make_row(n: int, repeat: int) -> dict:
+def make_row(n: int, rounds: int | None) -> dict:
     from thesis_lib.meshes import sample_torus
 
     pts = sample_torus(n, seed=0)
-    ours_s, ours = harness.best_of(lambda: _method("crust")(pts), repeat)
-    ref_s, ref = harness.best_of(lambda: _method("ball")(pts), repeat)
-    return {
-        "case": f"torus {n} samples",
-        "n_samples": n,
-        "ours_s": ours_s,
-        "ref_s": ref_s,
-        "ratio": ours_s / ref_s,
-        "ours_mb": float(harness.run_worker(__file__, "crust", n)),
-        "ref_mb": float(harness.run_worker(__file__, "ball", n)),
-        "ours_closed_genus1": closed_genus1(ours),
-        "ref_closed_genus1": closed_genus1(ref),
-    }
+    closed = {}
+
+    def check(results):
+        closed.update({name: closed_genus1(faces) for name, faces in results.items()})
+
+    result = harness.compare({"ours": lambda: _run("crust", pts), "ball_pivoting": lambda: _run("ball_pivoting", pts)},
+                             rounds=rounds, check=check)
+    row = {"case": _case(n), "n_samples": n, **harness.ratio_fields(result)}
+    row["ours_closed_genus1"] = closed["ours"]
+    row["ball_pivoting_closed_genus1"] = closed["ball_pivoting"]
+    for tool, key in zip(TOOLS, ("ours", "ball_pivoting", "delaunay")):
+        mem = harness.memory(__file__, n, tool)
+        row[f"{key}_mb"] = mem["delta_mb"]
+        row[f"{key}_baseline_mb"] = mem["baseline_mb"]
+    return row
 
 
-def main() -> None:
-    args = harness.arguments(__doc__, worker=("METHOD", "N"))
-    if args.worker:
-        worker(args.worker[0], int(args.worker[1]))
-        return
-    from thesis_lib.meshes import sample_torus
+def main(argv: list[str] | None = None) -> list[dict]:
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("N", "TOOL"), cases=[str(n) for n in FULL])
+    if args.memory:
+        memory_run(*args.memory)
+        return []
+    meta = harness.environment()
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "crust_partial.json") if args.cases else None)
+    rows: list[dict] = []
 
-    _method("crust")(sample_torus(500, seed=1))  # warm-up: numba compilation
-    sizes = QUICK if args.quick else FULL
-    rows = harness.stream_table(COLUMNS, sizes, lambda n: make_row(n, 1 if args.quick or n > 10000 else 3))
-    harness.write_rows("crust", rows, args.quick)
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(int(name), args.rounds))
+        harness.write_results("crust", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
+    return rows
 
 
 if __name__ == "__main__":

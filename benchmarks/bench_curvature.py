@@ -1,6 +1,8 @@
-"""Benchmark thesis_lib.curvature against libigl on a torus grid (thesis §3.4.1, 10^5 vertices).
+"""Discrete curvature of thesis_lib against libigl on torus grids (thesis §3.4.1).
 
-Cases (ours vs libigl, measured in the same run):
+Usage: ``python benchmarks/bench_curvature.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``.
+
+Cases (ours vs libigl on the same mesh, whole calls from arrays to per-vertex arrays):
 
 * ``mean_curvature_vector``: ∇ area at every vertex vs ``-(igl.cotmatrix(V, F) @ V)``;
 * ``mixed_area``: Meyer's mixed area vs ``igl.massmatrix(V, F, MASSMATRIX_TYPE_VORONOI)``;
@@ -8,29 +10,29 @@ Cases (ours vs libigl, measured in the same run):
 * ``mean_curvature``: |H| = ‖∇ area‖ / (2 · mixed area) vs the same from cotmatrix + massmatrix;
 * ``all_three``: the first three together (what an experiment computes per mesh).
 
-Ours includes input validation (manifoldness, degeneracy, NaN, ...) in every call.
-Time is the best of several interleaved runs (ours, libigl, ours, ...) after a warm-up; memory is the peak RSS growth of one call in a
-fresh subprocess (mesh loaded from disk first, libraries imported), which also sees libigl's C++
-allocations.  Usage: ``python benchmarks/bench_curvature.py [--quick]``; writes
-``benchmarks/results/curvature.json`` (``curvature_quick.json`` with ``--quick``) and prints a
-Markdown table.
+Ours includes its input checks in every call (shapes, NaN, degenerate triangles, the simplicial
+pseudo-manifold check: no doubled face, no pinched vertex); libigl checks nothing.  Time: ours and
+libigl interleaved in one process after a warm-up, 15 rounds under 0.1 s (else 5); medians and
+``ratio_libigl``, the median of the per-round ratios (``harness.compare``).  Memory: each call once
+in a fresh process, the peak resident set above the post-warm-up baseline (``harness.memory``).
+Meshes: the periodic n × n torus grid (R = 10, r = 5) for n = 60 (quick), 317 (10⁵ vertices) and
+448 (2·10⁵ vertices).
 """
 
 from __future__ import annotations
 
 import importlib.metadata
-import json
-import tempfile
-from pathlib import Path
 
 import harness
 import numpy as np
 
-from thesis_lib.datasets import torus_grid  # n x n grid, R = 10, r = 5 as in the thesis
+OPS = ("mean_curvature_vector", "mixed_area", "gaussian_curvature", "mean_curvature", "all_three")
+QUICK = [f"{op}-60" for op in OPS]
+FULL = QUICK + [f"{op}-{k}" for k in (317, 448) for op in OPS]
 
 
 def operations():
-    """case -> (ours, libigl) callables of (V, F)."""
+    """case operation -> (ours, libigl) callables of (V, F)."""
     import igl
 
     from thesis_lib.curvature import gaussian_curvature, mean_curvature, mean_curvature_vector, vertex_areas
@@ -64,17 +66,11 @@ def operations():
     }
 
 
-def worker(case: str, side: int, path: str) -> None:
-    """Run one call in this fresh process and print its peak RSS growth (MB)."""
-    ops = operations()
-    data = np.load(path)
-    V, F = np.array(data["V"]), np.array(data["F"])
-    ops[case][side](*torus_grid(8))  # warm-up on a tiny mesh: numba compilation/caching excluded
-    print(json.dumps(harness.peak_growth_mb(lambda: ops[case][side](V, F))))
+def _mesh(name: str):
+    from thesis_lib.datasets import torus_grid
 
-
-def peak_mb(case: str, side: int, path: str) -> float:
-    return float(harness.run_worker(__file__, case, side, path))
+    op, k = name.rsplit("-", 1)
+    return op, int(k), *torus_grid(int(k))
 
 
 def max_abs_diff(a, b) -> float:
@@ -83,50 +79,66 @@ def max_abs_diff(a, b) -> float:
     return float(np.nanmax(np.abs(np.asarray(a) - np.asarray(b))))
 
 
+def memory_run(name: str, tool: str) -> dict:
+    def setup():
+        op, _, V, F = _mesh(name)
+        fn = operations()[op][0 if tool == "ours" else 1]
+        fn(*_mesh(f"{op}-8")[2:])  # warm-up on a tiny mesh: numba compilation or caching
+        return fn, V, F
+
+    return harness.memory_worker(setup, lambda state: state[0](state[1], state[2]))
+
+
 COLUMNS = [
     ("case", "{case}"),
     ("vertices", "{n_vertices}"),
     ("ours (s)", "{ours_s:.4f}"),
-    ("libigl (s)", "{ref_s:.4f}"),
-    ("ratio", "{ratio:.2f}"),
+    ("libigl (s)", "{libigl_s:.4f}"),
+    ("ratio", "{ratio_libigl:.2f}"),
+    ("rounds", "{rounds}"),
     ("ours (MB)", "{ours_mb:.1f}"),
-    ("libigl (MB)", "{ref_mb:.1f}"),
+    ("libigl (MB)", "{libigl_mb:.1f}"),
     ("max abs diff", "{max_abs_diff:.2e}"),
 ]
 
 
-def main() -> None:
-    args = harness.arguments(__doc__, quick_help="small mesh (60 x 60), for smoke tests",
-                             worker=("CASE", "SIDE", "PATH"))
-    if args.worker:
-        worker(args.worker[0], int(args.worker[1]), args.worker[2])
-        return
-    k, repeats = (60, 3) if args.quick else (317, 15)
-    V, F = torus_grid(k)
-    ops = operations()
-    rows = []
-    with tempfile.TemporaryDirectory() as tmp:
-        path = str(Path(tmp) / "mesh.npz")
-        np.savez(path, V=V, F=F)
-        for case, (ours, ref) in ops.items():
-            ours_s, ref_s = harness.best_times([ours, ref], (V, F), repeats)
-            rows.append(
-                {
-                    "case": case,
-                    "mesh": f"torus grid {k}x{k}",
-                    "n_vertices": int(len(V)),
-                    "n_faces": int(len(F)),
-                    "ours_s": round(ours_s, 5),
-                    "ref_s": round(ref_s, 5),
-                    "ratio": round(ours_s / ref_s, 3),
-                    "ours_mb": round(peak_mb(case, 0, path), 1),
-                    "ref_mb": round(peak_mb(case, 1, path), 1),
-                    "reference": "libigl " + importlib.metadata.version("libigl"),
-                    "max_abs_diff": max_abs_diff(ours(V, F), ref(V, F)),
-                }
-            )
-    harness.print_table(COLUMNS, rows)
-    harness.write_rows("curvature", rows, args.quick, indent=2)
+def make_row(name: str, rounds: int | None) -> dict:
+    op, k, V, F = _mesh(name)
+    ours, ref = operations()[op]
+    diff = {}
+
+    def check(results):
+        diff["value"] = max_abs_diff(results["ours"], results["libigl"])
+
+    result = harness.compare({"ours": lambda: ours(V, F), "libigl": lambda: ref(V, F)}, rounds=rounds, check=check)
+    row = {"case": name, "operation": op, "mesh": f"torus grid {k}x{k}", "n_vertices": int(len(V)),
+           "n_faces": int(len(F)), **harness.ratio_fields(result), "max_abs_diff": diff["value"],
+           "reference": "libigl " + importlib.metadata.version("libigl")}
+    for tool in ("ours", "libigl"):
+        mem = harness.memory(__file__, name, tool)
+        row[f"{tool}_mb"] = mem["delta_mb"]
+        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+    return row
+
+
+def main(argv: list[str] | None = None) -> list[dict]:
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("CASE", "TOOL"), cases=FULL)
+    if args.memory:
+        memory_run(*args.memory)
+        return []
+    meta = harness.environment()
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "curvature_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(make_row(name, args.rounds))
+        harness.write_results("curvature", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
+    return rows
 
 
 if __name__ == "__main__":

@@ -1,28 +1,34 @@
 """Morse reduction before persistence (thesis §4.2.6: "simplify simplicial complexes that are too large").
 
-Usage: ``python benchmarks/bench_morse.py [--quick] [--repeat N] [--output FILE]`` (``--quick``
-writes ``benchmarks/results/morse_quick.json`` unless ``--output`` is given).
+Usage: ``python benchmarks/bench_morse.py [--quick] [--rounds N] [--output FILE]``; writes
+``benchmarks/results/morse.json`` (``morse_quick.json`` with ``--quick``).
 
-For each case the filtration is built first (not timed).  Then, best of ``--repeat`` runs:
+A **step-only** comparison: every contender starts from the same stored filtration (built before
+timing), so the figures are the persistence step, named as such.  Contenders, interleaved over
+rounds by the harness (medians, median of paired ratios):
 
-* ``reduce_s``: ``thesis_lib.morse.morse_reduce(f, 2)``: equal-value greedy coreduction matching
-  plus the Morse boundary over Z/2 by gradient paths (Theorem 4.42);
-* ``reduced_pers_s``: ``reduced_persistence`` of the Morse complex (our column reduction with clearing);
-* ``ours_s = reduce_s + reduced_pers_s``;
-* ``direct_column_s``: the same column reduction on the unreduced complex;
-* ``engine_s``: ``thesis_lib.persistence.persistence(f, 2)`` (the project's fast engine);
-* ``ref_s``: GUDHI ``SimplexTree`` from the same filtration (not timed) then ``compute_persistence``.
+* ``ours``: ``reduced_persistence(morse_reduce(f))`` — equal-value greedy coreductions, the Morse
+  boundary by gradient paths (Theorem 4.42), then the column reduction of the Morse complex;
+* ``engine``: ``persistence(f)``, the explicit engine on the whole filtration;
+* ``gudhi``: GUDHI's ``compute_persistence`` on a ``SimplexTree`` built from the same filtration.
 
-Peak memory is ``tracemalloc`` (Python-side allocations; numba-internal buffers are not seen).
-Every run checks that the reduced barcode equals the engine's.  Cases: two circles
-(``two_circles(n, seed=0)``, Rips ε ≤ 2, dim ≤ 2, the Figure 2.14 setting), a Rips complex of the
-flat torus in R⁴ with dim ≤ 3, and a lower-star filtration of random vertex values on an n × n grid.
+``critical_fraction`` is the Morse reduction's critical cells over all cells;
+``apparent_critical_below_top`` the fraction of cells below the top dimension in no apparent pair
+(:func:`thesis_lib.persistence.apparent_summary`), the ones the implicit Rips engine reduces.  Every
+run checks that the three barcodes are equal.  Peak memory: each contender once more in a fresh
+process, above its baseline after imports and input.
 """
 
 from __future__ import annotations
 
+import sys
+
 import harness
 import numpy as np
+
+CASES = ["two-circles-20", "two-circles-40", "two-circles-60", "flat-torus-20",
+         "lower-star-grid-100", "lower-star-grid-300"]
+QUICK = ["two-circles-20"]
 
 
 def grid_triangles(n: int) -> np.ndarray:
@@ -49,78 +55,78 @@ def build(case: str):
     raise ValueError(case)
 
 
-def run_case(case: str, repeat: int) -> dict:
-    from thesis_lib.morse import chain_persistence, morse_reduce, reduced_persistence
-    from thesis_lib.persistence import persistence
-    from thesis_lib.simplicial import boundary_matrix
+def contenders(f) -> dict:
+    from thesis_lib.morse import morse_reduce, reduced_persistence
+    from thesis_lib.persistence import Barcode, persistence
+
+    st = f.to_simplex_tree()
+
+    def gudhi():
+        st.compute_persistence(homology_coeff_field=2, min_persistence=0, persistence_dim_max=True)
+        return Barcode.from_pairs(st.persistence(homology_coeff_field=2, min_persistence=0,
+                                                 persistence_dim_max=True), range(f.dimension + 1))
+
+    return {"ours": lambda: reduced_persistence(morse_reduce(f, 2)), "engine": lambda: persistence(f, 2),
+            "gudhi": gudhi}
+
+
+def check(results: dict) -> None:
+    ref = results["engine"]
+    for name, bc in results.items():
+        diff = ref.difference(bc, atol=1e-9)
+        if diff is not None:
+            raise AssertionError(f"{name}: {diff}")
+
+
+def memory_child(tool: str, case: str) -> None:
+    def setup():
+        contenders(build("two-circles-6"))[tool]()  # imports and compiled code (the baseline)
+        return contenders(build(case))[tool]
+
+    harness.memory_worker(setup, lambda run: run())
+
+
+def run_case(case: str, rounds: int | None) -> dict:
+    from thesis_lib.morse import morse_reduce
+    from thesis_lib.persistence import apparent_summary
 
     f = build(case)
-    reduce_s, red, reduce_mb = harness.tracemalloc_timed(lambda: morse_reduce(f, 2), repeat)
-    pers_s, bar, pers_mb = harness.tracemalloc_timed(lambda: reduced_persistence(red), repeat)
-    engine_s, ref_bar, engine_mb = harness.tracemalloc_timed(lambda: persistence(f, 2), repeat)
-    assert bar == ref_bar, bar.difference(ref_bar)
-    bds = [np.zeros((0, f.simplices[0].shape[0]))]
-    bds += [boundary_matrix(f.simplices[d - 1], f.simplices[d]) for d in range(1, f.dimension + 1)]
-    direct_s, direct_bar, direct_mb = harness.tracemalloc_timed(
-        lambda: chain_persistence(f.values, bds, 2), max(1, repeat - 1)
-    )
-    assert direct_bar == ref_bar
-    st = f.to_simplex_tree()
-    ref_s, _, ref_mb = harness.tracemalloc_timed(
-        lambda: st.compute_persistence(homology_coeff_field=2, min_persistence=0, persistence_dim_max=True), repeat
-    )
-    ours = reduce_s + pers_s
-    return {
-        "case": case,
-        "n_cells": len(f),
-        "n_critical": red.n_critical,
-        "critical_fraction": red.critical_fraction,
-        "critical_per_dim": [int(c.shape[0]) for c in red.critical],
-        "reduce_s": reduce_s,
-        "reduced_pers_s": pers_s,
-        "ours_s": ours,
-        "direct_column_s": direct_s,
-        "engine_s": engine_s,
-        "ref_s": ref_s,
-        "ratio": ours / ref_s,
-        "ours_mb": max(reduce_mb, pers_mb),
-        "direct_column_mb": direct_mb,
-        "engine_mb": engine_mb,
-        "ref_mb": ref_mb,
-        "same_barcode": True,
-    }
+    res = harness.compare(contenders(f), rounds=rounds, check=check)
+    red = morse_reduce(f, 2)
+    row = {"case": case, "n_cells": len(f), "n_critical": red.n_critical, "critical_fraction": red.critical_fraction,
+           "critical_per_dim": [int(c.shape[0]) for c in red.critical],
+           "apparent_critical_below_top": apparent_summary(f)["critical_fraction_below_top"],
+           "same_barcode": True, "step_only": True}
+    row.update(harness.ratio_fields(res, "ours"))
+    for tool in ("ours", "engine", "gudhi"):
+        mem = harness.memory(__file__, tool, case)
+        row[f"{tool}_mb"], row[f"{tool}_baseline_mb"] = mem["delta_mb"], mem["baseline_mb"]
+    return row
 
 
-COLUMNS = [
-    ("case", "{case}"),
-    ("cells", "{n_cells}"),
-    ("critical", "{n_critical}"),
-    ("fraction", "{critical_fraction:.3f}"),
-    ("reduce s", "{reduce_s:.3f}"),
-    ("reduced pers s", "{reduced_pers_s:.3f}"),
-    ("ours s", "{ours_s:.3f}"),
-    ("direct column s", "{direct_column_s:.3f}"),
-    ("engine s", "{engine_s:.3f}"),
-    ("GUDHI s", "{ref_s:.3f}"),
-    ("ours/GUDHI", "{ratio:.2f}"),
-]
+COLUMNS = [("case", "{case}"), ("cells", "{n_cells}"), ("critical", "{critical_fraction:.3f}"),
+           ("apparent, below top", "{apparent_critical_below_top:.3f}"), ("rounds", "{rounds}"),
+           ("ours s", "{ours_s:.3g}"), ("ours/engine", "{ratio_engine:.2f}"), ("ours/GUDHI", "{ratio_gudhi:.2f}")]
 
 
-def main() -> None:
-    args = harness.arguments(__doc__, quick_help="one small case (smoke test)", repeat=3, output=True)
-    from thesis_lib.morse import morse_reduce, reduced_persistence
-    from thesis_lib.persistence import persistence
+def main(argv: list[str] | None = None) -> list[dict]:
+    args = harness.arguments(__doc__, argv, quick_help="one small case (make bench-check)", output=True,
+                             memory=("TOOL", "CASE"), cases=CASES)
+    if args.memory:
+        memory_child(*args.memory)
+        return []
+    meta = harness.environment()
+    names = args.cases or (QUICK if args.quick else CASES)
+    rows: list[dict] = []
 
-    warm = build("two-circles-6")  # warm-up: numba compilation excluded
-    reduced_persistence(morse_reduce(warm, 2))
-    persistence(warm, 2)
-    cases = ["two-circles-20"] if args.quick else [
-        "two-circles-20", "two-circles-40", "two-circles-60", "flat-torus-20", "lower-star-grid-100", "lower-star-grid-300"
-    ]
-    rows = [run_case(c, 1 if args.quick else args.repeat) for c in cases]
-    harness.print_table(COLUMNS, rows)
-    harness.write_rows("morse", rows, args.quick, args.output)  # --quick: morse_quick.json
+    def row(name: str) -> dict:
+        rows.append(run_case(name, args.rounds))
+        harness.write_results("morse", rows, args.quick, args.output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
+    return rows
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

@@ -1,203 +1,182 @@
-"""Persistent homology: thesis_lib's engine against GUDHI and Ripser (thesis §2.3, §2.4.1).
+"""Persistent homology of Rips filtrations: thesis_lib against Ripser, giotto-ph and GUDHI (§2.3, §2.4.1).
 
-Usage: ``python benchmarks/bench_persistence.py [--quick] [--repeat N] [--output FILE]``; writes
-``benchmarks/results/persistence.json`` (``persistence_quick.json`` with ``--quick``).
+Usage: ``python benchmarks/bench_persistence.py [--quick] [--rounds N] [--cases NAME ...] [--output FILE]``;
+writes ``benchmarks/results/persistence.json`` (``persistence_quick.json`` with ``--quick``).
 
-Every (case, tool) runs in its own subprocess, so that the peak resident set size
-(``resource.getrusage``, the high-water mark) belongs to that tool alone.  Inside a worker:
-build the input, warm up (numba compilation excluded), record the RSS high-water mark
-(``base_mb``), then time the persistence computation (best of ``--repeat``) and read the peak
-again (``peak_mb``; ``work_mb = peak - base`` is what the computation itself added).  The base
-includes the libraries: numba's runtime (≈ 50 MB) is a fixed cost GUDHI and Ripser do not pay, and
-ours holds the input as thesis_lib's Filtration (int64 vertex arrays) where GUDHI holds its tree.
+Every figure is a **whole pipeline, points → barcode**, for every tool (the harness's rules,
+``benchmarks/harness.py``):
 
-* ours: ``thesis_lib.complexes.rips`` builds the Filtration (not timed), then
-  ``thesis_lib.persistence.persistence(f, coefficients=2)`` and reading the intervals of dimensions
-  0 .. max_dim − 1, the ones GUDHI and Ripser report (``ours_s``); ``ours_all_dims_s`` also sorts
-  the top dimension's essential classes (listed lazily; GUDHI skips that dimension).
-* GUDHI: ``RipsComplex(...).create_simplex_tree`` (not timed), then
-  ``SimplexTree.compute_persistence(homology_coeff_field=2)`` (timed).  GUDHI skips the top
-  dimension by default (``persistence_dim_max=False``); ours also lists its essential classes.
-* Ripser: ``ripser(points, maxdim=max_dim - 1, thresh=2 ε)``: builds its complex implicitly, so its
-  time includes what the other two get for free (it never stores the simplices).
+* ``ours``: ``rips_persistence(points, max_radius=ε, max_dim=D)`` — the implicit engine (nothing stored
+  but the neighbour graph; apparent and emergent pairs; H0 by union–find);
+* ``explicit``: ``persistence(rips(points, ε, D))`` — the Filtration is built, then reduced (the
+  engine of the thesis's pages; only where its simplices fit in memory);
+* ``ripser``: ``ripser(points, maxdim=D − 1, thresh=2ε)`` (ripser.py, one thread);
+* ``gph``: giotto-ph ``ripser_parallel(points, maxdim=D − 1, thresh=2ε, n_threads=2)`` (both cores);
+* ``gudhi``: ``RipsComplex(points, max_edge_length=2ε).create_simplex_tree(D)`` then
+  ``compute_persistence(homology_coeff_field=2)`` (only where its tree fits in memory).
 
-Cases: two circles (``two_circles(n, seed=0)``, Rips ε ≤ 2 ⇒ every pair is an edge, dim ≤ 2: the
-thesis's Figure 2.14 setting) and the flat torus of §2.4.1 (``flat_torus(k, noise=0.02, seed=0)``
-in R⁴, Rips ε ≤ 0.5, dim ≤ 3 so that H₂ appears; the thesis's 100² points would need a far smaller
-threshold to stay tractable).
+Times: the contenders run interleaved (ours, explicit, ripser, gph, gudhi, ours, ...) after one
+warm-up each, for 5 rounds (15 when a case takes under 0.1 s); ``<tool>_s`` is the median and
+``ratio_<tool>`` the median over rounds of ours / tool measured in the same round.  Before timing,
+every tool's barcode (dimensions 0 .. D − 1, in ε) must equal ours to 1e-5 (Ripser and giotto-ph
+compute in float32).  Memory: each tool runs once more in a fresh process; ``<tool>_mb`` is the peak
+resident set *above the baseline* of that process after its imports and input (``baseline_mb``,
+stored), so libraries' import costs are not counted.  Coefficients Z/2 throughout.
+
+Cases: two circles (``two_circles(n, seed=0)``: unit circles with centres 1 apart) with ε ≤ 2
+(diameter ≤ 4: every pair is an edge, the thesis's Figure 2.14 setting) and max_dim 2 (H0, H1), or
+max_dim 3 (H0–H2); ε ≤ 1 for the scaling series and the held-out sizes (all three H1 bars die at
+ε ≈ 1: the features survive the cut); 400 uniform points in the unit cube, full range, H0–H1.
 """
 
 from __future__ import annotations
 
-import json
 import sys
 
 import harness
+import numpy as np
 
+# name: (data, n, ε, max_dim, tools)
+ALL = ("ours", "explicit", "ripser", "gph", "gudhi")
+IMPLICIT = ("ours", "ripser", "gph")
 CASES = {
-    "two-circles-20": {"data": ("two_circles", 20), "eps": 2.0, "max_dim": 2},
-    "two-circles-60": {"data": ("two_circles", 60), "eps": 2.0, "max_dim": 2},
-    "two-circles-100": {"data": ("two_circles", 100), "eps": 2.0, "max_dim": 2},
-    "two-circles-200": {"data": ("two_circles", 200), "eps": 2.0, "max_dim": 2},
-    "flat-torus-20": {"data": ("flat_torus", 20), "eps": 0.5, "max_dim": 3},
+    "two-circles-20": ("circles", 20, 2.0, 2, ALL),
+    "two-circles-60": ("circles", 60, 2.0, 2, ALL),
+    "two-circles-100": ("circles", 100, 2.0, 2, ALL),
+    "two-circles-200": ("circles", 200, 2.0, 2, ALL),
+    "two-circles-60-h2": ("circles", 60, 2.0, 3, ALL),
+    "cube-400": ("cube", 400, np.inf, 2, ALL),
+    "cube-100-quick": ("cube", 100, np.inf, 2, ALL),
+    # scaling series, ε ≤ 1 (GUDHI and the explicit engine while their complexes fit in memory)
+    "scaling-100": ("circles", 100, 1.0, 2, ALL),
+    "scaling-200": ("circles", 200, 1.0, 2, ALL),
+    "scaling-300": ("circles", 300, 1.0, 2, IMPLICIT + ("explicit",)),
+    "scaling-400": ("circles", 400, 1.0, 2, IMPLICIT),
+    "scaling-500": ("circles", 500, 1.0, 2, IMPLICIT),
+    "scaling-1000": ("circles", 1000, 1.0, 2, IMPLICIT),
 }
-FULL = ["two-circles-60", "two-circles-100", "two-circles-200", "flat-torus-20"]
-QUICK = ["two-circles-20"]
+QUICK = ["two-circles-20", "cube-100-quick"]
+FULL = ["two-circles-20", "cube-100-quick", "two-circles-60", "two-circles-100", "two-circles-200",
+        "two-circles-60-h2", "cube-400", "scaling-100", "scaling-200", "scaling-300", "scaling-400",
+        "scaling-500", "scaling-1000"]
+HELD_OUT = ["scaling-500", "two-circles-60-h2", "cube-400", "scaling-1000"]  # the re-measurement's workloads
 
 
-def _points(case: dict):
-    from thesis_lib.datasets import flat_torus, two_circles
+def points(name: str) -> np.ndarray:
+    from thesis_lib.datasets import two_circles
 
-    kind, n = case["data"]
-    return two_circles(n, seed=0) if kind == "two_circles" else flat_torus(n, noise=0.02, seed=0)
-
-
-def _summary(pairs_by_dim: dict[int, list[tuple[float, float]]], scale: float) -> dict:
-    """Count and total length of the finite bars, number of essential bars, per dimension (in ε units)."""
-    out = {}
-    for d, pairs in pairs_by_dim.items():
-        fin = [(b * scale, e * scale) for b, e in pairs if e != float("inf") and e > b]
-        out[str(d)] = {
-            "finite": len(fin),
-            "total": sum(e - b for b, e in fin),
-            "essential": sum(1 for _, e in pairs if e == float("inf")),
-        }
-    return out
+    kind, n = CASES[name][:2]
+    return two_circles(n, seed=0) if kind == "circles" else np.random.default_rng(0).random((n, 3))
 
 
-def worker(tool: str, name: str, repeat: int) -> dict:
-    import numpy as np
-
-    case = CASES[name]
-    pts = _points(case)
-    eps, max_dim = case["eps"], case["max_dim"]
-    homology_dims = range(max_dim)  # the dimensions all three tools report
+def pipeline(tool: str, pts: np.ndarray, eps: float, max_dim: int):
+    """The whole pipeline of one tool; returns its barcode as a list of (m, 2) arrays in ε."""
+    thresh = 2 * eps
     if tool == "ours":
-        from thesis_lib.complexes.rips import rips
+        from thesis_lib.persistence import rips_persistence
+
+        return lambda: rips_persistence(pts, max_radius=eps, max_dim=max_dim).to_diagrams()
+    if tool == "explicit":
+        from thesis_lib.complexes import rips
         from thesis_lib.persistence import persistence
 
-        persistence(rips(pts[:12], eps, max_dim))  # warm-up: numba compilation (cached on disk anyway)
-        f = rips(pts, eps, max_dim)
-        n_simplices = len(f)
-
-        def run():
-            b = persistence(f, coefficients=2)
-            for d in homology_dims:  # the dimensions GUDHI and Ripser report
-                b.intervals(d)
-            return b
-
-        def run_all():  # also sort the top dimension's essential classes (GUDHI skips that dimension)
-            b = persistence(f, coefficients=2)
-            for d in b.dimensions:
-                b.intervals(d)
-            return b
-
-        def result(b):
-            return {d: [tuple(r) for r in b.intervals(d).tolist()] for d in homology_dims}, 1.0
-
-    elif tool == "gudhi":
-        import gudhi
-
-        stree = gudhi.RipsComplex(points=pts, max_edge_length=2 * eps).create_simplex_tree(max_dimension=max_dim)
-        n_simplices = stree.num_simplices()
-
-        def run():
-            stree.compute_persistence(homology_coeff_field=2)
-            return stree
-
-        def result(s):
-            return {d: [tuple(x) for x in s.persistence_intervals_in_dimension(d).tolist()] for d in homology_dims}, 0.5
-
-    elif tool == "ripser":
+        return lambda: [persistence(rips(pts, eps, max_dim)).intervals(d) for d in range(max_dim)]
+    if tool == "ripser":
         from ripser import ripser
 
-        ripser(pts[:12], maxdim=max_dim - 1, thresh=2 * eps)
-        n_simplices = None
+        return lambda: [d / 2 for d in ripser(pts, maxdim=max_dim - 1, thresh=thresh)["dgms"]]
+    if tool == "gph":
+        from gph import ripser_parallel
+
+        return lambda: [d / 2 for d in ripser_parallel(pts, maxdim=max_dim - 1, thresh=thresh, n_threads=2)["dgms"]]
+    if tool == "gudhi":
+        import gudhi
 
         def run():
-            return ripser(pts, maxdim=max_dim - 1, thresh=2 * eps)
+            st = gudhi.RipsComplex(points=pts, max_edge_length=thresh).create_simplex_tree(max_dimension=max_dim)
+            st.compute_persistence(homology_coeff_field=2, min_persistence=0)
+            return [st.persistence_intervals_in_dimension(d) / 2 for d in range(max_dim)]
 
-        def result(r):
-            return {d: [tuple(x) for x in np.asarray(r["dgms"][d]).tolist()] for d in homology_dims}, 0.5
-
-    else:
-        raise ValueError(f"unknown tool {tool!r}")
-    stats, out = harness.measure_rss(run, repeat)
-    all_s = peak_all = None
-    if tool == "ours":
-        all_s, _ = harness.best_of(run_all, repeat, summary=lambda b: None)  # results dropped at once
-        peak_all = harness.rss_mb()
-    pairs, scale = result(out)
-    return {
-        "time_s": stats["time_s"],
-        "all_dims_s": all_s,
-        "peak_all_mb": peak_all,
-        "base_mb": stats["base_mb"],
-        "peak_mb": stats["peak_mb"],
-        "work_mb": stats["work_mb"],
-        "n_simplices": n_simplices,
-        "summary": _summary(pairs, scale),
-    }
+        return run
+    raise ValueError(f"unknown tool {tool!r}")
 
 
-def run_case(tool: str, name: str, repeat: int) -> dict:
-    return harness.run_worker(__file__, tool, name, "--repeat", repeat)
+def _same(a: list, b: list, atol: float = 1e-5) -> str | None:
+    from thesis_lib.persistence import Barcode
+
+    x = Barcode.from_diagrams([np.asarray(d, np.float64) for d in a])
+    y = Barcode.from_diagrams([np.asarray(d, np.float64) for d in b])
+    return x.difference(y, atol=atol)
 
 
-def _agree(a: dict, b: dict) -> bool:
-    for d, s in a.items():
-        t = b.get(d)
-        if t is None or s["finite"] != t["finite"] or s["essential"] != t["essential"]:
-            return False
-        if abs(s["total"] - t["total"]) > 1e-6 * max(1.0, s["total"]):
-            return False
-    return True
+def check_same(results: dict) -> None:
+    ref = results["ours"]
+    for tool, out in results.items():
+        diff = _same(ref, out)
+        if diff is not None:
+            raise AssertionError(f"{tool} computed a different barcode: {diff}")
+
+
+def memory_child(tool: str, name: str) -> None:
+    _, _, eps, max_dim, _ = CASES[name]
+
+    def setup():
+        pts = points(name)
+        pipeline(tool, pts[:12], eps, max_dim)()  # imports and compiled code loaded (the baseline)
+        return pipeline(tool, pts, eps, max_dim)
+
+    harness.memory_worker(setup, lambda run: run())
+
+
+def run_case(name: str, rounds: int | None) -> dict:
+    kind, n, eps, max_dim, tools = CASES[name]
+    pts = points(name)
+    contenders = {tool: pipeline(tool, pts, eps, max_dim) for tool in tools}
+    res = harness.compare(contenders, rounds=rounds, check=check_same)
+    row = {"case": name, "data": kind, "n_points": int(pts.shape[0]), "n_per_circle": n if kind == "circles" else None,
+           "max_radius": eps if np.isfinite(eps) else None, "max_dim": max_dim, "same_barcode": True,
+           "held_out": name in HELD_OUT}
+    row.update(harness.ratio_fields(res, "ours"))
+    for tool in tools:
+        mem = harness.memory(__file__, tool, name)
+        row[f"{tool}_mb"] = mem["delta_mb"]
+        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+    stats: dict = {}
+    from thesis_lib.persistence import rips_persistence
+
+    rips_persistence(pts, max_radius=eps, max_dim=max_dim, stats=stats)
+    top = stats[max_dim - 1]
+    row["columns"] = top["columns"]
+    row["apparent"] = top["apparent"]
+    row["candidates"] = top["simplices"]
+    return row
+
+
+COLUMNS = [("case", "{case}"), ("rounds", "{rounds}"), ("ours s", "{ours_s:.3g}"),
+           ("ours/ripser", "{ratio_ripser:.2f}"), ("ours/giotto-ph", "{ratio_gph:.2f}"),
+           ("ours/GUDHI", lambda r: f"{r['ratio_gudhi']:.2f}" if "ratio_gudhi" in r else "–"),
+           ("ours MB", "{ours_mb:.0f}"), ("ripser MB", "{ripser_mb:.0f}"), ("giotto-ph MB", "{gph_mb:.0f}")]
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, quick_help="one small case (smoke test)", repeat=3,
-                             worker=("TOOL", "CASE"), output=True)
-    if args.worker:
-        print(json.dumps(worker(args.worker[0], args.worker[1], args.repeat)))
+    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
+                             memory=("TOOL", "CASE"), cases=list(CASES))
+    if args.memory:
+        memory_child(*args.memory)
         return []
-    rows = []
-    for name in QUICK if args.quick else FULL:
-        res = {tool: run_case(tool, name, args.repeat) for tool in ("ours", "gudhi", "ripser")}
-        o, g, r = res["ours"], res["gudhi"], res["ripser"]
-        case = CASES[name]
-        rows.append(
-            {
-                "case": name,
-                "n_points": int(case["data"][1] ** 2 if case["data"][0] == "flat_torus" else 2 * case["data"][1]),
-                "max_radius": case["eps"],
-                "max_dim": case["max_dim"],
-                "n_simplices": o["n_simplices"],
-                "ours_s": o["time_s"],
-                "ref_s": g["time_s"],
-                "ratio": o["time_s"] / g["time_s"],
-                "ours_all_dims_s": o["all_dims_s"],
-                "ripser_s": r["time_s"],
-                "ratio_ripser": o["time_s"] / r["time_s"],
-                "ours_mb": o["peak_mb"],
-                "ref_mb": g["peak_mb"],
-                "mem_ratio": o["peak_mb"] / g["peak_mb"],
-                "ripser_mb": r["peak_mb"],
-                "mem_ratio_ripser": o["peak_mb"] / r["peak_mb"],
-                "ours_all_dims_mb": o["peak_all_mb"],
-                "ours_work_mb": o["work_mb"],
-                "ref_work_mb": g["work_mb"],
-                "ripser_work_mb": r["work_mb"],
-                "same_barcode": _agree(o["summary"], g["summary"]) and _agree(o["summary"], r["summary"]),
-                "reference": "GUDHI SimplexTree.compute_persistence (Z/2)",
-            }
-        )
-        print(f"done {name}", file=sys.stderr, flush=True)
-    cols = ["case", "n_simplices", "ours_s", "ours_all_dims_s", "ref_s", "ratio", "ripser_s", "ratio_ripser", "ours_mb", "ref_mb",
-            "mem_ratio", "ripser_mb", "same_barcode"]  # fmt: skip
-    harness.print_table(cols, rows)
-    harness.write_rows("persistence", rows, args.quick, args.output)
+    meta = harness.environment()
+    names = args.cases or (QUICK if args.quick else FULL)
+    output = args.output or (str(harness.RESULTS / "persistence_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name: str) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
+        rows.append(run_case(name, args.rounds))
+        harness.write_results("persistence", rows, args.quick, output, meta)
+        return rows[-1]
+
+    harness.stream_table(COLUMNS, names, row)
     return rows
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

@@ -1,27 +1,275 @@
-"""Scaffolding shared by the ``benchmarks/bench_<topic>.py`` scripts.
+"""The benchmark harness shared by every ``benchmarks/bench_<topic>.py`` script.
 
 Imported as ``import harness`` (running ``python benchmarks/bench_x.py`` puts this folder on
-``sys.path``).  What lives here: the command line (``--quick``, ``--repeat``, the hidden
-``--worker``), best-of-N timing, peak memory (RSS high-water mark of a fresh subprocess, or
-``tracemalloc``), running a worker subprocess, the Markdown table, and writing
-``benchmarks/results/<topic>.json`` (``<topic>_quick.json`` with ``--quick``: a smoke run never
-overwrites the stored full results the book shows).
+``sys.path``).  A published ratio must survive a re-run on a noisy shared machine, so every
+benchmark follows these rules, and this module gives one function for each:
+
+**Time: interleaved rounds, medians, paired ratios** — :func:`compare`.
+    ``compare({"ours": f, "ripser": g}, rounds=None)`` calls each contender once to warm it up
+    (numba compilation, caches; the warm-up time is kept as ``warmup_s``), then runs *rounds*
+    rounds A, B, A, B, ... so that a burst of load hits every contender alike.  The default
+    number of rounds is :func:`default_rounds`: at least 5, and 15 when the slowest warm-up took
+    under 0.1 s.  The result holds every time, the median per contender and, from
+    :func:`paired_ratio`, the median over rounds of the ratio of the two times of one round (the
+    figure to publish: ``ratio_<peer>``).  Compare **whole pipelines** (points → barcode for every
+    tool); a step-only figure is named as such (``step_ratio_<peer>``, ``<step>_s``).
+
+**Peak memory: separate processes, import baseline subtracted** — :func:`memory` (parent) and
+    :func:`memory_worker` (child).  The parent runs ``python SCRIPT --memory ARGS...`` in a fresh
+    process; the script calls ``memory_worker(setup, run)``: ``setup()`` imports, builds the input
+    and warms up; the resident set size then is the *baseline* (``baseline_mb``); the high-water
+    mark is reset and ``run(state)`` runs once; ``peak_mb`` is the new high-water mark and
+    ``delta_mb = peak_mb - baseline_mb`` what the run itself added.  Both are stored, so a reader
+    sees what was subtracted.
+
+**Provenance** — :func:`environment`: commit (``-dirty`` when the tree has changes), UTC date,
+    load average (1, 5, 15 min) at the start and the end of the run, cores seen and usable, Python
+    and library versions.  :func:`write_results` stores ``{"meta": environment(), "rows": rows}``
+    atomically in ``benchmarks/results/<topic>.json`` (``<topic>_quick.json`` for ``--quick``, so a
+    smoke run never overwrites the stored full results).
+
+**Staleness** — ``make bench-check`` (``benchmarks/check.py``) re-runs every benchmark's quick
+    cases and fails when a stored ratio moved by more than ``TOLERANCE`` (±35 % on this noisy
+    2-core machine).  Contract for a benchmark script, so that it can be checked: it accepts
+    ``--quick`` and ``--output FILE``; its quick cases are also full cases (same ``case`` name);
+    every time ratio it stores is a key starting with ``ratio`` (median of paired ratios, ours /
+    peer; below 1 means we are faster).
+
+Older helpers (:func:`best_of`, :func:`best_times`, :func:`measure_rss`, :func:`run_worker`,
+:func:`main_per_case`) are kept for the scripts that still call them; new code uses the above.
 """
 
 from __future__ import annotations
 
 import argparse
+import datetime
+import gc
 import json
+import os
+import platform
 import resource
+import statistics
 import subprocess
 import sys
 import time
 import tracemalloc
+from importlib import metadata
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable, Mapping, Sequence
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "results"
+MIN_ROUNDS = 5  # rounds of interleaved timing, at least
+FAST_ROUNDS = 15  # rounds when a case takes under FAST_BELOW seconds
+FAST_BELOW = 0.1
+TOLERANCE = 0.35  # make bench-check: largest relative move of a stored ratio
+LIBRARIES = ("numpy", "scipy", "numba", "gudhi", "ripser", "giotto-ph", "libigl", "pymeshlab")
+
+
+# ---------------------------------------------------------------------------- interleaved timing
+def default_rounds(seconds: float) -> int:
+    """Rounds for a case whose single run takes ``seconds``: 15 under 0.1 s, else 5."""
+    return FAST_ROUNDS if seconds < FAST_BELOW else MIN_ROUNDS
+
+
+def compare(contenders: Mapping[str, Callable[[], object]], *, rounds: int | None = None,
+            check: Callable[[Mapping[str, object]], None] | None = None) -> dict:
+    """Time contenders in interleaved rounds (A, B, A, B, ...) after one warm-up call each.
+
+    Parameters
+    ----------
+    contenders : name -> zero-argument callable running one whole pipeline.
+    rounds : timed rounds; default :func:`default_rounds` of the slowest warm-up (5, or 15 when
+        every contender took under 0.1 s).
+    check : optional; called once with ``{name: warm-up result}`` (e.g. to assert that every tool
+        computed the same barcode) before the results are dropped.
+
+    Returns
+    -------
+    dict with ``rounds``, ``warmup_s`` {name: s}, ``times_s`` {name: [s per round]} and
+    ``median_s`` {name: s}.  Results are dropped at once (at most one alive at a time).
+    """
+    if not contenders:
+        raise ValueError("no contenders to compare")
+    warm, results = {}, {}
+    for name, fn in contenders.items():
+        t0 = time.perf_counter()
+        out = fn()
+        warm[name] = time.perf_counter() - t0
+        if check is not None:
+            results[name] = out
+        del out
+    if check is not None:
+        check(results)
+    results.clear()
+    n = int(rounds) if rounds is not None else default_rounds(max(warm.values()))
+    if n < 1:
+        raise ValueError(f"rounds must be >= 1, got {n}")
+    times: dict[str, list[float]] = {name: [] for name in contenders}
+    for _ in range(n):
+        for name, fn in contenders.items():
+            gc.collect()
+            t0 = time.perf_counter()
+            out = fn()
+            times[name].append(time.perf_counter() - t0)
+            del out
+    return {"rounds": n, "warmup_s": warm, "times_s": times,
+            "median_s": {name: statistics.median(t) for name, t in times.items()}}
+
+
+def paired_ratio(result: Mapping, a: str, b: str) -> float:
+    """Median over the rounds of ``time(a) / time(b)`` measured in the same round (of :func:`compare`)."""
+    ta, tb = result["times_s"][a], result["times_s"][b]
+    return statistics.median(x / y for x, y in zip(ta, tb))
+
+
+def ratio_fields(result: Mapping, ours: str = "ours") -> dict:
+    """The flat row fields of a :func:`compare` result: ``<name>_s`` (median) for every contender,
+    ``ratio_<peer>`` (:func:`paired_ratio` of ``ours`` over each peer) and ``rounds``."""
+    row: dict = {"rounds": result["rounds"]}
+    for name, t in result["median_s"].items():
+        row[f"{_key(name)}_s"] = t
+    for name in result["median_s"]:
+        if name != ours:
+            row[f"ratio_{_key(name)}"] = paired_ratio(result, ours, name)
+    return row
+
+
+def _key(name: str) -> str:
+    return name.replace("-", "_").replace(" ", "_")
+
+
+# ---------------------------------------------------------------------------- memory in a fresh process
+def _status_kb(field: str) -> int | None:
+    try:
+        with open("/proc/self/status") as fh:
+            for line in fh:
+                if line.startswith(field + ":"):
+                    return int(line.split()[1])
+    except OSError:
+        return None
+    return None
+
+
+def memory_worker(setup: Callable[[], object], run: Callable[[object], object]) -> dict:
+    """In the child process: ``state = setup()`` (imports, input, warm-up), read the resident set
+    (the baseline), reset the high-water mark, ``run(state)`` once, read the high-water mark.
+
+    Prints and returns ``{"baseline_mb", "peak_mb", "delta_mb", "hwm_reset"}``; ``hwm_reset`` is False
+    where ``/proc/self/clear_refs`` cannot be written, and then ``peak_mb`` is the lifetime peak.
+    """
+    state = setup()
+    gc.collect()
+    base_kb = _status_kb("VmRSS") or 0
+    try:
+        with open("/proc/self/clear_refs", "w") as fh:
+            fh.write("5")
+        reset = True
+    except OSError:
+        reset = False
+    out = run(state)
+    del out
+    peak_kb = (_status_kb("VmHWM") if reset else None) or resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+    res = {"baseline_mb": base_kb / 1024, "peak_mb": peak_kb / 1024,
+           "delta_mb": max(peak_kb - base_kb, 0) / 1024, "hwm_reset": reset}
+    print(json.dumps(res), flush=True)
+    return res
+
+
+def memory(script: str, *args: object) -> dict:
+    """Run ``python SCRIPT --memory ARGS...`` in a fresh process and return what its
+    :func:`memory_worker` printed (``baseline_mb``, ``peak_mb``, ``delta_mb``)."""
+    cmd = [sys.executable, str(Path(script).resolve()), "--memory", *map(str, args)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    if proc.returncode != 0:
+        raise RuntimeError(f"memory run {' '.join(map(str, args))} failed:\n{proc.stderr[-4000:]}")
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+# ---------------------------------------------------------------------------- provenance
+def _git(*args: str) -> str | None:
+    try:
+        out = subprocess.run(["git", *args], cwd=HERE, capture_output=True, text=True, timeout=20)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    return out.stdout.strip() if out.returncode == 0 else None
+
+
+def environment() -> dict:
+    """Where and when a benchmark ran: commit, UTC date, load average, cores, versions."""
+    commit = _git("rev-parse", "HEAD")
+    if commit and _git("status", "--porcelain", "--untracked-files=no"):
+        commit += "-dirty"
+    versions = {}
+    for lib in LIBRARIES:
+        try:
+            versions[lib] = metadata.version(lib)
+        except metadata.PackageNotFoundError:
+            pass
+    try:
+        usable = len(os.sched_getaffinity(0))
+    except AttributeError:
+        usable = os.cpu_count()
+    return {
+        "commit": commit,
+        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "load_average": [round(x, 2) for x in os.getloadavg()],
+        "cores": os.cpu_count(),
+        "usable_cores": usable,
+        "machine": platform.machine(),
+        "python": platform.python_version(),
+        "versions": versions,
+    }
+
+
+def write_results(topic: str, rows: list[dict], quick: bool = False, output: str | None = None,
+                  meta: Mapping | None = None) -> Path:
+    """Store ``{"meta": ..., "rows": rows}`` atomically in ``results/<topic>.json`` (``<topic>_quick.json``
+    when ``quick``) or ``output``.  ``meta`` is the :func:`environment` taken when the run started
+    (default: now); the load average at the end is added as ``load_average_end``."""
+    info = dict(meta) if meta is not None else environment()
+    info["load_average_end"] = [round(x, 2) for x in os.getloadavg()]
+    info["topic"] = topic
+    info["quick"] = bool(quick)
+    out = Path(output) if output else RESULTS / (f"{topic}_quick.json" if quick else f"{topic}.json")
+    out.parent.mkdir(parents=True, exist_ok=True)
+    tmp = out.with_name(out.name + ".tmp")
+    tmp.write_text(json.dumps({"meta": info, "rows": rows}, indent=1) + "\n")
+    os.replace(tmp, out)
+    print(f"wrote {out}")
+    return out
+
+
+def read_results(path: str | Path) -> tuple[dict, list[dict]]:
+    """``(meta, rows)`` of a stored result file (a bare list of rows has empty meta)."""
+    data = json.loads(Path(path).read_text())
+    if isinstance(data, list):
+        return {}, data
+    return data.get("meta", {}), data["rows"]
+
+
+def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance: float = TOLERANCE) -> list[str]:
+    """Problems found by ``make bench-check``: every ``ratio*`` value of each fresh row against the
+    stored row of the same ``case``; a move beyond ``tolerance`` (relative), a fresh case without a
+    stored row, or a stored ratio missing from the fresh row."""
+    by_case = {r.get("case"): r for r in stored}
+    problems = []
+    for row in fresh:
+        old = by_case.get(row.get("case"))
+        if old is None:
+            problems.append(f"{row.get('case')}: no stored result for this quick case")
+            continue
+        for key, value in row.items():
+            if not key.startswith("ratio") or not isinstance(value, (int, float)) or isinstance(value, bool):
+                continue
+            ref = old.get(key)
+            if not isinstance(ref, (int, float)) or ref <= 0:
+                problems.append(f"{row['case']}: {key} = {value:.3g} has no stored figure")
+                continue
+            move = value / ref - 1.0
+            if abs(move) > tolerance:
+                problems.append(f"{row['case']}: {key} moved {move:+.0%} (stored {ref:.3g}, now {value:.3g})")
+    return problems
 
 # A table column is a row key (the title; floats shown with 3 significant digits) or a pair
 # (title, spec): spec a format string over the row's keys ("{ours_s:.4f}") or a function of the row.
@@ -63,16 +311,27 @@ def arguments(
     repeat: int | None | bool = False,
     worker: Sequence[str] | None = None,
     output: bool = False,
+    memory: Sequence[str] | None = None,
+    cases: Sequence[str] | None = None,
 ) -> argparse.Namespace:
     """Parse the common options: ``--quick``; ``--repeat N`` (default ``repeat``; omitted when False);
-    ``--worker`` with the metavars ``worker`` (hidden, for the subprocesses); ``--output FILE`` (default
-    None: :func:`write_rows` picks the file)."""
+    ``--worker`` with the metavars ``worker`` (hidden, for the subprocesses); ``--memory`` with the
+    metavars ``memory`` (hidden, for :func:`memory`); ``--output FILE`` (default None:
+    :func:`write_results` picks the file); ``--rounds N`` (default None: :func:`default_rounds`);
+    with ``cases`` (the known case names) ``--cases NAME ...`` to run only some (``args.cases``, None
+    for all) — a partial run is written to ``--output`` or ``<topic>_partial.json`` by the caller."""
     ap = argparse.ArgumentParser(description=doc.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help=quick_help)
     if repeat is not False:
         ap.add_argument("--repeat", type=int, default=repeat, help="timed runs per case (best is kept)")
     if worker:
         ap.add_argument("--worker", nargs=len(worker), metavar=tuple(worker), help=argparse.SUPPRESS)
+    if memory:
+        ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
+        ap.add_argument("--rounds", type=int, default=None, help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
+    if cases:
+        ap.add_argument("--cases", nargs="+", choices=list(cases), default=None, metavar="CASE",
+                        help="run only these cases: " + ", ".join(cases))
     if output:
         ap.add_argument("--output", default=None, help="JSON file for the rows (default: benchmarks/results)")
     return ap.parse_args(argv)
@@ -182,12 +441,15 @@ def _columns(columns: Sequence) -> list[tuple[str, object]]:
 
 def table_header(columns: Sequence) -> str:
     """The two header lines of a Markdown table (columns as described above)."""
-    titles = [t for t, _ in _columns(columns)]
-    return "| " + " | ".join(titles) + " |\n|" + "---|" * len(titles)
+    from thesis_lib.lab.tables import header
+
+    return header([t for t, _ in _columns(columns)])
 
 
 def table_row(columns: Sequence, row: dict) -> str:
-    """One Markdown table line of ``row``."""
+    """One Markdown table line of ``row`` (the project's one table writer, ``thesis_lib.lab.tables``)."""
+    from thesis_lib.lab.tables import row as table_line
+
     cells = []
     for title, spec in _columns(columns):
         if spec is None:
@@ -196,7 +458,7 @@ def table_row(columns: Sequence, row: dict) -> str:
             cells.append(spec(row))
         else:
             cells.append(spec.format(**row))
-    return "| " + " | ".join(cells) + " |"
+    return table_line(cells)
 
 
 def print_table(columns: Sequence, rows: Sequence[dict]) -> None:
@@ -218,10 +480,5 @@ def stream_table(columns: Sequence, names: Sequence[str], make_row: Callable[[st
 
 
 def write_rows(topic: str, rows: list[dict], quick: bool, output: str | None = None, indent: int = 1) -> Path:
-    """Write the rows as JSON to ``output``, or to ``results/<topic>.json`` (``<topic>_quick.json``
-    when ``quick``: a smoke run never overwrites the stored full results).  Prints and returns the path."""
-    out = Path(output) if output else RESULTS / (f"{topic}_quick.json" if quick else f"{topic}.json")
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=indent) + "\n")
-    print(f"wrote {out}")
-    return out
+    """Older name of :func:`write_results` (the rows are stored with the run's :func:`environment`)."""
+    return write_results(topic, rows, quick, output)

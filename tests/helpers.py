@@ -53,3 +53,120 @@ def pari_invariants(a) -> list[int]:
         return []
     text = "[" + ";".join(",".join(str(int(x)) for x in row) for row in rows) + "]"
     return sorted(abs(int(x)) for x in pari.matsnf(pari(text)) if x != 0)
+
+
+# ---------------------------------------------------------------------------- fuzz tests (issue 11.3)
+import collections as _collections
+import contextlib as _contextlib
+import os as _os
+import signal as _signal
+
+#: outcomes of fuzzed calls per module, printed at the end of the run (conftest.py)
+FUZZ_TALLY: dict = _collections.defaultdict(_collections.Counter)
+
+
+def fuzz_long() -> bool:
+    """Whether pytest runs with ``--fuzz-long`` (conftest.py sets the variable in every process)."""
+    return _os.environ.get("THESIS_LAB_FUZZ_LONG") == "1"
+
+
+def fuzz_settings(n: int, **kw):
+    """hypothesis settings for a fuzz test: ``n`` examples (derandomized: the same in every run), or
+    ``100 * n`` random ones with ``--fuzz-long``.  Hangs are caught by :func:`fuzz_call`'s deadline."""
+    from hypothesis import HealthCheck, settings
+
+    long = fuzz_long()
+    return settings(
+        max_examples=100 * n if long else n,
+        deadline=None,
+        derandomize=not long,
+        suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow,
+                               HealthCheck.filter_too_much, HealthCheck.data_too_large],
+        **kw,
+    )
+
+
+class Hang(BaseException):
+    """A fuzzed call ran past its deadline (BaseException: the code under test cannot swallow it)."""
+
+
+@_contextlib.contextmanager
+def deadline(seconds: float):
+    """Interrupt the body with :class:`Hang` after ``seconds`` of wall time (main thread only)."""
+    def on_alarm(signum, frame):
+        raise Hang(f"no answer within {seconds} s")
+
+    previous = _signal.signal(_signal.SIGALRM, on_alarm)
+    _signal.setitimer(_signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        _signal.setitimer(_signal.ITIMER_REAL, 0)
+        _signal.signal(_signal.SIGALRM, previous)
+
+
+def fuzz_call(module: str, fn, *args, seconds: float = 30.0, **kwargs):
+    """Call ``fn`` on a (hostile) input: return ``(True, value)``, or ``(False, error)`` when it raised
+    ValueError or TypeError with a message.  Any other exception, an empty message or running past
+    ``seconds`` is counted under ``module`` and fails the test."""
+    tally = FUZZ_TALLY[module]
+    tally["tried"] += 1
+    try:
+        with deadline(seconds):
+            value = fn(*args, **kwargs)
+    except Hang:
+        tally["hang"] += 1
+        raise AssertionError(f"{module}: {getattr(fn, '__name__', fn)} hung on {args!r} {kwargs!r}") from None
+    except (ValueError, TypeError) as exc:
+        if not str(exc).strip():
+            tally["crash"] += 1
+            raise AssertionError(f"{module}: {type(exc).__name__} without a message on {args!r}") from exc
+        tally["error"] += 1
+        return False, exc
+    except BaseException:
+        tally["crash"] += 1
+        raise
+    tally["value"] += 1
+    return True, value
+
+
+def claims_of(name: str) -> list[dict]:
+    """The ``[[claim]]`` tables of ``experiments/claims/<name>.toml``."""
+    import tomllib
+
+    from thesis_lib.lab.paths import repo_root
+
+    with open(repo_root() / "experiments" / "claims" / f"{name}.toml", "rb") as fh:
+        return tomllib.load(fh)["claim"]
+
+
+def page_labels(page: str) -> set[str]:
+    """The MyST labels of a book page: ``(label)=`` targets and ``:name:`` options of its Markdown cells."""
+    import re
+
+    import nbformat
+
+    from thesis_lib.lab.paths import repo_root
+
+    nb = nbformat.read(repo_root() / "book" / f"{page}.ipynb", as_version=4)
+    text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
+    return set(re.findall(r"^\(([\w-]+)\)=\s*$", text, re.M)) | set(re.findall(r"^:name:\s*([\w-]+)\s*$", text, re.M))
+
+
+PROVENANCES = {"computed", "reconstructed input", "transcribed"}
+
+
+def check_claim_file(name: str) -> None:
+    """Every claim of ``experiments/claims/<name>.toml`` has a provenance and a link to a label of its
+    book page, and (for an experiment) none compares one of the experiment's input parameters."""
+    from thesis_lib.lab import runner
+
+    params = set(runner.experiment_parameters(name)) if name in runner.list_experiments() else set()
+    for claim in claims_of(name):
+        assert claim.get("provenance") in PROVENANCES, claim["id"]
+        page, _, label = claim["link"].partition("#")
+        assert label in page_labels(page), f"{claim['id']}: no label {label!r} on book/{page}.ipynb"
+        results = claim.get("result", [])
+        for ref in results if isinstance(results, list) else [results]:
+            experiment, key = ref.split(":", 1)
+            assert experiment != name or key not in params, f"{claim['id']} compares the parameter {key!r} of {name}"

@@ -10,6 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from thesis_lib.complexes import rips
 from thesis_lib.datasets import example_filtration
 from thesis_lib.persistence import Barcode, compute_intervals, persistence, plot_barcode, plot_diagram
 
@@ -83,7 +84,7 @@ def test_bad_barcodes():
         b.persistent_betti(0, -1, 0)
     with pytest.raises(ValueError, match="NaN"):
         b.betti(float("nan"), 0)
-    with pytest.raises(ValueError, match="non-negative"):
+    with pytest.raises(ValueError, match=">= 0"):
         b.intervals(-1)
     with pytest.raises(ValueError, match="filtration"):
         b.representative(0, 0)
@@ -116,3 +117,67 @@ def test_plots():
     import matplotlib.pyplot as plt
 
     plt.close("all")
+
+
+def test_plot_defaults_complete_dims_short_bars_and_refuse_millions():
+    import matplotlib.pyplot as plt
+
+    rng = np.random.default_rng(0)
+    births = rng.random(20000)
+    noise = np.column_stack([births, births + 1e-4])  # 20,000 bars of 0.01 % of the range
+    b = Barcode({0: np.vstack([noise, [[0, 1.0]]]), 1: [[0.2, 0.9]], 2: [[0.5, np.inf]] * 10**5}, complete=[0, 1])
+    fig = plot_barcode(b)  # H2 (incomplete) left out, the short bars too
+    assert len(fig.axes) == 2 and len(fig.axes[0].collections) == 1 and len(fig.axes[1].collections) == 1
+    with pytest.raises(ValueError, match="20002 bars to draw"):
+        plot_barcode(b, min_fraction=0)
+    with pytest.raises(ValueError, match="100000 bars"):
+        plot_barcode(b, dims=[2])
+    plt.close("all")
+
+
+def test_bad_dimensions_and_counts_get_clear_errors():
+    b = Barcode({0: [[0, 1], [0, 2]], 1: [[0.5, 1]]})
+    for bad in (1.5, "1", True, None):
+        with pytest.raises((ValueError, TypeError), match="homology dimension"):
+            b.intervals(bad)
+    with pytest.raises(ValueError, match="n must be >= 0"):
+        b.longest(0, -1)
+    with pytest.raises(TypeError, match="n must be an integer"):
+        b.longest(0, 1.5)
+    assert b.longest(0, 0).tolist() == [] and b.longest(0, 5).tolist() == [1, 0]
+    with pytest.raises(ValueError, match="interval index"):
+        persistence(example_filtration()).representative(1, 0.5)
+
+
+def test_complete_dimensions_rule_repr_betti_diagrams_and_equality():
+    iv = {0: [[0, 1], [0, np.inf]], 1: [[0.5, 2]], 2: [[1, np.inf]] * 3}
+    b = Barcode(iv, complete=[0, 1])
+    assert b.dimensions == (0, 1, 2) and b.complete_dimensions == (0, 1)
+    assert repr(b) == "Barcode(H0: 2 (1 essential), H1: 1 (0 essential); H2 incomplete (top dimension of a truncated complex))"
+    assert b.betti(0.7) == [2, 1] and b.betti(1.5, 2) == 3
+    dg = b.to_diagrams()
+    assert len(dg) == 2 and dg[0].tolist() == [[0, 1], [0, np.inf]] and dg[1].tolist() == [[0.5, 2]]
+    assert Barcode.from_diagrams(dg) == b  # the incomplete dimension is left out of comparisons
+    assert Barcode.from_diagrams(dg) != Barcode(iv)  # ... unless one side says it is complete
+    assert len(b.to_diagrams([2])) == 3
+    with pytest.raises(ValueError, match="not computed"):
+        Barcode(iv, complete=[3])
+    with pytest.raises(ValueError, match=r"\(m, 2\)"):
+        Barcode.from_diagrams([np.zeros((2, 3))])
+    with pytest.raises(TypeError):
+        Barcode.from_diagrams(5)
+
+
+def test_diagrams_round_trip_with_ripser():
+    from ripser import ripser
+
+    pts = np.random.default_rng(3).random((30, 2))
+    f = rips(pts, max_radius=np.inf, max_dim=2)
+    f.truncated = True  # the triangles' cofaces were not built: H2 is not complete
+    ours = persistence(f)
+    assert ours.complete_dimensions == (0, 1)
+    dg = ripser(pts, maxdim=1)["dgms"]
+    theirs = Barcode.from_diagrams([np.asarray(d, dtype=np.float64) / 2 for d in dg])  # ripser: diameters
+    assert ours.allclose(theirs, atol=1e-6)  # ripser computes in float32
+    again = Barcode.from_diagrams(ours.to_diagrams())
+    assert again == ours and len(ours.to_diagrams()) == len(ours.complete_dimensions)

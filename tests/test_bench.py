@@ -32,3 +32,85 @@ def test_tables_from_rows(tmp_path, monkeypatch):
 def test_every_stored_benchmark_is_readable():
     for topic in bench.topics():
         assert bench.load(topic), topic
+
+
+# ----------------------------------------------------------------------------- the harness
+def _harness():
+    import importlib
+    import sys
+
+    from thesis_lib.lab.paths import repo_root
+
+    sys.path.insert(0, str(repo_root() / "benchmarks"))
+    try:
+        return importlib.import_module("harness")
+    finally:
+        sys.path.pop(0)
+
+
+def test_compare_interleaves_rounds_and_pairs_ratios():
+    h = _harness()
+    calls = []
+    r = h.compare({"a": lambda: calls.append("a"), "b": lambda: calls.append("b")}, rounds=3)
+    assert calls == ["a", "b"] * 4  # one warm-up each, then a, b, a, b, ...
+    assert r["rounds"] == 3 and len(r["times_s"]["a"]) == 3
+    fake = {"rounds": 3, "times_s": {"a": [1.0, 2.0, 10.0], "b": [2.0, 2.0, 2.0]}, "median_s": {"a": 2.0, "b": 2.0}}
+    assert h.paired_ratio(fake, "a", "b") == 1.0  # median of 0.5, 1, 5
+    row = h.ratio_fields(fake, "a")
+    assert row == {"rounds": 3, "a_s": 2.0, "b_s": 2.0, "ratio_b": 1.0}
+    assert h.default_rounds(0.05) == 15 and h.default_rounds(0.5) == 5
+    seen = {}
+    h.compare({"x": lambda: 1, "y": lambda: 2}, rounds=1, check=seen.update)
+    assert seen == {"x": 1, "y": 2}
+    with pytest.raises(ValueError):
+        h.compare({})
+
+
+def test_results_carry_provenance_and_ratio_changes_are_caught(tmp_path):
+    h = _harness()
+    out = h.write_results("t", [{"case": "c", "ratio_ripser": 1.0}], output=str(tmp_path / "t.json"))
+    meta, rows = h.read_results(out)
+    assert rows == [{"case": "c", "ratio_ripser": 1.0}]
+    assert meta["cores"] >= 1 and len(meta["load_average"]) == 3 and meta["date"].endswith("Z")
+    assert "commit" in meta and "load_average_end" in meta
+    stored = [{"case": "c", "ratio_ripser": 1.0, "ratio_gudhi": 0.5}]
+    assert h.ratio_changes(stored, [{"case": "c", "ratio_ripser": 1.3, "ratio_gudhi": 0.4}]) == []
+    moved = h.ratio_changes(stored, [{"case": "c", "ratio_ripser": 1.4}])
+    assert len(moved) == 1 and "ratio_ripser moved +40%" in moved[0]
+    assert "no stored result" in h.ratio_changes(stored, [{"case": "d", "ratio_ripser": 1.0}])[0]
+    assert "no stored figure" in h.ratio_changes(stored, [{"case": "c", "ratio_new": 1.0}])[0]
+
+
+def test_memory_worker_subtracts_the_baseline(capsys):
+    h = _harness()
+    import numpy as np
+
+    res = h.memory_worker(lambda: None, lambda _: np.ones(40 * 2**20 // 8).sum())
+    assert res["peak_mb"] >= res["baseline_mb"] > 0
+    if res["hwm_reset"]:
+        assert res["delta_mb"] > 30  # the 40 MB array
+
+
+def test_ratios_figures_and_exponents(tmp_path, monkeypatch):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    (tmp_path / "benchmarks" / "results").mkdir(parents=True)
+    rows = [{"case": f"scaling-{n}", "n_per_circle": n, "rounds": 5, "ours_s": 0.001 * n**2, "ripser_s": 0.002 * n**3,
+             "ours_mb": float(n), "ripser_mb": 2.0 * n, "ratio_ripser": 0.5 * n**-1} for n in (10, 20, 40)]
+    (tmp_path / "benchmarks" / "results" / "p.json").write_text(
+        json.dumps({"meta": {"commit": "abc", "date": "d", "cores": 2, "load_average": [1, 1, 1],
+                             "load_average_end": [2, 2, 2]}, "rows": rows}))
+    assert bench.ratios("p", ["scaling-10"]) == [("scaling-10", "ripser", 0.05, 5)]
+    assert "No stored rows" in bench.markdown("p", ["case"], cases=["absent"])
+    assert bench.meta("p")["commit"] == "abc" and "load average 1 at the start and 2" in bench.provenance("p")
+    assert abs(bench.fit_exponent([1, 2, 4], [3, 12, 48]) - 2.0) < 1e-12
+    with pytest.raises(ValueError):
+        bench.fit_exponent([1], [1])
+    fig = bench.ratio_figure("p")
+    assert len(fig.axes[0].patches) == 3
+    fig, exps = bench.scaling_figure("p", "scaling-", {"ours": "ours", "ripser": "Ripser"})
+    assert abs(exps["ours"][0] - 2) < 1e-9 and abs(exps["ripser"][0] - 3) < 1e-9 and abs(exps["ours"][1] - 1) < 1e-9
+    with pytest.raises(ValueError, match="no cases"):
+        bench.scaling_figure("p", "nothing", {"ours": "ours"})

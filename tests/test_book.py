@@ -1,21 +1,38 @@
-"""The book builds from its stored notebooks, has its pages, and renders math with no network."""
+"""The built book: every page, its tables, figures and math, from a server at a sub-path and from file://.
+
+The book is built once for this module from the stored (executed) notebooks, with the book's own
+configuration (warnings are errors), into a temporary folder. The pages are then opened in headless
+Chromium with no network: a harness page loads each one in a frame and reports what it sees.
+"""
 
 from __future__ import annotations
 
 import functools
+import html
 import http.server
+import json
+import os
+import re
 import shutil
 import subprocess
 import sys
 import threading
+import zipfile
+from html.parser import HTMLParser
 from pathlib import Path
+from urllib.parse import unquote, urlsplit
 
 import pytest
 import yaml
 
+from thesis_lib.lab import bench
 from thesis_lib.lab.paths import repo_root
+from thesis_lib.lab.report import report
+from thesis_lib.lab.results import DEFAULT_RUN_ENV
 
-BOOK = repo_root() / "book"
+ROOT = repo_root()
+BOOK = ROOT / "book"
+ARCHIVE = "thesis-lab-book.zip"
 
 
 def _toc_files(toc: dict) -> list[str]:
@@ -27,73 +44,327 @@ def _toc_files(toc: dict) -> list[str]:
     return files
 
 
+PAGES = _toc_files(yaml.safe_load((BOOK / "_toc.yml").read_text()))
+
+
+def _git_status() -> str:
+    return subprocess.run(["git", "status", "--porcelain"], cwd=ROOT, capture_output=True, text=True, check=True).stdout
+
+
+def build_config(out: Path, **execute) -> Path:
+    """The book's _config.yml with paths made absolute (the copy lives in ``out``) and ``execute`` changed."""
+    config = yaml.safe_load((BOOK / "_config.yml").read_text())
+    config["execute"].update(execute)
+    config["sphinx"]["local_extensions"] = {k: str(BOOK / v) for k, v in config["sphinx"]["local_extensions"].items()}
+    config["bibtex_bibfiles"] = [str(BOOK / f) for f in config["bibtex_bibfiles"]]
+    path = out / "_config.yml"
+    path.write_text(yaml.safe_dump(config))
+    return path
+
+
+def jupyter_book(source: Path, config: Path, out: Path, env: dict | None = None) -> subprocess.CompletedProcess:
+    jb = Path(sys.executable).with_name("jupyter-book")
+    return subprocess.run(
+        [str(jb), "build", str(source), "-W", "-n", "--keep-going", "--config", str(config), "--path-output", str(out)],
+        capture_output=True, text=True, env=env,
+    )
+
+
 @pytest.fixture(scope="module")
 def built_book(tmp_path_factory) -> Path:
-    """Build the book from the stored (executed) notebooks, warnings as errors, into a temp folder."""
+    """Build the book from the stored notebooks (no execution), warnings as errors, into a temp folder."""
     out = tmp_path_factory.mktemp("book")
-    config = yaml.safe_load((BOOK / "_config.yml").read_text())
-    config["execute"]["execute_notebooks"] = "off"
-    config["sphinx"]["local_extensions"] = {"offline_mathjax": str(BOOK / "_ext")}  # paths are relative to the config
-    config_file = out / "_config.yml"
-    config_file.write_text(yaml.safe_dump(config))
-    jb = Path(sys.executable).with_name("jupyter-book")
-    proc = subprocess.run(
-        [str(jb), "build", str(BOOK), "-W", "-n", "--keep-going", "--config", str(config_file), "--path-output", str(out)],
-        capture_output=True,
-        text=True,
-    )
+    before = _git_status()
+    proc = jupyter_book(BOOK, build_config(out, execute_notebooks="off"), out)
     assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
+    assert "WARNING" not in proc.stdout + proc.stderr
+    assert _git_status() == before, "building the book changed files of the checkout"
     return out / "_build" / "html"
 
 
+def test_pages_that_read_stored_files_are_rebuilt_every_time(built_book):
+    """The report and the summary read the claims and stored results, which Sphinx does not track."""
+    out = built_book.parent.parent
+    proc = jupyter_book(BOOK, out / "_config.yml", out)
+    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
+    log = re.sub(r"\x1b\[[0-9;]*m", "", proc.stdout)
+    reread = set(re.findall(r"reading sources\.\.\. \[\s*\d+%\] (\S+)", log))
+    assert reread == {"report", "ch5-summary"}
+
+
 def test_every_toc_page_is_built(built_book):
-    toc = yaml.safe_load((BOOK / "_toc.yml").read_text())
-    for file in _toc_files(toc):
-        page = built_book / (file + ".html")
-        assert page.is_file(), f"{file} missing from the built book"
+    for file in PAGES:
+        assert (built_book / (file + ".html")).is_file(), f"{file} missing from the built book"
 
 
-def test_book_has_intro_landmarks_and_report(built_book):
+def test_book_has_intro_landmarks_report_and_references(built_book):
     assert "Why three approaches" in (built_book / "intro.html").read_text()
     assert "covering_radius_maxmin" in (built_book / "experiments" / "two-circles-landmarks.html").read_text()
-    report = (built_book / "report.html").read_text()
-    assert "Reproduction report" in report and "claims:" in report
+    report_text = re.sub(r"<[^>]+>", "", (built_book / "report.html").read_text())
+    assert "Reproduction report" in report_text and f"The registry holds {len(report())} claims" in report_text
+    refs = (built_book / "references.html").read_text()
+    assert 'role="doc-biblioentry"' in refs and ">ABK98<" in refs
+
+
+def test_citations_link_to_the_references_page(built_book):
+    intro = (built_book / "intro.html").read_text()
+    assert re.search(r'<a class="reference internal" href="references.html#[^"]+"[^>]*>Bot11</a>', intro)
+
+
+def _toc_titles(toc: dict) -> dict[str, str]:
+    entries = [c for part in toc.get("parts", []) for c in part.get("chapters", [])]
+    entries += [s for c in list(entries) for s in c.get("sections", [])]
+    return {e["file"]: e["title"] for e in entries if "title" in e}
+
+
+def test_sidebar_titles_follow_the_thesis(built_book):
+    titles = _toc_titles(yaml.safe_load((BOOK / "_toc.yml").read_text()))
+    for title in ["2.1–2.2 Complexes and homology", "2.3 Persistent homology", "2.4 Experiments",
+                  "3 Discrete differential geometry", "4 Discrete Morse theory", "5 Summary"]:
+        assert title in titles.values(), title
+    nav = html.unescape((built_book / "intro.html").read_text())
+    # Sphinx keeps a page's own heading in the sidebar when the page has more than one top-level (#) heading
+    wrong = [f"{file}: {title!r}" for file, title in titles.items() if f'href="{file}.html">{title}</a>' not in nav]
+    assert not wrong, "sidebar entries that lost their title (one # heading per page):\n" + "\n".join(wrong)
 
 
 def test_mathjax_is_served_from_the_build(built_book):
-    html = (built_book / "intro.html").read_text()
-    assert "_static/mathjax/tex-chtml.js" in html
-    assert "cdn.jsdelivr" not in html and "mathjax@3" not in html
+    page = (built_book / "intro.html").read_text()
+    assert "_static/mathjax/tex-chtml.js" in page
+    assert "cdn.jsdelivr" not in page and "mathjax@3" not in page
     assert (built_book / "_static" / "mathjax" / "output" / "chtml" / "fonts" / "woff-v2").is_dir()
 
 
-def _serve(root: Path) -> tuple[http.server.ThreadingHTTPServer, int]:
-    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(root))
-    handler.log_message = lambda *a, **k: None
+def test_site_archive_holds_the_site(built_book):
+    with zipfile.ZipFile(built_book.parent / ARCHIVE) as archive:
+        names = set(archive.namelist())
+    assert {f"html/{p}.html" for p in PAGES} <= names
+    assert "html/_static/mathjax/tex-chtml.js" in names
+    on_disk = {f"html/{p.relative_to(built_book).as_posix()}" for p in built_book.rglob("*") if p.is_file()}
+    assert names == on_disk
+
+
+class _Links(HTMLParser):
+    """Every href/src of a page, and every id it defines."""
+
+    def __init__(self):
+        super().__init__()
+        self.links: list[str] = []
+        self.ids: set[str] = set()
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if "id" in attrs:
+            self.ids.add(attrs["id"])
+        for key in ("href", "src"):
+            if attrs.get(key) and not (tag == "link" and attrs.get("rel") in ("preconnect", "dns-prefetch")):
+                self.links.append(html.unescape(attrs[key]))
+
+
+@functools.lru_cache(maxsize=None)
+def _parse(path: Path) -> _Links:
+    parser = _Links()
+    parser.feed(path.read_text(errors="replace"))
+    return parser
+
+
+def test_every_link_is_relative_and_resolves(built_book):
+    """Relative links only, so the site works at any sub-path and from file://; every target exists."""
+    bad = []
+    pages = [p for p in sorted(built_book.rglob("*.html")) if "_static" not in p.relative_to(built_book).parts]
+    for page in pages:  # (_static holds the themes' template macros, not pages)
+        for link in _parse(page).links:
+            parts = urlsplit(link)
+            if parts.scheme in ("http", "https", "mailto", "data", "javascript"):
+                continue
+            if parts.scheme or link.startswith("/"):
+                bad.append(f"{page.name}: absolute link {link}")
+                continue
+            if not parts.path:
+                continue  # a fragment of the page itself (headings' permalinks)
+            target = (page.parent / unquote(parts.path)).resolve()
+            if target.is_dir():
+                target = target / "index.html"
+            if not target.exists():
+                bad.append(f"{page.relative_to(built_book)}: {link} does not exist")
+            elif parts.fragment and target.suffix == ".html" and parts.fragment not in _parse(target).ids:
+                bad.append(f"{page.relative_to(built_book)}: {link} has no anchor #{parts.fragment}")
+    assert not bad, "\n".join(bad[:40])
+
+
+# ---------------------------------------------------------------------------------------------------
+# In the browser
+
+HARNESS = """<!DOCTYPE html><html><body><pre id="out">running</pre><script>
+const PAGES = %(pages)s, PREFIX = %(prefix)s;
+function cssBroken(link) {
+  try { return !link.sheet || link.sheet.cssRules.length === 0; } catch (e) { return false; }
+}
+function visibleText(doc) {
+  const body = doc.body.cloneNode(true);
+  body.querySelectorAll("pre, code, script, style, .cell_input, .highlight").forEach(e => e.remove());
+  return body.textContent;
+}
+async function check(page) {
+  const frame = document.createElement("iframe");
+  frame.style.width = "1280px"; frame.style.height = "1000px";
+  document.body.appendChild(frame);
+  await new Promise(resolve => { frame.onload = resolve; frame.src = PREFIX + page + ".html"; });
+  const win = frame.contentWindow, doc = frame.contentDocument;
+  for (let i = 0; i < 200 && !(win.MathJax && win.MathJax.startup && win.MathJax.startup.promise); i++)
+    await new Promise(r => setTimeout(r, 50));
+  if (win.MathJax && win.MathJax.startup) await win.MathJax.startup.promise;
+  await Promise.all([...doc.images].map(img => img.complete ? null :
+    new Promise(r => { img.addEventListener("load", r); img.addEventListener("error", r); })));
+  const text = visibleText(doc);
+  const tables = [...doc.querySelectorAll("table")].map(t => ({
+    id: t.id || (t.closest("[id]") || {}).id || "",
+    rows: [...t.tBodies].reduce((n, b) => n + b.rows.length, 0),
+    first: [...t.tBodies].flatMap(b => [...b.rows].map(r => r.cells[0].textContent.trim())),
+    links: [...t.querySelectorAll("tbody tr td:first-child a")].map(a => a.getAttribute("href")),
+  }));
+  const result = {
+    title: doc.title,
+    raw_tables: (text.match(/\\|\\s*:?-{3,}:?\\s*\\|/g) || []).length,
+    images: doc.images.length,
+    broken_images: [...doc.images].filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.getAttribute("src")),
+    broken_css: [...doc.querySelectorAll("link[rel=stylesheet]")].filter(cssBroken).map(l => l.getAttribute("href")),
+    bad_outputs: [...doc.querySelectorAll(".cell_output, .output")].map(e => e.textContent)
+      .filter(t => /Traceback|Warning/.test(t)).map(t => t.slice(0, 300)),
+    math: doc.querySelectorAll(".math").length,
+    math_unrendered: [...doc.querySelectorAll(".math")].filter(e => !e.querySelector("mjx-container")).length,
+    tables: tables,
+  };
+  frame.remove();
+  return result;
+}
+(async () => {
+  const results = {};
+  for (const page of PAGES) {
+    try { results[page] = await check(page); } catch (e) { results[page] = {error: String(e)}; }
+  }
+  document.getElementById("out").textContent = JSON.stringify(results);
+})();
+</script></body></html>"""
+
+
+def _chromium() -> str:
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    assert chromium, "Debian's chromium is needed for the browser tests: `make test` installs it"
+    return chromium
+
+
+def _run_harness(url: str, profile: Path, extra: list[str] = ()) -> dict:
+    proc = subprocess.run(
+        [
+            _chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
+            "--disable-background-networking", "--disable-component-update", "--disable-sync",
+            f"--user-data-dir={profile}",
+            # no network: every host but the loopback server goes to a dead proxy
+            "--proxy-server=127.0.0.1:9", *extra,
+            "--virtual-time-budget=600000", "--dump-dom", url,
+        ],
+        capture_output=True, text=True, timeout=600,
+    )
+    m = re.search(r'<pre id="out">(.*?)</pre>', proc.stdout, re.S)
+    assert m and m.group(1) != "running", "the harness did not finish: " + proc.stdout[-1000:] + proc.stderr[-2000:]
+    return json.loads(html.unescape(m.group(1)))
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+def _serve(root: Path) -> http.server.ThreadingHTTPServer:
+    handler = functools.partial(_QuietHandler, directory=str(root))
     server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
     threading.Thread(target=server.serve_forever, daemon=True).start()
-    return server, server.server_address[1]
+    return server
 
 
-def test_math_renders_offline_in_headless_chromium(built_book, tmp_path):
-    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
-    assert chromium, "Debian's chromium is needed for this test: `make test` installs it"
-    server, port = _serve(built_book)
+SUBPATH = "pages/thesis-lab/"
+
+
+@pytest.fixture(scope="module")
+def seen_at_subpath(built_book, tmp_path_factory) -> dict:
+    """Every page as Chromium shows it, served by `python -m http.server` under a sub-path."""
+    root = tmp_path_factory.mktemp("site")
+    (root / SUBPATH).parent.mkdir(parents=True)
+    (root / SUBPATH).symlink_to(built_book, target_is_directory=True)
+    (root / "harness.html").write_text(HARNESS % {"pages": json.dumps(PAGES), "prefix": json.dumps(SUBPATH)})
+    server = _serve(root)
     try:
-        proc = subprocess.run(
-            [
-                chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                f"--user-data-dir={tmp_path / 'profile'}",
-                # no network: every host but the loopback server goes to a dead proxy
-                "--proxy-server=127.0.0.1:9",
-                "--virtual-time-budget=20000", "--dump-dom", f"http://127.0.0.1:{port}/intro.html",
-            ],
-            capture_output=True, text=True, timeout=120,
-        )
+        return _run_harness(f"http://127.0.0.1:{server.server_address[1]}/harness.html", root / "profile")
     finally:
         server.shutdown()
-    dom = proc.stdout
-    assert "Why three approaches" in dom, proc.stderr[-2000:]
-    assert dom.count("<mjx-container") >= 2, "MathJax did not typeset the page's math"
-    assert 'class="MathJax CtxtMenu_Attached_0"' in dom or "mjx-math" in dom
+
+
+@pytest.mark.parametrize("page", PAGES)
+def test_page_in_the_browser(seen_at_subpath, page):
+    seen = seen_at_subpath[page]
+    assert "error" not in seen, seen
+    assert seen["raw_tables"] == 0, "Markdown table text shown as text (a table that did not render)"
+    assert not seen["broken_images"], f"images that do not load: {seen['broken_images']}"
+    assert not seen["broken_css"], f"style sheets that do not load: {seen['broken_css']}"
+    assert not seen["bad_outputs"], f"outputs with a traceback or warning: {seen['bad_outputs']}"
+    assert seen["math_unrendered"] == 0, f"{seen['math_unrendered']} of {seen['math']} formulas not typeset"
+
+
+def test_math_is_typeset(seen_at_subpath):
+    assert seen_at_subpath["intro"]["math"] >= 2
+    assert sum(p["math"] for p in seen_at_subpath.values()) > 50
+
+
+def test_report_tables_have_a_row_per_claim(seen_at_subpath):
+    rows = report()
+    tables = {t["id"]: t for t in seen_at_subpath["report"]["tables"]}
+    beyond = [r for r in rows if r.get("section") == "beyond" or r["status"] == "new"]
+    thesis = [r for r in rows if r not in beyond]
+    assert tables["tbl-report-thesis"]["rows"] == len(thesis)
+    assert tables["tbl-report-thesis"]["first"] == [r["where"] for r in thesis]
+    assert tables.get("tbl-report-beyond", {"rows": 0})["rows"] == len(beyond)
+    assert tables["tbl-report-counts"]["first"][-1] == "all"
+    linked = [r for r in thesis if r.get("link")]
+    assert len(tables["tbl-report-thesis"]["links"]) == len(linked)
+    for href, r in zip(tables["tbl-report-thesis"]["links"], linked):
+        page, _, label = r["link"].partition("#")
+        assert href.split("#")[0] == page + ".html" and href.endswith(f"#{label}" if label else ".html"), (r["id"], href)
+
+
+def test_performance_tables_have_a_row_per_benchmark_case(seen_at_subpath):
+    tables = seen_at_subpath["performance"]["tables"]
+    for topic in bench.topics():
+        cases = [str(r.get("case")) for r in bench.load(topic)]
+        assert any(t["first"] == cases for t in tables), f"no table of benchmark {topic!r} with cases {cases}"
+
+
+def test_pages_work_from_file_urls(built_book, tmp_path):
+    """Opened from disk (file://), the pages find their style sheets, images, scripts and math."""
+    pages = ["intro", "report", "experiments/two-circles-landmarks"]
+    harness = tmp_path / "harness.html"
+    harness.write_text(HARNESS % {"pages": json.dumps(pages), "prefix": json.dumps(built_book.as_uri() + "/")})
+    seen = _run_harness(harness.as_uri(), tmp_path / "profile", ["--allow-file-access-from-files"])
+    for page in pages:
+        assert "error" not in seen[page], seen[page]
+        assert not seen[page]["broken_css"] and not seen[page]["broken_images"], seen[page]
+        assert seen[page]["math_unrendered"] == 0
+    assert seen["experiments/two-circles-landmarks"]["images"] >= 1
+    assert seen["intro"]["math"] >= 2
+
+
+# ---------------------------------------------------------------------------------------------------
+# Executing a page through the book's configuration
+
+
+def test_executing_an_experiment_page_writes_nothing_into_the_checkout(tmp_path):
+    """The build executes experiments with their default run redirected into _build/.../default-runs."""
+    before = _git_status()
+    env = {k: v for k, v in os.environ.items() if k != DEFAULT_RUN_ENV}
+    name = "rp2-morse"
+    proc = jupyter_book(BOOK / "experiments" / f"{name}.ipynb", build_config(tmp_path, execute_notebooks="force"), tmp_path, env=env)
+    assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
+    assert "running over TCP without encryption" not in proc.stdout + proc.stderr
+    assert _git_status() == before, "executing a page changed files of the checkout"
+    (written,) = (tmp_path / "_build").rglob(f"default-runs/{name}/results.json")
+    assert written.read_bytes() == (ROOT / "experiments" / "results" / name / "results.json").read_bytes()

@@ -171,9 +171,12 @@ def test_delaunay_cospherical_is_the_nerve():
     tops = [s for s in out if len(s) == 8]
     assert len(tops) == 8 and max(len(s) for s in out) == 8
     assert all(np.ptp(cube[list(s)], axis=0).max() == 1 for s in tops)
-    with pytest.raises(ValueError, match="one empty sphere"):
-        t = np.linspace(0, 2 * np.pi, 40, endpoint=False)
-        delaunay(np.column_stack([np.cos(t), np.sin(t)]))
+    # the 36 integer points on the circle of radius 65 are exactly co-circular (floats on a circle
+    # from cos and sin are not: co-sphericity is decided exactly)
+    ring = np.array([(x, y) for x in range(-65, 66) for y in range(-65, 66) if x * x + y * y == 65 * 65], float)
+    assert len(ring) == 36
+    with pytest.raises(ValueError, match="36 points lie on one empty sphere"):
+        delaunay(ring)
 
 
 def test_weighted_delaunay_hides_points():
@@ -446,5 +449,49 @@ def test_landmarks():
     assert covering_radius(pts, lm) == pytest.approx(d[:, lm].min(axis=1).max())
     # maxmin covers better than random here, as the thesis observes (Figure 2.13)
     assert covering_radius(pts, lm) < covering_radius(pts, rnd)
-    with pytest.raises(ValueError, match="positive integer"):
+    with pytest.raises(ValueError, match="number of landmarks must be >= 1"):
         random_landmarks(pts, 0, seed=0)
+
+
+def test_landmarks_on_duplicate_points():
+    # maxmin returned a repeated index once the distinct points were exhausted
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [1.0, 0.0], [0.5, 3.0]])
+    for seed in range(5):
+        lm = maxmin_landmarks(pts, 5, seed=seed)
+        assert sorted(lm.tolist()) == [0, 1, 2, 3, 4]
+        # the distinct points come first, then copies (at distance 0)
+        assert len({tuple(pts[i]) for i in lm[:3]}) == 3
+
+
+def test_covering_radius_checks_indices():
+    from thesis_lib.complexes import covering_radius
+
+    pts = np.random.default_rng(0).random((10, 2))
+    # a negative index was accepted (numpy wraps it), an index too large raised IndexError
+    with pytest.raises(ValueError, match="indices in 0..9"):
+        covering_radius(pts, [0, -1])
+    with pytest.raises(ValueError, match="indices in 0..9"):
+        covering_radius(pts, [0, 10])
+    with pytest.raises(ValueError, match="empty"):
+        covering_radius(pts, [])
+    with pytest.raises(TypeError, match="integer"):
+        covering_radius(pts, [0.5])
+    assert covering_radius(pts, np.arange(10)) == 0.0
+
+
+def test_nerve_refuses_explosions_and_deep_chains(monkeypatch):
+    import importlib
+
+    nerve_module = importlib.import_module("thesis_lib.complexes.nerve")
+
+    # 64 sets sharing an element: C(64, 6) = 75 million simplices up to dimension 5 (it hung)
+    monkeypatch.setattr(nerve_module, "MAX_NERVE_SIMPLICES", 10_000)
+    with pytest.raises(ValueError, match="more than 10,000 simplices"):
+        nerve([{0, i} for i in range(64)], max_dim=5)
+    # a chain of 3000 consecutive overlaps goes 2 deep only, but the search used to recurse per set
+    chain = [{i, i + 1} for i in range(3000)]
+    out = nerve(chain)
+    assert len(out) == 3000 + 2999 and max(len(s) for s in out) == 2
+    # 1500 sets with one common element: the full simplex; the search must not recurse 1500 deep
+    with pytest.raises(ValueError, match="more than 10,000"):
+        nerve([{0}] * 1500)

@@ -19,6 +19,7 @@ from thesis_lib.meshes import (
     sample_catenoid,
     sample_sphere,
     sample_torus,
+    torus_grid,
 )
 
 
@@ -127,6 +128,49 @@ def test_crust_torus_random_seeds(seed):
     assert np.all(deg == 2) and euler_characteristic(f) == 0
 
 
+@pytest.mark.parametrize("n", [50, 60])
+def test_crust_of_chosen_points_is_closed(n):
+    """The thesis's chosen points (§3.4.1): every grid quad is an isosceles trapezoid, four
+    co-circular samples, which Qhull separates by a flat tetrahedron.  The Crust must still pick
+    one diagonal per quad and leave no boundary (it left hundreds of boundary vertices before)."""
+    from scipy.spatial import Delaunay
+
+    from thesis_lib.meshes.crust import _circumcentres
+
+    vertices, grid_faces = torus_grid(n, 10.0, 5.0)
+    flat = ~_circumcentres(vertices[Delaunay(vertices).simplices])[1]
+    assert flat.sum() > n  # the degenerate configuration really occurs
+    f = crust(vertices)
+    assert np.all(facet_degrees(f) == 2) and euler_characteristic(f) == 0
+    assert len(f) == 2 * n * n and len(np.unique(f)) == n * n
+    assert _coherent(f)
+    # every face is half of a grid quad: its vertices span two consecutive u and two consecutive v
+    i, j = np.divmod(f, n)
+    for idx in (i, j):
+        spread = (np.sort(idx, axis=1)[:, [1, 2]] - np.sort(idx, axis=1)[:, [0, 0]]) % n
+        assert np.all((spread <= 1) | (spread == n - 1))
+    quads = {tuple(sorted({(a // n, a % n) for a in face})) for face in f.tolist()}
+    assert len(quads) == 2 * n * n  # no face repeated
+    # outward (the grid's faces are oriented by X_u × X_v)
+    p = vertices[f]
+    nrm = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert np.all(np.einsum("ij,ij->i", nrm, p.mean(axis=1) - _torus_core(p.mean(axis=1))) > 0)
+    # the cotangent formula is blind to the diagonal of a co-circular quad (cot α + cot β = 0 on it),
+    # so Voronoi-area curvature on the Crust equals that on the fixed-diagonal grid
+    h_crust = mean_curvature(vertices, f, area="voronoi")
+    h_grid = mean_curvature(vertices, grid_faces, area="voronoi")
+    assert np.allclose(h_crust, h_grid, rtol=1e-9, atol=1e-12)  # H = 0 on the inner equator
+    # the barycentric area is not: it counts the faces at a vertex, which the diagonals change
+    b_crust = mean_curvature(vertices, f, area="barycentric")
+    b_grid = mean_curvature(vertices, grid_faces, area="barycentric")
+    assert np.max(np.abs(b_crust / b_grid - 1)) > 0.1
+
+
+def _torus_core(x, R=10.0):
+    rho = np.hypot(x[:, 0], x[:, 1])
+    return np.column_stack([R * x[:, 0] / rho, R * x[:, 1] / rho, np.zeros(len(x))])
+
+
 def test_sparse_sample_falls_back_to_untrimmed_walk():
     pts = sample_torus(100, 10.0, 5.0, seed=1)
     f = crust(pts)
@@ -163,3 +207,16 @@ def test_bad_input():
         ball_pivoting(sample_sphere(50, 3), normals=np.zeros((3, 3)))
     with pytest.raises(ValueError, match="radii"):
         ball_pivoting(sample_sphere(50, 3), radii=[-1.0])
+
+
+def test_reconstruct_surface_dispatch():
+    from thesis_lib.meshes import reconstruct_surface
+
+    pts = sample_torus(1500, 10.0, 5.0, seed=3)
+    assert np.array_equal(reconstruct_surface(pts, "crust"), crust(pts))
+    open_cat = sample_catenoid(800, seed=2)
+    assert np.array_equal(reconstruct_surface(open_cat, "crust", closed=False), crust(open_cat, prune=False))
+    f = reconstruct_surface(pts, "ball-pivoting")
+    assert f.shape[1] == 3 and facet_degrees(f).max() <= 2
+    with pytest.raises(ValueError, match="unknown reconstruction"):
+        reconstruct_surface(pts, "poisson")

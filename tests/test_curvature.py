@@ -13,6 +13,7 @@ from scipy.spatial import ConvexHull
 from thesis_lib.curvature import (
     angle_defects,
     boundary_vertices,
+    check_pseudomanifold,
     check_orientation,
     circumcentric_fractions,
     gaussian_curvature,
@@ -452,12 +453,12 @@ def test_bad_options_and_dimensions():
     x, f = tetrahedron()
     with pytest.raises(ValueError, match="unknown method"):
         mean_curvature_vector(x, f, method="fem")
-    with pytest.raises(ValueError, match="unknown area kind"):
+    with pytest.raises(ValueError, match="unknown area"):
         mean_curvature(x, f, area="hexagonal")
-    with pytest.raises(ValueError, match="unknown area kind"):
+    with pytest.raises(ValueError, match="unknown area"):
         vertex_areas(x, f, "hexagonal")
-    with pytest.raises(ValueError, match="unknown weights"):
-        shape_operator(x, f, weights="random")
+    with pytest.raises(ValueError, match="unknown edge_weights"):
+        shape_operator(x, f, edge_weights="random")
     with pytest.raises(ValueError, match="unknown normals"):
         vertex_normals(x, f, normals="random")
     x4, s4 = sphere_hull(20, dim=4, seed=13)
@@ -508,3 +509,69 @@ def test_curves_n1_polygon_curvature():
         mean_curvature_vector(x, e, method="cot")
     h = mean_curvature(x, e[:-1], area="voronoi")  # open polygon: the two ends are boundary
     assert np.isnan(h[[0, k - 1]]).all() and np.isfinite(h[1:-1]).all()
+
+
+# ------------------------------------------------------------------------- one vocabulary (issue 13)
+def test_deprecated_aliases_warn_and_agree():
+    x, f = tetrahedron()
+    with pytest.warns(FutureWarning, match="kind= is deprecated"):
+        old = vertex_areas(x, f, kind="barycentric")
+    np.testing.assert_array_equal(old, vertex_areas(x, f, area="barycentric"))
+    P, F = torus_grid(12, 12)[:2]
+    with pytest.warns(FutureWarning, match="weights= is deprecated"):
+        old = shape_operator(P, F, weights="uniform")
+    np.testing.assert_array_equal(old.tensor, shape_operator(P, F, edge_weights="uniform").tensor)
+    with pytest.warns(FutureWarning):
+        pc = principal_curvatures(P, F, weights="uniform")
+    np.testing.assert_array_equal(pc.k1, principal_curvatures(P, F, "uniform").k1)
+    with pytest.raises(ValueError, match="not both"):
+        vertex_areas(x, f, "mixed", kind="mixed")
+
+
+# ------------------------------------------------------------------------- pseudo-manifolds (issue 11)
+def _pinched():
+    """Two tetrahedron boundaries glued at vertex 3 (the second reflected through it): every edge
+    lies in two faces, but the link of vertex 3 is two triangles."""
+    x, f = tetrahedron()
+    v = np.vstack([x, 2 * x[3] - x[:3]])
+    relabel = np.array([4, 5, 6, 3])
+    return v, np.vstack([f, relabel[f]])
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        lambda v, f: vertex_areas(v, f, "mixed"),
+        lambda v, f: mean_curvature(v, f),
+        lambda v, f: mean_curvature_vector(v, f),
+        lambda v, f: gaussian_curvature(v, f),
+        lambda v, f: angle_defects(v, f),
+        lambda v, f: principal_curvatures(v, f),
+        lambda v, f: shape_operator(v, f),
+        lambda v, f: vertex_normals(v, f),
+    ],
+)
+def test_non_manifold_input_is_refused(fn):
+    # a doubled triangle: before, every function returned numbers for it
+    x, f = tetrahedron()
+    with pytest.raises(ValueError, match=r"simplices 0 and 1 have the same vertices"):
+        fn(x, np.array([[0, 1, 2], [0, 1, 2]]))
+    # a pinched vertex (principal_curvatures failed inside the SVD)
+    v, g = _pinched()
+    with pytest.raises(ValueError, match="vertex 3 is pinched"):
+        fn(v, g)
+
+
+def test_check_pseudomanifold_accepts_manifolds_and_boundaries():
+    P, F = torus_grid(20, 20)[:2]
+    check_pseudomanifold(F, len(P))
+    Q, G, _ = open_patch()
+    check_pseudomanifold(G, len(Q))
+    # a fan around one vertex of very high degree stays fast and valid (a disk)
+    n = 20_000
+    t = np.arange(n)
+    check_pseudomanifold(np.column_stack([np.full(n, n), t, (t + 1) % n]), n + 1)
+    with pytest.raises(ValueError, match="three or more"):
+        check_pseudomanifold(np.array([[0, 1, 2], [0, 1, 3], [0, 1, 4]]), 5)
+    # curves (n = 1): a vertex in two edges is fine, links are not checked
+    check_pseudomanifold(np.array([[0, 1], [1, 2], [2, 0]]), 3)

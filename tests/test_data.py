@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hashlib
+import json
 
 import pytest
 
@@ -86,3 +87,89 @@ def test_fetch_refuses_a_download_with_the_wrong_hash(tiny, tmp_path):
         data.fetch("toy")
     assert not (root / "data" / "x" / "toy.pdb").exists()
     assert not list((root / "data" / "x").iterdir())
+
+
+def _manifest(root, file="x/toy.pdb", **kw):
+    payload = b"ATOM      1  N   GLY A   1\n"
+    entry = {"name": "toy", "file": file, "sha256": hashlib.sha256(payload).hexdigest(), "size": len(payload),
+             "url": "file:///nonexistent", "origin": "test", "licence": "CC0"}
+    entry.update(kw)
+    body = "\n".join(f"{k} = {json.dumps(v)}" for k, v in entry.items())
+    (root / "data" / "manifest.toml").write_text(f"[[file]]\n{body}\n")
+
+
+@pytest.mark.parametrize("file", ["../../x", "../outside.pdb", "/etc/passwd", "x/../../y", "./x", "x//y", "", "x\\..\\y",
+                                  "a/./b", ".."])
+def test_manifest_entries_outside_data_are_refused(tiny, file):
+    """Regression (issue 11): a `file` of ../../x made `data fetch` write outside data/ and `path` read outside it."""
+    root, shared, payload = tiny
+    _manifest(root, file=file)
+    with pytest.raises(DataError, match="must be a relative path below data/"):
+        data.path("toy")
+    with pytest.raises(DataError, match="must be a relative path below data/"):
+        data.fetch("toy")
+    assert cli.main(["data", "fetch", "toy"]) == 2
+
+
+def test_symlinks_out_of_data_are_refused(tiny, tmp_path):
+    root, shared, payload = tiny
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "toy.pdb").write_bytes(payload)
+    (root / "data" / "x").symlink_to(outside)
+    with pytest.raises(DataError, match=r"leads outside .* \(through a symlink\)"):
+        data.path("toy")
+    with pytest.raises(DataError, match="leads outside"):
+        data.fetch("toy")
+    assert [p.name for p in outside.iterdir()] == ["toy.pdb"]
+
+
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        ("[[file]\nname = 'x'", "is not valid TOML"),
+        ("file = 3", "'file' must be an array of tables"),
+        ("[[file]]\nname = 'x'", "missing"),
+        (None, "sha256 must be 64 lowercase hex digits"),
+        (None, "size must be a non-negative integer"),
+        (None, "url must start with"),
+        (None, "entry name"),
+        (None, "listed twice"),
+    ],
+)
+def test_malformed_manifests_give_clear_errors(tiny, text, message):
+    """Regression (issue 11): a malformed manifest raised a raw TOMLDecodeError."""
+    root, _, _ = tiny
+    if text is not None:
+        (root / "data" / "manifest.toml").write_text(text)
+    elif "sha256" in message:
+        _manifest(root, sha256="ABC")
+    elif "size" in message:
+        _manifest(root, size=-1)
+    elif "url" in message:
+        _manifest(root, url="ftp://x")
+    elif "entry name" in message:
+        _manifest(root, name="../x")
+    else:
+        _manifest(root)
+        text = (root / "data" / "manifest.toml").read_text()
+        (root / "data" / "manifest.toml").write_text(text + "\n" + text)
+    with pytest.raises(DataError, match=message):
+        data.manifest()
+    assert cli.main(["data", "verify"]) == 2
+
+
+def test_an_interrupted_fetch_leaves_data_as_it_was(tiny, monkeypatch):
+    root, _, payload = tiny
+    (root / "data" / "x").mkdir()
+    (root / "data" / "x" / "toy.pdb").write_bytes(b"old bytes")
+
+    def broken(response, fh):
+        fh.write(payload[:5])
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(data.shutil, "copyfileobj", broken)
+    with pytest.raises(KeyboardInterrupt):
+        data.fetch("toy")
+    assert [p.name for p in (root / "data" / "x").iterdir()] == ["toy.pdb"]
+    assert (root / "data" / "x" / "toy.pdb").read_bytes() == b"old bytes"

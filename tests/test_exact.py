@@ -128,3 +128,106 @@ def test_relative_error_leaves_out_zeros():
         relative_error(est[:2], exact)
     with pytest.raises(ValueError, match="zero_tol"):
         relative_error(est, exact, zero_tol=2.0)
+
+
+# ------------------------------------------------ references for the chapter 3 report rows
+from math import gamma  # noqa: E402
+
+from thesis_lib.curvature.exact import (  # noqa: E402
+    ellipsoid_point,
+    fundamental_forms,
+    gauss_bonnet_chern_constant,
+    hypersphere_quadrature,
+    hypersphere_volume,
+    normal_curvature_circle,
+    total_gauss_kronecker_curvature,
+    torus_outer_inner_ratio,
+)
+
+
+def test_outer_inner_ratio_closed_form_and_brute_force():
+    # R = 2r: (π + 2)(π − 1) / ((π + 1)(π − 2))
+    assert torus_outer_inner_ratio(10.0, 5.0) == pytest.approx((np.pi + 2) * (np.pi - 1) / ((np.pi + 1) * (np.pi - 2)), rel=1e-12)
+    for R, r in [(10.0, 5.0), (10.0, 7.0), (3.0, 1.0)]:  # R < 2r: H changes sign on the inner half
+        v = (np.arange(200000) + 0.5) * 2 * np.pi / 200000
+        h = np.abs(torus_mean_curvature(0.0, v, R, r))
+        area = R + r * np.cos(v)
+        outer = np.cos(v) > 0
+        brute = (np.sum(h[outer] * area[outer]) / area[outer].sum()) / (np.sum(h[~outer] * area[~outer]) / area[~outer].sum())
+        assert torus_outer_inner_ratio(R, r) == pytest.approx(brute, rel=1e-8)
+    with pytest.raises(ValueError, match="radii"):
+        torus_outer_inner_ratio(1.0, 2.0)
+
+
+@pytest.mark.parametrize("n", range(1, 9))
+def test_hypersphere_volume_and_the_constant_of_theorem_3_11(n):
+    assert hypersphere_volume(n) == pytest.approx(2 * np.pi ** ((n + 1) / 2) / gamma((n + 1) / 2), rel=1e-12)
+    if n % 2 == 0:
+        assert gauss_bonnet_chern_constant(n) == pytest.approx(hypersphere_volume(n) / 2, rel=1e-12)
+    else:
+        with pytest.raises(ValueError, match="even"):
+            gauss_bonnet_chern_constant(n)
+
+
+def test_hypersphere_quadrature_integrates_the_volume_element():
+    for n in (2, 3, 4):
+        params, weights = hypersphere_quadrature(n, 12)
+        assert weights.sum() == pytest.approx(np.pi ** (n - 1) * 2 * np.pi, rel=1e-12)
+        element = np.prod([np.sin(params[:, k]) ** (n - 1 - k) for k in range(n - 1)], axis=0)
+        assert np.sum(weights * element) == pytest.approx(hypersphere_volume(n), rel=1e-10)
+    with pytest.raises(ValueError, match="nodes"):
+        hypersphere_quadrature(2, 1)
+
+
+def test_ellipsoid_points_satisfy_the_equation():
+    axes = np.array([1.0, 1.5, 2.0, 2.5])
+    x = ellipsoid_point(np.random.default_rng(0).uniform(0, np.pi, (50, 3)), axes)
+    assert np.allclose(np.sum((x / axes) ** 2, axis=1), 1.0)
+    with pytest.raises(ValueError, match="semi-axes"):
+        ellipsoid_point(np.zeros((2, 3)), [1.0, 2.0])
+    with pytest.raises(ValueError, match="positive"):
+        ellipsoid_point(np.zeros((2, 2)), [1.0, -2.0, 1.0])
+
+
+@pytest.mark.parametrize(
+    "n, axes, nodes, rtol",
+    [(2, [1.0, 1.5, 2.0], 24, 1e-5), (4, [1.0, 1.1, 1.2, 1.1, 1.0], 10, 1e-4), (4, [2.0] * 5, 12, 1e-6)],
+)
+def test_gauss_bonnet_chern_on_ellipsoids(n, axes, nodes, rtol):
+    params, weights = hypersphere_quadrature(n, nodes)
+    total = total_gauss_kronecker_curvature(lambda a: ellipsoid_point(a, axes), params, weights)
+    assert total == pytest.approx(gauss_bonnet_chern_constant(n) * 2, rel=rtol)  # χ(S^n) = 2
+
+
+def test_gauss_bonnet_on_the_torus_and_fundamental_forms():
+    t = 2 * np.pi * np.arange(120) / 120
+    uv = np.stack(np.meshgrid(t, t, indexing="ij"), -1).reshape(-1, 2)
+    X = lambda w: torus_point(w[..., 0], w[..., 1], 10.0, 5.0)  # noqa: E731
+    total = total_gauss_kronecker_curvature(X, uv, np.full(len(uv), (2 * np.pi / 120) ** 2))
+    assert abs(total) < 1e-6  # χ(torus) = 0
+    g, B = fundamental_forms(X, uv[:5])
+    v = uv[:5, 1]
+    assert np.allclose(g[:, 0, 0], (10 + 5 * np.cos(v)) ** 2, rtol=1e-7)
+    assert np.allclose(g[:, 1, 1], 25.0, rtol=1e-7) and np.allclose(g[:, 0, 1], 0.0, atol=1e-7)
+    with pytest.raises(ValueError, match="weights"):
+        total_gauss_kronecker_curvature(X, uv, np.ones(3))
+
+
+@settings(deadline=None, max_examples=20)
+@given(angle, angle)
+def test_normal_curvature_circle_extremes_and_mean(u, v):
+    X = lambda w: torus_point(w[..., 0], w[..., 1], 10.0, 5.0)  # noqa: E731
+    kn = normal_curvature_circle(X, np.array([u, v]), nodes=64)
+    k1, k2 = torus_principal_curvatures(u, v)
+    # X_u ⊥ X_v, so θ = 0 and θ = π/2 (nodes 0 and 16) are the principal directions
+    assert sorted([kn[0], kn[16]]) == pytest.approx([k1, k2], abs=1e-6)
+    assert kn.min() == pytest.approx(k1, abs=1e-6) and kn.max() == pytest.approx(k2, abs=1e-6)
+    assert kn.mean() == pytest.approx(float(torus_mean_curvature(u, v)), abs=1e-6)  # eq. (3.23)
+    assert 2 * np.pi * kn.mean() == pytest.approx(np.pi * (k1 + k2), abs=1e-5)
+
+
+def test_normal_curvature_circle_needs_a_surface():
+    with pytest.raises(ValueError, match="n = 2"):
+        normal_curvature_circle(lambda a: hypersphere_point(a, 1.0), np.array([0.5, 0.6, 0.7]))
+    with pytest.raises(ValueError, match="nodes"):
+        normal_curvature_circle(lambda w: torus_point(w[..., 0], w[..., 1]), np.array([0.1, 0.2]), nodes=2)

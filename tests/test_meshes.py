@@ -191,7 +191,7 @@ def test_bad_input():
         freudenthal((1, 4))
     with pytest.raises(ValueError, match="periodic"):
         freudenthal((3, 3), periodic=(True,))
-    with pytest.raises(ValueError, match="positive integer"):
+    with pytest.raises(ValueError, match="n must be >= 1"):
         sample_torus(0)
     with pytest.raises(ValueError, match="0 < r < R"):
         sample_torus(10, R=1, r=2)
@@ -207,6 +207,47 @@ def test_bad_input():
         sample_catenoid(10, (1, -1))
 
 
+def test_hangs_are_refused_up_front():
+    # freudenthal((2,) * 12) would build 12! = 479,001,600 simplices of 13 vertices
+    with pytest.raises(ValueError, match=r"479,001,600 simplices"):
+        freudenthal((2,) * 12)
+    # 10^9 samples: refused with the size, before anything is drawn
+    for call in (lambda: sample_torus(10**9), lambda: sample_sphere(10**9), lambda: sample_catenoid(10**9)):
+        with pytest.raises(ValueError, match=r"1,000,000,000 points"):
+            call()
+    with pytest.raises(ValueError, match="this would build"):
+        hypersphere_freudenthal(1e-300)
+    with pytest.raises(ValueError, match="this would build"):
+        torus_grid(10**6)
+
+
+def test_raw_errors_become_clear_errors():
+    from thesis_lib.meshes import crust, extract_manifold, orient_outward
+
+    x = np.eye(3)
+    # out-of-range and negative indices were IndexError (or silently wrapped)
+    with pytest.raises(ValueError, match="vertex index outside"):
+        orient_outward(x, [[0, 1, 5]])
+    with pytest.raises(ValueError, match="vertex index outside"):
+        orient_outward(x, [[0, 1, -1]])
+    with pytest.raises(ValueError, match="3 vertices per row"):
+        orient_outward(x, [[0, 1]])
+    with pytest.raises(ValueError, match="centre"):
+        orient_outward(x, [[0, 1, 2]], centre=[0.0, 1.0])
+    # coplanar points: QhullError before
+    flat = np.column_stack([np.random.default_rng(0).random((20, 2)), np.zeros(20)])
+    with pytest.raises(ValueError, match="hyperplane"):
+        convex_hull_surface(flat)
+    with pytest.raises(ValueError, match="lie in a plane"):
+        crust(flat)
+    with pytest.raises(ValueError, match="R³"):
+        crust(np.random.default_rng(0).random((20, 2)))
+    with pytest.raises(ValueError, match="theta"):
+        crust(np.random.default_rng(0).random((20, 3)), theta=2.0)
+    with pytest.raises(ValueError, match="vertex index outside"):
+        extract_manifold(np.random.default_rng(0).random((5, 3)), [[0, 1, 9]])
+
+
 def test_plotting_bad_input():
     from thesis_lib.meshes import mesh_figure, render_mesh
 
@@ -214,3 +255,64 @@ def test_plotting_bad_input():
         mesh_figure([])
     with pytest.raises(ValueError, match=r"\(n, 3\)"):
         render_mesh(np.zeros((4, 2)), np.array([[0, 1, 2]]))
+
+
+# ------------------------------------------------------------------------- mesh files and pyvista (issue 13)
+@pytest.mark.parametrize("suffix, exact", [(".vtk", True), (".vtp", True), (".ply", False), (".stl", False),
+                                           (".obj", False)])
+def test_mesh_files_round_trip(tmp_path, suffix, exact):
+    from thesis_lib.curvature import mean_curvature
+    from thesis_lib.meshes import read_mesh, write_mesh
+
+    V, F = torus_grid(12)
+    path = write_mesh(tmp_path / f"torus{suffix}", V, F)
+    assert path.exists() and not list(tmp_path.glob(".torus-*"))  # no temporary file left behind
+    V2, F2 = read_mesh(path)
+    if exact:
+        np.testing.assert_array_equal(V2, V)
+        np.testing.assert_array_equal(F2, F)
+    else:  # float32 formats; STL and OBJ may renumber the vertices: compare the faces' corners
+        assert len(F2) == len(F)
+        np.testing.assert_allclose(np.sort(V2[F2].reshape(len(F2), -1), axis=0),
+                                   np.sort(V[F].reshape(len(F), -1), axis=0), rtol=1e-6, atol=1e-5)
+    # what comes back is usable as is: the same mean curvature (up to the float32 rounding)
+    h, h2 = mean_curvature(V, F), mean_curvature(V2, F2)
+    np.testing.assert_allclose(np.sort(h2), np.sort(h), rtol=1e-4, atol=1e-4 * h.max())
+
+
+def test_pyvista_round_trip_and_triangulation():
+    pv = pytest.importorskip("pyvista")
+    from thesis_lib.meshes import from_pyvista, to_pyvista
+
+    V, F = torus_grid(8)
+    mesh = to_pyvista(V, F)
+    assert isinstance(mesh, pv.PolyData) and mesh.n_points == len(V) and mesh.n_cells == len(F)
+    V2, F2 = from_pyvista(mesh)
+    np.testing.assert_array_equal(V2, V)
+    np.testing.assert_array_equal(F2, F)  # orientation (row order) kept
+    # a user's mesh with quadrilaterals and a volume grid: triangulated / surface taken
+    V3, F3 = from_pyvista(pv.Plane(i_resolution=3, j_resolution=2))
+    assert F3.shape == (12, 3) and V3.shape == (12, 3)
+    V4, F4 = from_pyvista(pv.Cube().triangulate().delaunay_3d())
+    assert F4.shape[1] == 3 and len(F4) >= 12
+
+
+def test_mesh_io_bad_input(tmp_path):
+    from thesis_lib.meshes import from_pyvista, read_mesh, to_pyvista, write_mesh
+
+    V, F = torus_grid(5)
+    with pytest.raises(FileNotFoundError, match="no mesh file"):
+        read_mesh(tmp_path / "missing.vtk")
+    (tmp_path / "broken.vtk").write_text("not a mesh")
+    with pytest.raises(ValueError):
+        read_mesh(tmp_path / "broken.vtk")
+    with pytest.raises(ValueError, match="suffix"):
+        write_mesh(tmp_path / "torus", V, F)
+    with pytest.raises(FileNotFoundError, match="no folder"):
+        write_mesh(tmp_path / "nowhere" / "t.vtk", V, F)
+    with pytest.raises(ValueError, match="R³"):
+        to_pyvista(V[:, :2], F)
+    with pytest.raises(ValueError, match="vertex index outside"):
+        to_pyvista(V, F + len(V))
+    with pytest.raises(TypeError, match="pyvista mesh"):
+        from_pyvista((V, F))

@@ -29,9 +29,26 @@ def test_ci_runs_exactly_the_readme_test_command():
     assert all(l.startswith(("set ", "cd ")) for l in lines[:-1])
 
 
+def test_book_workflow_runs_the_readme_book_command_and_publishes_the_site():
+    workflow = yaml.safe_load((ROOT / ".github" / "workflows" / "book.yml").read_text())
+    steps = [step for job in workflow["jobs"].values() for step in job.get("steps", [])]
+    runs = [step["run"].strip() for step in steps if "run" in step]
+    assert _readme_commands()[0] in runs
+    uploads = [step for step in steps if step.get("uses", "").startswith("actions/upload-pages-artifact@")]
+    assert [u["with"]["path"] for u in uploads] == ["book/_build/html"]
+    assert any(step.get("uses", "").startswith("actions/deploy-pages@") for step in steps)
+    assert workflow["permissions"]["pages"] == "write" and workflow["permissions"]["id-token"] == "write"
+
+
+def test_licence_is_an_spdx_expression():
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert isinstance(project["license"], str) and project["license"] == yaml.safe_load((ROOT / "CITATION.cff").read_text())["license"]
+    assert all((ROOT / f).is_file() for f in project.get("license-files", []))
+
+
 def test_makefile_targets_exist():
     text = (ROOT / "Makefile").read_text()
-    for target in ["book", "test", "experiments", "sweep", "bench", "clean"]:
+    for target in ["book", "test", "experiments", "sweep", "bench", "clean", "install"]:
         assert re.search(rf"^{target}:", text, re.M), target
 
 

@@ -6,7 +6,14 @@ import numpy as np
 import pytest
 
 from thesis_lib.lab.paths import shared_dir
-from thesis_lib.applications.proteins import Atoms, read_pdb, resolve_structure, vdw_radii, weighted_points
+from thesis_lib.applications.proteins import (
+    Atoms,
+    discretise_intervals,
+    read_pdb,
+    resolve_structure,
+    vdw_radii,
+    weighted_points,
+)
 
 PDB = shared_dir() / "data" / "pdb"
 pytestmark = pytest.mark.skipif(not (PDB / "1eca.pdb").is_file(), reason="shared PDB files not present")
@@ -167,7 +174,7 @@ def test_single_radii_and_water_fallback():
     water = atoms.res_names == "HOH"
     assert np.all(fallback[water]) and np.allclose(protor[water], 1.52)
     with pytest.raises(ValueError, match="radius set"):
-        vdw_radii(atoms, set="bondi")
+        vdw_radii(atoms, set="vdw")
     with pytest.raises(ValueError, match="Atoms"):
         vdw_radii(atoms.coords)
 
@@ -215,15 +222,43 @@ def test_discretise_intervals_on_a_grid():
         discretise_intervals([[1.0, 0.5]], 0.1)
 
 
-def test_count_bars():
-    from thesis_lib.applications.proteins import count_bars
+def test_bondi_radii_equal_mantina_for_protein_elements_and_fall_back_for_iron():
+    from thesis_lib.applications.proteins import BONDI_RADII
 
-    iv = np.array([[0.0, 0.02], [0.0, 0.03], [0.1, 0.5], [0.2, np.inf]])
-    assert count_bars(iv) == 4
-    assert count_bars(iv, 0.03) == 3
-    assert count_bars(iv, 1.0) == 1
-    with pytest.raises(ValueError, match="min_length"):
-        count_bars(iv, -1)
+    atoms = read_pdb(PDB / "1eca.pdb", waters=True)
+    bondi, fallback = vdw_radii(atoms, set="bondi", return_fallback=True)
+    single = vdw_radii(atoms, set="single")
+    # Bondi (1964): C 1.70, N 1.55, O 1.52, S 1.80; Mantina et al. (2009) kept these values.
+    for el, r in {"C": 1.70, "N": 1.55, "O": 1.52, "S": 1.80}.items():
+        np.testing.assert_allclose(bondi[atoms.elements == el], r)
+    assert fallback.tolist() == (atoms.elements == "FE").tolist()  # Bondi lists no iron
+    np.testing.assert_array_equal(bondi, single)
+    assert BONDI_RADII["H"] == 1.20  # where the two tables differ (Mantina: 1.10)
+
+
+def test_sampled_barcodes_invisible_bars_and_readings():
+    from thesis_lib.applications.proteins import invisible_bars, sample_barcode, void_count_readings
+
+    iv = np.array([[0.01, 0.015], [0.021, 0.039], [0.011, 0.05], [0.3, np.inf]])
+    # On the 0.02 grid only [0.011, 0.05) and [0.3, ...) hold a sample; on the 0.005 grid all four do.
+    assert invisible_bars(iv, 0.02, 0.005, (0.0, 0.5)) == 2
+    assert invisible_bars(iv[2:], 0.02, 0.005, (0.0, 0.5)) == 0
+    assert invisible_bars(iv, 0.02, 0.02, (0.0, 0.5)) == 0
+    with pytest.raises(ValueError, match="increment"):
+        invisible_bars(iv, 0.02, 0.0, (0.0, 0.5))
+    # Radius grid: steps of 0.1 in ε = sqrt(ε²); [0.01, 0.04) in ε² is [0.1, 0.2) in ε.
+    np.testing.assert_allclose(sample_barcode([[0.01, 0.04]], 0.1, (0.0, 1.0), grid="radius"), [[0.01, 0.04]])
+    assert len(sample_barcode([[0.012, 0.015]], 0.1, (0.0, 1.0), grid="radius")) == 0
+    np.testing.assert_array_equal(sample_barcode(iv, 0.02, (0.0, 0.5)), discretise_intervals(iv, 0.02, (0.0, 0.5)))
+    with pytest.raises(ValueError, match="grid"):
+        sample_barcode(iv, 0.02, (0.0, 0.5), grid="log")
+    rows = void_count_readings(iv, [0.5, 1.0], increments=(0.02, 0.005, 0.05), min_length=0.03)
+    assert len(rows) == 2 * 2 * 2
+    first = rows[0]
+    assert (first["grid"], first["length"], first["window_end"]) == ("squared", "squared", 0.5)
+    assert (first["n_0.02"], first["n_0.005"], first["n_0.05"]) == (2, 4, 1)  # 0.05 falls just past [0.011, 0.05)
+    # On a 0.05 grid every bar is at least 0.05 long: a 0.03 threshold removes nothing.
+    assert first["long"] == first["n_0.05"]
 
 
 def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():

@@ -11,12 +11,13 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pytest
 
-from thesis_lib.lab.results import DEFAULT_RUN_ENV, Recorder, load
+from thesis_lib.lab.results import DEFAULT_RUN_ENV, RESULT_DIGITS, Recorder, ResultsError, load, round_sig
 
 
 def test_record_writes_flat_numbers(tmp_path):
     rec = Recorder("demo", tmp_path)
-    rec.record(a=1, b=np.float64(2.5), c=np.int64(3), ok=True)
+    assert rec.record(a=1, b=np.float64(2.5), c=np.int64(3), ok=True) is None  # a cell ending in record() shows nothing
+    assert rec.results == {"a": 1, "b": 2.5, "c": 3, "ok": 1}
     assert json.loads((tmp_path / "results.json").read_text()) == {"a": 1, "b": 2.5, "c": 3, "ok": 1}
     assert load("demo", tmp_path) == {"a": 1, "b": 2.5, "c": 3, "ok": 1}
 
@@ -78,3 +79,55 @@ def test_default_run_redirect_leaves_stored_results_alone(tmp_path, monkeypatch)
     Recorder("demo", "").record(rerun=2)
     assert load("demo") == {"stored": 1}
     assert load("demo", tmp_path / "scratch" / "demo") == {"rerun": 2}
+
+
+def test_reals_are_rounded_to_result_digits_and_counts_kept_exact(tmp_path):
+    assert RESULT_DIGITS == 10
+    rec = Recorder("demo", tmp_path)
+    rec.record(third=1 / 3, big=123456789012345.678, tiny=-2.718281828459045e-12, count=2**62 + 1,
+               zero=0.0, nan=float("nan"))
+    text = (tmp_path / "results.json").read_text()
+    stored = json.loads(text)
+    assert stored["third"] == 0.3333333333 and stored["big"] == 123456789000000.0
+    assert stored["tiny"] == -2.718281828e-12 and stored["count"] == 2**62 + 1 and stored["zero"] == 0.0
+    assert "NaN" in text
+    # the last digits that BLAS or the CPU may change are not stored: perturbed values write the same bytes
+    rec.record(third=1 / 3 * (1 + 1e-13))
+    assert (tmp_path / "results.json").read_text() == text
+
+
+@pytest.mark.parametrize("x, digits, expected", [(0.012345, 2, 0.012), (98765.0, 3, 98800.0), (-1.5e-300, 1, -2e-300),
+                                                 (0.0, 3, 0.0), (float("inf"), 2, float("inf"))])
+def test_round_sig(x, digits, expected):
+    assert round_sig(x, digits) == expected
+
+
+def test_results_are_written_atomically(tmp_path, monkeypatch):
+    """A reader never sees a half-written results.json: it is replaced in one step."""
+    rec = Recorder("demo", tmp_path)
+    rec.record(a=1)
+    import os
+
+    replaced = []
+    real_replace = os.replace
+    monkeypatch.setattr(os, "replace", lambda src, dst: (replaced.append((src, dst)), real_replace(src, dst)))
+    rec.record(b=2)
+    assert [str(dst) for _, dst in replaced] == [str(tmp_path / "results.json")]
+    assert load("demo", tmp_path) == {"a": 1, "b": 2}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["results.json"]
+
+
+@pytest.mark.parametrize("text", ['{"a": 1, "b":', "", "[1, 2]", '{"a": "x"}', '{"a": {"b": 1}}', "\udcff"])
+def test_corrupt_results_give_a_clear_error(tmp_path, text):
+    """Regression (issue 11): a truncated results.json raised a raw JSONDecodeError."""
+    (tmp_path / "results.json").write_text(text, errors="surrogateescape")
+    with pytest.raises(ResultsError, match="results.json (is not valid JSON|must hold a flat JSON object).*restore it"):
+        load("demo", tmp_path)
+
+
+@pytest.mark.parametrize("name", ["..", ".", "", "a/b", "../x", "a\\b", "a\x00b", 3, None])
+def test_results_names_cannot_leave_the_results_folder(name):
+    from thesis_lib.lab.results import results_dir
+
+    with pytest.raises(ValueError, match="invalid experiment name"):
+        results_dir(name)

@@ -35,6 +35,10 @@ __all__ = [
     "MAX_PRIME",
     "MAX_EXACT_PRIME",
     "MAX_SIMPLICES",
+    "check_real",
+    "check_indices",
+    "check_simplices",
+    "resolve_alias",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -110,6 +114,8 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
     Thesis: §2.1.2 (a point set X in R^d).
     """
     try:
+        if np.iscomplexobj(points):
+            raise TypeError("complex numbers are not coordinates")
         arr = np.asarray(points, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise InvalidTypeError(f"{name} must be an (n, d) array of numbers: {err}") from None
@@ -133,6 +139,8 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
 def check_weights(weights, n: int) -> np.ndarray:
     """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
     try:
+        if np.iscomplexobj(weights):
+            raise TypeError("complex numbers are not weights")
         w = np.asarray(weights, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise InvalidTypeError(f"weights must be an array of numbers: {err}") from None
@@ -225,3 +233,94 @@ def resolve_coefficients(coefficients, p, *, default: int, field: bool = False, 
     if coefficients is None:
         coefficients = default
     return check_coefficients(coefficients, field=field, max_prime=max_prime)
+
+
+# ---------------------------------------------------------------------------------------- geometry
+# (numbers, index arrays and simplex arrays for the complexes, curvature and meshes)
+def check_real(value, name: str, *, minimum: float | None = None, positive: bool = False,
+               finite: bool = True) -> float:
+    """A real number as a float: not a bool or a string, not NaN, finite unless ``finite=False``,
+    ``> 0`` with ``positive``, ``>= minimum`` when given."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise InvalidTypeError(f"{name} must be a number, got {value!r}")
+    x = float(value)
+    if math.isnan(x):
+        raise ValueError(f"{name} is NaN")
+    if finite and math.isinf(x):
+        raise ValueError(f"{name} must be finite, got {x}")
+    if positive and not x > 0:
+        raise ValueError(f"{name} must be positive, got {x}")
+    if minimum is not None and x < minimum:
+        raise ValueError(f"{name} must be >= {minimum}, got {x}")
+    return x
+
+
+def check_indices(indices, n: int, name: str, *, unique: bool = False, allow_empty: bool = False) -> np.ndarray:
+    """A 1-D array of integer indices into ``n`` items (0..n-1; negative indices are refused)."""
+    arr = np.asarray(indices)
+    if arr.ndim != 1:
+        raise ValueError(f"{name} must be a 1-D array of indices, got shape {arr.shape}")
+    if arr.size == 0:
+        if allow_empty:
+            return np.empty(0, dtype=np.int64)
+        raise ValueError(f"{name} is empty")
+    if arr.dtype == bool or not np.issubdtype(arr.dtype, np.integer):
+        raise InvalidTypeError(f"{name} must be integer indices, got dtype {arr.dtype}")
+    arr = arr.astype(np.int64)
+    bad = (arr < 0) | (arr >= n)
+    if bad.any():
+        raise ValueError(f"{name} must be indices in 0..{n - 1}; entry {int(np.argmax(bad))} is {int(arr[np.argmax(bad)])}")
+    if unique and np.unique(arr).size != arr.size:
+        raise ValueError(f"{name} repeat an index")
+    return arr
+
+
+def check_simplices(simplices, n_vertices: int | None = None, name: str = "simplices", *,
+                    width: int | None = None, allow_empty: bool = False) -> np.ndarray:
+    """An ``(m, k)`` int64 array of vertex indices (each row one simplex, in the given order).
+
+    Integral floats are accepted; indices must be >= 0 and < ``n_vertices`` when given; ``width``
+    fixes k; a row may not repeat a vertex.
+    """
+    try:
+        arr = np.asarray(simplices)
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"{name} must be an (m, k) array of vertex indices: {err}") from None
+    if arr.ndim != 2 or arr.shape[1] == 0:
+        raise ValueError(f"{name} must be an (m, k) array of vertex indices, got shape {arr.shape}")
+    if width is not None and arr.shape[1] != width:
+        raise ValueError(f"{name} must have {width} vertices per row, got {arr.shape[1]}")
+    if arr.shape[0] == 0 and not allow_empty:
+        raise ValueError(f"{name} is empty")
+    if arr.dtype == bool or not (np.issubdtype(arr.dtype, np.integer) or np.issubdtype(arr.dtype, np.floating)):
+        raise InvalidTypeError(f"{name} must hold integer vertex indices, got dtype {arr.dtype}")
+    if not np.issubdtype(arr.dtype, np.integer):
+        if not np.all(np.isfinite(arr)) or not np.all(arr == np.round(arr)):
+            raise ValueError(f"{name} must hold integer vertex indices")
+    arr = arr.astype(np.int64)
+    if arr.size:
+        bad = (arr < 0) if n_vertices is None else (arr < 0) | (arr >= n_vertices)
+        if bad.any():
+            row = int(np.flatnonzero(bad.any(axis=1))[0])
+            where = "negative" if n_vertices is None else f"outside 0..{n_vertices - 1}"
+            raise ValueError(f"{name}: row {row} {arr[row].tolist()} has a vertex index {where}")
+        srt = np.sort(arr, axis=1)
+        rep = np.any(srt[:, 1:] == srt[:, :-1], axis=1)
+        if rep.any():
+            row = int(np.argmax(rep))
+            raise ValueError(f"{name}: row {row} {arr[row].tolist()} repeats a vertex")
+    return arr
+
+
+def resolve_alias(value, alias, *, name: str, alias_name: str, default, hint: str = "", stacklevel: int = 3):
+    """``value``, or the deprecated keyword ``alias`` (with a ``FutureWarning``) when only that is given.
+
+    Call as ``resolve_alias(area, kind, name="area", alias_name="kind", default="mixed")`` from a
+    public function whose signature keeps ``kind=None`` one release for old callers.
+    """
+    if alias is not None:
+        if value is not None:
+            raise InvalidTypeError(f"give {name}= only ({alias_name}= is its deprecated alias), not both")
+        warnings.warn(f"{alias_name}= is deprecated{hint}; use {name}=", FutureWarning, stacklevel=stacklevel)
+        value = alias
+    return default if value is None else value

@@ -8,7 +8,7 @@ from functools import cached_property
 import numpy as np
 
 from ._validate import InvalidTypeError, vertex_label
-from .simplicial import as_simplex_array, closure, find_rows, facets, group_by_dimension
+from .simplicial import as_simplex_array, closure, group_by_dimension
 
 __all__ = ["Filtration", "as_complex"]
 
@@ -186,8 +186,9 @@ class Filtration:
             raise ValueError(f"no facets for dimension {d} in a filtration of dimension {self.dimension}")
         cache = self.__dict__.setdefault("_facet_cache", {})
         if d not in cache:
-            s = self.simplices[d]
-            cache[d] = find_rows(self.simplices[d - 1], facets(s).reshape(-1, d)).reshape(s.shape[0], d + 1)
+            from .facet_lookup import facet_indices  # numba kernels: loaded when first needed
+
+            cache[d] = facet_indices(self.simplices[d - 1], self.simplices[d])
         return cache[d]
 
     @cached_property

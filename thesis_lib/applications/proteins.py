@@ -37,7 +37,10 @@ __all__ = [
     "resolve_structure",
     "protein_filtration",
     "discretise_intervals",
-    "count_bars",
+    "sample_barcode",
+    "invisible_bars",
+    "void_count_readings",
+    "BONDI_RADII",
     "space_filling_image",
     "WATER_NAMES",
     "ELEMENT_COLORS",
@@ -258,20 +261,50 @@ def read_pdb(
 
 
 # --------------------------------------------------------------------------- radii and weights
+#: Van der Waals radii (Å) of A. Bondi, "van der Waals Volumes and Radii", J. Phys. Chem. 68 (1964)
+#: 441–451, Table I (the elements it lists that occur in proteins and their ligands).  biotite's
+#: single-element table (``set="single"``) is Mantina et al. (2009), which keeps Bondi's values for
+#: C, N, O, P and S and differs for H (1.10) and for elements Bondi does not list (Fe).
+BONDI_RADII = {
+    "H": 1.20, "C": 1.70, "N": 1.55, "O": 1.52, "F": 1.47, "P": 1.80, "S": 1.80, "CL": 1.75,
+    "SE": 1.90, "BR": 1.85, "I": 1.98,
+}  # fmt: skip
+
+RADII_SETS = ("protor", "bondi", "single")
+
+
+def _element_radii(elements: np.ndarray, table) -> np.ndarray:
+    """Radius of every element from ``table`` (a dict or a function of the symbol); NaN where absent."""
+    symbols, inverse = np.unique(elements, return_inverse=True)
+    lookup = table.get if isinstance(table, dict) else table
+    values = [lookup(str(e)) for e in symbols]
+    return np.array([np.nan if r is None else r for r in values], dtype=np.float64)[np.asarray(inverse).reshape(-1)]
+
+
 def vdw_radii(
     atoms: Atoms, set: str = "protor", return_fallback: bool = False
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """Van der Waals radius (Å) of every atom.
 
-    Thesis: §2.2.2 (the radius of an atom depends on its chemical environment; the thesis used
-    ESBTL's radii, here the ProtOr united-atom radii of Tsai et al. 1999).
+    Thesis: §2.2.2 (the radius of an atom depends on its chemical environment; the thesis took its
+    radii from ESBTL, whose default classifier loads the table of Tsai et al. 1999, i.e. ProtOr).
 
-    ``set="protor"`` uses :func:`biotite.structure.info.vdw_radius_protor` (heavy atom plus its
-    bonded hydrogens, from the residue's entry in the Chemical Component Dictionary).  When ProtOr has
-    no radius for an atom (waters, metal ions, sulfate, atom names unknown to the dictionary) the
-    single-element radius :func:`biotite.structure.info.vdw_radius_single` is used instead;
-    ``return_fallback=True`` also returns the boolean mask of those atoms.  ``set="single"`` uses the
-    single-element radii for all atoms.
+    Parameters
+    ----------
+    atoms : an :class:`Atoms` record from :func:`read_pdb`.
+    set : the radius table.  ``"protor"``: the ProtOr united-atom radii of Tsai et al. (1999)
+        (heavy atom plus its bonded hydrogens, from the residue's entry in the Chemical Component
+        Dictionary, :func:`biotite.structure.info.vdw_radius_protor`), the table ESBTL loads by
+        default.  ``"bondi"``: Bondi's (1964) element radii, :data:`BONDI_RADII`.  ``"single"``:
+        biotite's single-element radii (Mantina et al. 2009).
+    return_fallback : also return the boolean mask of the atoms whose radius came from the
+        single-element table because the chosen table has none (ProtOr: waters, metal ions,
+        sulfate, atom names unknown to the dictionary; Bondi: iron).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``(n,)`` radii, and the ``(n,)`` fallback mask if ``return_fallback``.
 
     Raises
     ------
@@ -280,13 +313,11 @@ def vdw_radii(
     """
     import biotite.structure.info as info
 
-    if set not in ("protor", "single"):
-        raise ValueError(f"radius set must be 'protor' or 'single', got {set!r}")
+    if set not in RADII_SETS:
+        raise ValueError(f"radius set must be one of {', '.join(RADII_SETS)}, got {set!r}")
     if not isinstance(atoms, Atoms):
         raise ValueError(f"atoms must be an Atoms record from read_pdb, got {type(atoms).__name__}")
     n = len(atoms)
-    radii = np.full(n, np.nan)
-    fallback = np.zeros(n, dtype=bool)
     if set == "protor":
         pairs, inverse = np.unique(
             np.stack([atoms.res_names, atoms.atom_names], axis=1), axis=0, return_inverse=True
@@ -300,12 +331,12 @@ def vdw_radii(
             if r is not None:
                 table[i] = r
         radii = table[np.asarray(inverse).reshape(-1)]
-        fallback = np.isnan(radii)
+    elif set == "bondi":
+        radii = _element_radii(atoms.elements, BONDI_RADII)
     else:
-        fallback[:] = True
-    elements, inverse = np.unique(atoms.elements, return_inverse=True)
-    table = [info.vdw_radius_single(str(e)) for e in elements]
-    single = np.array([np.nan if r is None else r for r in table], dtype=np.float64)[np.asarray(inverse).reshape(-1)]
+        radii = np.full(n, np.nan)
+    fallback = np.isnan(radii)
+    single = _element_radii(atoms.elements, info.vdw_radius_single)
     missing = fallback & np.isnan(single)
     if np.any(missing):
         bad = sorted({str(e) for e in atoms.elements[missing]})
@@ -352,6 +383,25 @@ def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0) -> Fil
     return alpha(points, weights)
 
 
+def _snap(intervals: np.ndarray, increment: float, window: tuple[float, float]) -> tuple[np.ndarray, np.ndarray]:
+    """Each interval snapped to the grid ``lo + j·increment`` and clipped to the window, and the mask
+    of those a sample falls in (the others vanish on the grid)."""
+    iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
+    if not (np.isfinite(increment) and increment > 0):
+        raise ValueError(f"increment must be a positive number, got {increment!r}")
+    lo, hi = (float(window[0]), float(window[1]))
+    if not (np.isfinite(lo) and hi > lo):
+        raise ValueError(f"window must be (lo, hi) with a finite lo < hi, got {window!r}")
+    if np.any(np.isnan(iv)) or np.any(iv[:, 1] < iv[:, 0]):
+        raise ValueError("intervals must be (birth, death) pairs with birth <= death and no NaN")
+    meets = (iv[:, 0] < hi) & (iv[:, 1] > lo)
+    clipped = np.clip(iv, lo, hi)
+    with np.errstate(invalid="ignore"):
+        steps = np.ceil(np.round((clipped - lo) / increment, 9))
+    snapped = np.where(np.isinf(clipped), clipped, lo + steps * increment)
+    return snapped, meets & (snapped[:, 1] > snapped[:, 0])
+
+
 def discretise_intervals(
     intervals: np.ndarray, increment: float, window: tuple[float, float] = (0.0, np.inf)
 ) -> np.ndarray:
@@ -366,32 +416,85 @@ def discretise_intervals(
     Since persistence pairs do not change under a monotone re-indexing of a filtration, this is the
     barcode of the sampled filtration.
     """
-    iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
-    if not (np.isfinite(increment) and increment > 0):
-        raise ValueError(f"increment must be a positive number, got {increment!r}")
-    lo, hi = (float(window[0]), float(window[1]))
-    if not (np.isfinite(lo) and hi > lo):
-        raise ValueError(f"window must be (lo, hi) with a finite lo < hi, got {window!r}")
-    if np.any(np.isnan(iv)) or np.any(iv[:, 1] < iv[:, 0]):
-        raise ValueError("intervals must be (birth, death) pairs with birth <= death and no NaN")
-    keep = (iv[:, 0] < hi) & (iv[:, 1] > lo)
-    iv = np.clip(iv[keep], lo, hi)
-    with np.errstate(invalid="ignore"):
-        steps = np.ceil(np.round((iv - lo) / increment, 9))
-    snapped = np.where(np.isinf(iv), iv, lo + steps * increment)
-    return snapped[snapped[:, 1] > snapped[:, 0]]
+    snapped, seen = _snap(intervals, increment, window)
+    return snapped[seen]
 
 
-def count_bars(intervals: np.ndarray, min_length: float = 0.0) -> int:
-    """Number of bars of length at least ``min_length`` (infinite bars always count).
+def sample_barcode(
+    intervals: np.ndarray, increment: float, window: tuple[float, float], *, grid: str = "squared"
+) -> np.ndarray:
+    """Bars of an alpha filtration (values ε²) sampled every ``increment`` of ε² or of ε, in ε² units.
 
-    Thesis: §2.4.2, Example 2.43 ("ignoring bars with length less than 0.03").
+    Thesis: §2.4.2, Example 2.43 (filtration increments).
+
+    ``grid="squared"`` samples at ε² = lo, lo + Δ, ... (:func:`discretise_intervals`);
+    ``grid="radius"`` samples at ε = sqrt(lo), sqrt(lo) + Δ, ... (the thesis does not say which of the
+    two its increments step), then maps the sample values back to ε².  Values below 0 are clipped
+    to 0 under the radius grid (ε² < 0 has no radius).
     """
+    if grid == "squared":
+        return discretise_intervals(intervals, increment, window)
+    if grid != "radius":
+        raise ValueError(f"grid must be 'squared' or 'radius', got {grid!r}")
     iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
-    if not (np.isfinite(min_length) and min_length >= 0):
-        raise ValueError(f"min_length must be a non-negative number, got {min_length!r}")
-    length = iv[:, 1] - iv[:, 0]
-    return int(np.count_nonzero(length >= min_length - 1e-12))
+    lo, hi = float(window[0]), float(window[1])
+    root = np.sqrt(np.clip(iv, 0.0, None))
+    sampled = discretise_intervals(root, increment, (np.sqrt(max(lo, 0.0)), np.sqrt(max(hi, 0.0))))
+    return sampled**2
+
+
+def invisible_bars(
+    intervals: np.ndarray, increment: float, finer: float, window: tuple[float, float]
+) -> int:
+    """Number of bars seen when sampling every ``finer`` but not when sampling every ``increment``.
+
+    Thesis: §2.4.2, Example 2.43 ("by refining the increments we detect new holes").
+
+    A bar [b, d) is seen on a grid when a sample falls in it (:func:`discretise_intervals`); a bar
+    seen on the finer grid but born and dead between two samples of the coarser one is a hole that
+    only the finer increments detect.  The count is 0 when refining detects nothing new (and when
+    the two increments are equal).
+    """
+    _, seen_fine = _snap(intervals, finer, window)
+    _, seen_coarse = _snap(intervals, increment, window)
+    return int(np.count_nonzero(seen_fine & ~seen_coarse))
+
+
+def void_count_readings(
+    intervals: np.ndarray,
+    window_ends: np.ndarray,
+    *,
+    increments: tuple[float, float, float] = (0.02, 0.005, 0.05),
+    min_length: float = 0.03,
+    lo: float = 0.0,
+) -> list[dict[str, float | int | str]]:
+    """Dimension-2 bar counts under every reading of Example 2.43's procedure, one row per reading.
+
+    Thesis: §2.4.2, Example 2.43 (12 generators at increments 0.02, more at 0.005, 16 at 0.05 of
+    which 9 are at least 0.03 long).
+
+    A reading is a sampling grid (``"squared"``: steps of ε²; ``"radius"``: steps of ε, see
+    :func:`sample_barcode`), a unit in which bar lengths are compared with ``min_length``
+    (``"squared"`` or ``"radius"``) and a window ``[lo, t]`` for each ``t`` in ``window_ends``.  Each
+    row holds the reading and the counts ``n_<increment>`` of bars at each increment and
+    ``long`` (bars at the last increment at least ``min_length`` long, by
+    :func:`thesis_lib.persistence.long_bars`).
+    """
+    from ..persistence import Barcode, long_bars
+
+    rows = []
+    for grid in ("squared", "radius"):
+        for unit in ("squared", "radius"):
+            for t in np.asarray(window_ends, dtype=np.float64):
+                row: dict[str, float | int | str] = {"grid": grid, "length": unit, "window_end": float(t)}
+                sampled = {inc: sample_barcode(intervals, inc, (lo, float(t)), grid=grid) for inc in increments}
+                for inc in increments:
+                    row[f"n_{inc:g}"] = len(sampled[inc])
+                last = sampled[increments[-1]]
+                shown = last if unit == "squared" else np.sqrt(np.clip(last, 0.0, None))
+                row["long"] = int(len(long_bars(Barcode({2: shown}), 2, min_length)))
+                rows.append(row)
+    return rows
 
 
 # --------------------------------------------------------------------------- rendering

@@ -23,14 +23,15 @@ The pipeline then follows Adams–Carlsson (after Lee–Pedersen–Mumford 2003)
 4. :func:`normalise`: subtract the patch mean and divide by the Euclidean norm, which puts the patches
    on the unit sphere S^{n²−2} of the mean-zero hyperplane (thesis: "mapped to the unit sphere by
    dividing each vector by its Euclidean norm");
-5. :func:`density_filter`: X(k, p), the p % of points with the smallest distance to their k-th
-   nearest neighbour (the thesis's X⁵(300, 30));
+5. :func:`density_filter`: X(k, percent), the ``percent`` % of points with the smallest distance to
+   their k-th nearest neighbour (the thesis's X⁵(300, 30));
 6. :func:`dct_basis` and :func:`gradient_projection`: coordinates in the orthonormal 2-D DCT-II basis
    and the projection onto its two linear-gradient vectors (horizontal and vertical, Figure 2.23).
 """
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Sequence
 
 import numpy as np
@@ -398,18 +399,42 @@ def kth_neighbour_distance(X: np.ndarray, k: int) -> np.ndarray:
     return out
 
 
+def _resolve_percent(percent, p, default: float | None) -> float:
+    """The ``percent`` argument, honouring its deprecated alias ``p=`` with a ``FutureWarning``."""
+    if p is not None:
+        if percent is not None:
+            raise ValueError("give percent= only (p= is its deprecated alias), not both")
+        warnings.warn("p= is deprecated here; use percent= (a percentage in (0, 100])", FutureWarning, stacklevel=3)
+        percent = p
+    if percent is None:
+        if default is None:
+            raise ValueError("percent is required: the percentage of densest points to keep")
+        percent = default
+    if isinstance(percent, bool) or not isinstance(percent, (int, float, np.integer, np.floating)) \
+            or not (0 < percent <= 100):
+        raise ValueError(f"percent is a percentage in (0, 100], got {percent!r}")
+    return float(percent)
+
+
 def density_filter(
-    X: np.ndarray, k: int, p: float, return_index: bool = False
+    X: np.ndarray, k: int, percent: float | None = None, return_index: bool = False, *, p: float | None = None
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
-    """X(k, p): the p percent of points with the smallest distance to their k-th nearest neighbour.
+    """X(k, percent): the ``percent`` % of points with the smallest distance to their k-th nearest neighbour.
 
     Thesis: §2.4.3 (the top 30 % densest points by the 300th neighbour give X⁵(300, 30)).
     Ties are broken by position; indices are returned in increasing order.
+
+    Parameters
+    ----------
+    X : ``(n, d)`` points.
+    k : the neighbour whose distance measures density (the point itself is not counted).
+    percent : the percentage of points kept, in (0, 100].
+    return_index : also return the indices of the kept points.
+    p : deprecated alias of ``percent`` (one release; warns).
     """
-    if not (0 < p <= 100):
-        raise ValueError(f"p is a percentage in (0, 100], got {p!r}")
+    percent = _resolve_percent(percent, p, None)
     rho = kth_neighbour_distance(X, k)
-    m = max(1, int(round(p / 100 * rho.shape[0])))
+    m = max(1, int(round(percent / 100 * rho.shape[0])))
     idx = np.sort(np.argsort(rho, kind="stable")[:m])
     out = np.asarray(X, dtype=np.float64)[idx]
     return (out, idx) if return_index else out
@@ -456,19 +481,23 @@ def range_patch_space(
     images: Sequence[np.ndarray],
     n_patches: int,
     k: int = 300,
-    p: float = 30.0,
+    percent: float | None = None,
     size: int = 5,
     top: float = 0.2,
     seed: int = 0,
+    *,
+    p: float | None = None,
 ) -> dict[str, np.ndarray]:
-    """The whole pipeline of Adams–Carlsson: sample, log range, keep high contrast, normalise, X(k, p).
+    """The whole pipeline of Adams–Carlsson: sample, log range, keep high contrast, normalise, X(k, percent).
 
     Thesis: §2.4.3 (the point set X⁵(300, 30) of Figure 2.22).
 
+    ``percent`` defaults to 30 (the thesis's X⁵(300, 30)); ``p=`` is its deprecated alias.
     Returns a dict with ``patches`` (the sampled log-range patches), ``high`` (the normalised
-    high-contrast patches, on the unit sphere) and ``dense`` (X(k, p)).
+    high-contrast patches, on the unit sphere) and ``dense`` (X(k, percent)).
     """
+    percent = _resolve_percent(percent, p, 30.0)
     raw = sample_patches(images, n_patches, size=size, seed=seed)
     high = normalise(high_contrast(raw, top=top))
-    dense = density_filter(high, k, p)
+    dense = density_filter(high, k, percent)
     return {"patches": raw, "high": high, "dense": dense}

@@ -10,11 +10,11 @@ enough and no Python object is made per simplex.
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _grow(buf, vals, count):
     new_buf = np.empty((2 * buf.shape[0] + 16, buf.shape[1]), dtype=buf.dtype)
     new_vals = np.empty(2 * vals.shape[0] + 16, dtype=vals.dtype)
@@ -23,8 +23,8 @@ def _grow(buf, vals, count):
     return new_buf, new_vals
 
 
-@numba.njit(cache=True)
-def _lower_bound(arr, lo, hi, x):
+@njit(cache=True)
+def lower_bound(arr, lo, hi, x):
     while lo < hi:
         mid = (lo + hi) >> 1
         if arr[mid] < x:
@@ -34,7 +34,7 @@ def _lower_bound(arr, lo, hi, x):
     return lo
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, fill):
     m, width = parents.shape
     count = 0
@@ -50,7 +50,7 @@ def _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, f
         ok = True
         for i in range(width - 1):
             v = parents[r, i]
-            ptr[i] = _lower_bound(indices, indptr[v], indptr[v + 1], first_cand)
+            ptr[i] = lower_bound(indices, indptr[v], indptr[v + 1], first_cand)
             ends[i] = indptr[v + 1]
             if ptr[i] == ends[i]:
                 ok = False
@@ -89,7 +89,7 @@ def _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, f
     return count
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def expand_level(parents, parent_vals, indptr, indices, edge_vals):
     """All cliques one dimension up from ``parents``; returns ``(children, values)``.
 
@@ -105,7 +105,7 @@ def expand_level(parents, parent_vals, indptr, indices, edge_vals):
     return out, out_v
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def pairwise_edges(points, threshold):
     """Pairs ``i < j`` with ``|p_i - p_j| <= threshold`` (lexicographic) and their lengths."""
     n, dim = points.shape
@@ -132,7 +132,7 @@ def pairwise_edges(points, threshold):
     return out[:count].copy(), out_v[:count].copy()
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def matrix_edges(matrix, threshold):
     """Pairs ``i < j`` with ``matrix[i, j] <= threshold`` (lexicographic) and their entries."""
     n = matrix.shape[0]

@@ -15,63 +15,109 @@ linear solves.
 
 from __future__ import annotations
 
+from ..jit import njit
 import numpy as np
+import numpy.typing as npt
 
-from ..simplicial import facets, find_rows, row_keys
-from .delaunay import _lower_hull, _prepare
 from ..filtration import Filtration
+from ..simplicial import facets, find_rows, row_keys
+from .orthoballs import attached, orthoballs
+from .scaling import unscale_values
+from .triangulation import lexicographic, lexicographic_order, prepare_geometry, triangulate
 
-__all__ = ["alpha", "orthoballs"]
+__all__ = ["alpha"]
 
 
-def orthoballs(points: np.ndarray, weights: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Centres ``(m, d)`` and squared radii ``(m,)`` of the smallest orthogonal spheres of simplices.
+@njit(cache=True)
+def _facet_ids(nb):
+    """Number the facets of a triangulation: ``ids[s, i]`` for the facet opposite vertex i of
+    simplex s (both occurrences of an interior facet get the same id), and one (s, i) per id."""
+    m, w = nb.shape
+    ids = np.full((m, w), -1, dtype=np.int64)
+    rep_s = np.empty(m * w, dtype=np.int64)
+    rep_i = np.empty(m * w, dtype=np.int64)
+    count = 0
+    for s in range(m):
+        for i in range(w):
+            if ids[s, i] >= 0:
+                continue
+            ids[s, i] = count
+            rep_s[count], rep_i[count] = s, i
+            t = nb[s, i]
+            if t >= 0:
+                for j in range(w):
+                    if nb[t, j] == s:
+                        ids[t, j] = count
+                        break
+            count += 1
+    return ids, rep_s[:count], rep_i[:count]
 
-    Thesis: §2.1.2 (weighted point x ↔ sphere of squared radius w_x; power distance π_x).
-    With zero weights this is the smallest circumscribed sphere (centre in the affine hull).
+
+@njit(cache=True)
+def _coface_min(fidx, values, size):
+    """For each face, the smallest value among the cofaces listing it in ``fidx``."""
+    out = np.full(size, np.inf)
+    m, w = fidx.shape
+    for r in range(m):
+        v = values[r]
+        for i in range(w):
+            f = fidx[r, i]
+            if v < out[f]:
+                out[f] = v
+    return out
+
+
+def _face_levels(top: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
+    """All faces of the top simplices (lexicographically sorted, with their neighbours), per
+    dimension in lexicographic order, with facet indices.
+
+    ``fidx_of[k][r, i]`` is the row in ``levels[k - 1]`` of the facet of ``levels[k][r]`` that omits
+    its vertex i.  The facets of the top simplices come from the neighbours (no search), the
+    vertices directly; the levels in between by sorting.
     """
-    p = points[simplices]  # (m, k+1, d)
-    wv = weights[simplices]
-    p0 = p[:, 0, :]
-    if simplices.shape[1] == 1:
-        return p0.copy(), -wv[:, 0]
-    a = p[:, 1:, :] - p0[:, None, :]  # (m, k, d)
-    gram = 2.0 * np.einsum("mid,mjd->mij", a, a)
-    rhs = np.einsum("mid,mid->mi", a, a) - wv[:, 1:] + wv[:, :1]
-    lam = np.linalg.solve(gram, rhs[..., None])[..., 0]
-    offset = np.einsum("mi,mid->md", lam, a)
-    centre = p0 + offset
-    r2 = np.einsum("md,md->m", offset, offset) - wv[:, 0]
-    return centre, r2
-
-
-def _face_levels(top: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
-    """All faces of the top simplices, per dimension in lexicographic order, with facet indices."""
     k_top = top.shape[1] - 1
-    top = top[np.lexsort(top.T[::-1])]
     levels: list[np.ndarray] = [None] * (k_top + 1)  # type: ignore[list-item]
     levels[k_top] = top
     fidx_of: dict[int, np.ndarray] = {}
     for k in range(k_top - 1, -1, -1):
         upper = levels[k + 1]
+        if k == 0:  # vertices: the present points, in index order
+            present = np.zeros(n, dtype=bool)
+            present[upper.ravel()] = True
+            lower = np.flatnonzero(present)
+            pos = np.full(n, -1, dtype=np.int64)
+            pos[lower] = np.arange(len(lower))
+            levels[0] = lower.reshape(-1, 1)
+            fidx_of[1] = pos[upper[:, ::-1]]
+            continue
+        if k == k_top - 1:  # facets of the top simplices, numbered through the neighbours
+            ids, rep_s, rep_i = _facet_ids(nb)
+            keep = np.array([[j for j in range(k + 2) if j != i] for i in range(k + 2)])
+            lower = np.take_along_axis(upper[rep_s], keep[rep_i], axis=1)
+            srt = lexicographic_order(lower, n)
+            relabel = np.empty_like(srt)
+            relabel[srt] = np.arange(len(srt))
+            levels[k] = lower[srt]
+            fidx_of[k + 1] = relabel[ids]
+            continue
         f = facets(upper).reshape(-1, k + 1)
         keys = row_keys(f, n)
         if keys is None:  # too many vertices for int64 keys: slower generic path
             lower = np.unique(f, axis=0)
-            inverse = find_rows(lower, f)
+            inverse_f = find_rows(lower, f)
         else:
-            uniq, inverse = np.unique(keys, return_inverse=True)
+            uniq, inverse_f = np.unique(keys, return_inverse=True)
             lower = np.empty((uniq.shape[0], k + 1), dtype=np.int64)
             rest = uniq.copy()
             for j in range(k, -1, -1):
                 lower[:, j] = rest % n
                 rest //= n
         levels[k] = lower
-        fidx_of[k + 1] = np.asarray(inverse, dtype=np.int64).reshape(upper.shape[0], k + 2)
+        fidx_of[k + 1] = np.asarray(inverse_f, dtype=np.int64).reshape(upper.shape[0], k + 2)
     return levels, fidx_of
 
 
-def alpha(points, weights=None) -> Filtration:
+def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtration:
     """Alpha filtration of the (weighted) Delaunay complex; values are squared radii ε².
 
     Thesis: Definition 2.14 (A(X, ε), nerve of R(x, ε) = V_x ∩ B(x, ε)) and the weighted version
@@ -84,42 +130,43 @@ def alpha(points, weights=None) -> Filtration:
 
     Returns
     -------
-    Filtration over the Delaunay complex (simplices up to dimension d; co-spherical cells are
-    triangulated).  Vertex indices are row numbers of ``points``; with weights, points whose
-    Voronoi cell is empty are missing (their rows have no vertex).
+    Filtration
+        Over the Delaunay complex (simplices up to dimension d).  Vertex indices are row numbers of
+        ``points``; with weights, points whose Voronoi cell is empty are missing (their rows have
+        no vertex).
+
+    Notes
+    -----
+    Exact where it matters (:mod:`.predicates`): the triangulation is certified with exact
+    predicates, d + 2 co-spherical points are triangulated by CGAL's symbolic perturbation, values
+    are exactly rounded where floating point could lose digits and attachment is decided exactly,
+    so simplices and values equal GUDHI's ``AlphaComplex(..., precision="exact")`` (values to
+    about 1e-13 relative).  Coordinates of any magnitude are scaled by a power of two first;
+    values that do not fit in float64 raise ``ValueError``.
     """
-    pts, w = _prepare(points, weights)
-    tri, _, _, _ = _lower_hull(pts, w)
+    geo, e = prepare_geometry(points, weights)
+    t = lexicographic(triangulate(geo))
     weighted = weights is not None
-    d = pts.shape[1]
-    # drop zero-volume simplices that qhull's triangulation can leave on co-spherical input
-    edges_vec = pts[tri[:, 1:]] - pts[tri[:, :1]]
-    vol = np.abs(np.linalg.det(edges_vec))
-    tri = tri[vol > 1e-12 * vol.max()]
-    levels, fidx_of = _face_levels(tri, pts.shape[0])
+    levels, fidx_of = _face_levels(t.simplices, t.neighbours, geo.n)
     top = len(levels) - 1
     values: list[np.ndarray] = [None] * (top + 1)  # type: ignore[list-item]
-    # work in coordinates centred at the mean (better conditioned solves)
-    centred = pts - pts.mean(axis=0)
-    _, r2_top = orthoballs(centred, w, levels[top])
-    values[top] = r2_top
+    values[top] = orthoballs(geo, levels[top])[1]
     for k in range(top - 1, -1, -1):
         lower = levels[k]
         if k == 0 and not weighted:
             values[0] = np.zeros(lower.shape[0])
             continue
-        centre, r2 = orthoballs(centred, w, lower)
+        ball = orthoballs(geo, lower)
         upper = levels[k + 1]
         fidx = fidx_of[k + 1]
         # column i of fidx is the facet omitting vertex i, so upper[:, i] is its opposite vertex
-        diff = centred[upper] - centre[fidx]
-        power = np.einsum("mid,mid->mi", diff, diff) - w[upper] - r2[fidx]
-        attached = np.zeros(lower.shape[0], dtype=bool)
-        attached[fidx[power < 0]] = True
-        coface_min = np.full(lower.shape[0], np.inf)
-        np.minimum.at(coface_min, fidx.ravel(), np.repeat(values[k + 1], k + 2))
-        values[k] = np.where(attached, coface_min, r2)
-    # a simplex never enters before its faces (rounding), as GUDHI's make_filtration_non_decreasing
+        hit = attached(geo, lower, ball, fidx.ravel(), upper.ravel())
+        is_attached = np.zeros(lower.shape[0], dtype=bool)
+        is_attached[fidx.ravel()[hit]] = True
+        coface_min = _coface_min(fidx, values[k + 1], lower.shape[0])
+        values[k] = np.where(is_attached, coface_min, ball[1])
+    # a simplex never enters before its faces (float rounding), as GUDHI's make_filtration_non_decreasing
     for k in range(1, top + 1):
         values[k] = np.maximum(values[k], values[k - 1][fidx_of[k]].max(axis=1))
+    values = [unscale_values(v, -2 * e, "squared radii") for v in values]
     return Filtration(levels, values, validate=False)

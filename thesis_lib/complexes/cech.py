@@ -2,19 +2,21 @@
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
 from ..simplicial import facets, find_rows
 from ._flag import edges_within, expand_level, upper_csr
 from ..filtration import Filtration
 from .miniball import meb_radius_small
+from .scaling import scaled, unscale_values
 
 __all__ = ["cech"]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _meb_radii(points, simplices):
     m, k = simplices.shape
     out = np.empty(m)
@@ -26,7 +28,7 @@ def _meb_radii(points, simplices):
     return out
 
 
-def cech(points, max_radius: float, max_dim: int) -> Filtration:
+def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
     """Čech filtration: σ enters at the radius of the smallest ball enclosing its vertices.
 
     Thesis: Definition 2.9, C(X, ε) = {σ : ∩_{x∈σ} B(x, ε) ≠ ∅}; the balls meet iff σ fits in a
@@ -38,6 +40,12 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
     max_radius : largest ε kept (``inf`` keeps every simplex up to ``max_dim``: 2^n of them!).
     max_dim : largest simplex dimension built (>= 0).
 
+    Returns
+    -------
+    Filtration
+        Values are the radii of the smallest enclosing balls (vertices 0, an edge half its
+        length); points are scaled by a power of two first, so any magnitude works.
+
     Notes
     -----
     Candidates come from the Rips complex R(X, ε) ⊇ C(X, ε) (a set of diameter > 2ε fits in no
@@ -46,7 +54,9 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    pts = np.ascontiguousarray(as_points(points))
+    pts, e = scaled(as_points(points))  # power-of-two scaling: no overflow/underflow of squares
+    with np.errstate(over="ignore"):
+        eps = float(np.ldexp(eps, e))
     n = pts.shape[0]
     simplices = [np.arange(n, dtype=np.int64).reshape(n, 1)]
     values = [np.zeros(n)]
@@ -68,4 +78,5 @@ def cech(points, max_radius: float, max_dim: int) -> Filtration:
                 radii = np.maximum(radii, values[-1][idx].max(axis=1))
             simplices.append(cand)
             values.append(radii)
+    values = [unscale_values(v, -e, "radii") for v in values]
     return Filtration(simplices, values, validate=False)

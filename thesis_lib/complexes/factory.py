@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ..filtration import Filtration
 from .landmarks import maxmin_landmarks, random_landmarks
@@ -15,19 +16,30 @@ COMPLEXES = ("rips", "witness", "lazy-witness")
 LANDMARK_METHODS = {"maxmin": maxmin_landmarks, "random": random_landmarks}
 
 
-def choose_landmarks(points, method: str, n: int, seed: int) -> np.ndarray:
+def choose_landmarks(points: npt.ArrayLike, method: str, n: int, seed: int) -> np.ndarray:
     """Landmark indices by ``method`` (``"maxmin"`` or ``"random"``).
 
     Thesis: Definition 2.16 and §2.1.2 (the two standard ways of choosing landmarks).
+
+    Parameters
+    ----------
+    points : (N, d) array.
+    method : "maxmin" or "random".
+    n : number of landmarks.
+    seed : seed of the random choices.
+
+    Returns
+    -------
+    ndarray of int64
     """
-    if method not in LANDMARK_METHODS:
+    if not isinstance(method, str) or method not in LANDMARK_METHODS:
         raise ValueError(f"landmark method must be one of {sorted(LANDMARK_METHODS)}, got {method!r}")
     return LANDMARK_METHODS[method](points, n, seed=seed)
 
 
 def build_filtration(
     kind: str,
-    points,
+    points: npt.ArrayLike,
     max_radius: float,
     max_dim: int,
     *,
@@ -39,8 +51,22 @@ def build_filtration(
     """The ``kind`` filtration of ``points``: ``"rips"``, ``"witness"`` or ``"lazy-witness"``.
 
     Thesis: Definition 2.11 (Rips) and §2.1.2 (witness complexes on landmarks).
-    Witness complexes choose ``n_landmarks`` landmarks by ``landmark_method`` with ``seed``.
+
+    Parameters
+    ----------
+    kind : "rips", "witness" or "lazy-witness".
+    points : (N, d) array.
+    max_radius : largest ε kept.
+    max_dim : largest simplex dimension built.
+    landmark_method, n_landmarks, nu, seed
+        Witness complexes choose ``n_landmarks`` landmarks by ``landmark_method`` with ``seed``.
+
+    Returns
+    -------
+    Filtration
     """
+    if not isinstance(kind, str):
+        raise ValueError(f"complex must be one of {COMPLEXES}, got {kind!r}")
     if kind == "rips":
         return rips(points, max_radius, max_dim)
     if kind in ("witness", "lazy-witness"):

@@ -12,10 +12,12 @@ Two independent implementations:
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
+import numpy.typing as npt
 
-from .._validate import as_points
+from .._validate import as_points, check_seed
+from .scaling import scaled
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
 
@@ -63,7 +65,7 @@ def _mtf(points: np.ndarray, end: int, support: list[np.ndarray], dim: int, tol:
     return centre, r2
 
 
-def smallest_enclosing_ball(points, seed: int = 0) -> tuple[np.ndarray, float]:
+def smallest_enclosing_ball(points: npt.ArrayLike, seed: int = 0) -> tuple[np.ndarray, float]:
     """Centre and radius of the smallest closed ball containing ``points`` (any dimension).
 
     Thesis: §2.1.2, the Miniball Algorithm [Gär99] deciding membership in C(X, ε) (Definition 2.9).
@@ -72,18 +74,23 @@ def smallest_enclosing_ball(points, seed: int = 0) -> tuple[np.ndarray, float]:
     ----------
     points : (n, d) array, n >= 1, finite.
     seed : seed of the random permutation (expected linear time); the ball does not depend on it.
+
+    Returns
+    -------
+    centre : (d,) array.
+    radius : float.
     """
-    pts = as_points(points)
+    pts, e = scaled(as_points(points))  # power-of-two scaling: squared distances stay finite
     n, dim = pts.shape
-    order = np.random.default_rng(seed).permutation(n)
+    order = np.random.default_rng(check_seed(seed)).permutation(n)
     work = pts[order].copy()
     scale = float(np.max(np.abs(work - work[0]))) if n > 1 else 0.0
     tol = 1e-12 * max(scale, 1e-300) ** 2
     centre, r2 = _mtf(work, n, [], dim, tol)
-    return centre, float(np.sqrt(max(r2, 0.0)))
+    return np.ldexp(centre, -e), float(np.ldexp(np.sqrt(max(r2, 0.0)), -e))
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _solve_small(a, b, k):
     """Gaussian elimination with partial pivoting on the leading k x k block; False if singular."""
     m = a.copy()
@@ -124,7 +131,7 @@ def _solve_small(a, b, k):
     return x, True
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def meb_radius_small(pts):
     """Radius of the smallest enclosing ball of a few points (rows of ``pts``), by subset search.
 

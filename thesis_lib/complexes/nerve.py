@@ -4,7 +4,12 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 
-__all__ = ["nerve"]
+from .._validate import check_max_dim
+
+__all__ = ["nerve", "MAX_NERVE_SIMPLICES"]
+
+#: the largest nerve built (as Python tuples, about 100 bytes each)
+MAX_NERVE_SIMPLICES = 10**6
 
 
 def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[int, ...]]:
@@ -19,13 +24,19 @@ def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[i
 
     Returns
     -------
-    Ascending index tuples sorted by dimension, then lexicographically.  An empty U_i gives no vertex.
+    list of tuple
+        Ascending index tuples sorted by dimension, then lexicographically.  An empty U_i gives no
+        vertex.
+
+    Raises
+    ------
+    ValueError
+        If the nerve grows beyond :data:`MAX_NERVE_SIMPLICES` simplices (it can have 2^|I| − 1).
     """
     if isinstance(cover, (str, bytes)) or not hasattr(cover, "__len__"):
         raise ValueError("cover must be a sequence of sets")
     if max_dim is not None:
-        if isinstance(max_dim, bool) or not isinstance(max_dim, int) or max_dim < 0:
-            raise ValueError(f"max_dim must be an integer >= 0 or None, got {max_dim!r}")
+        max_dim = check_max_dim(max_dim)
     sets: list[frozenset] = []
     for i, u in enumerate(cover):
         if isinstance(u, (str, bytes)) or not isinstance(u, Iterable):
@@ -33,19 +44,20 @@ def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[i
         sets.append(frozenset(u))
     limit = len(sets) if max_dim is None else max_dim + 1
     # depth-first search carrying the running intersection: a set is a coface only if it meets it
+    # (an explicit stack: a chain of thousands of overlapping sets must not exhaust the recursion)
     out: list[tuple[int, ...]] = []
-
-    def grow(simplex: tuple[int, ...], common: frozenset) -> None:
+    stack = [((i,), u) for i, u in reversed(list(enumerate(sets))) if u]
+    while stack:
+        simplex, common = stack.pop()
         out.append(simplex)
+        if len(out) > MAX_NERVE_SIMPLICES:
+            raise ValueError(f"the nerve has more than {MAX_NERVE_SIMPLICES:,} simplices (the sets overlap too "
+                             "much); lower max_dim, or build a Čech, Rips or alpha complex for point clouds")
         if len(simplex) >= limit:
-            return
-        for j in range(simplex[-1] + 1, len(sets)):
+            continue
+        for j in range(len(sets) - 1, simplex[-1], -1):
             inter = common & sets[j]
             if inter:
-                grow(simplex + (j,), inter)
-
-    for i, u in enumerate(sets):
-        if u:
-            grow((i,), u)
+                stack.append((simplex + (j,), inter))
     out.sort(key=lambda s: (len(s), s))
     return out

@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
 from ._flag import edges_within, flag_levels, matrix_edges
 from ..filtration import Filtration
+from .scaling import scaled, unscale_values
 
 __all__ = ["rips"]
 
@@ -24,7 +26,8 @@ def _as_distance_matrix(distance_matrix) -> np.ndarray:
     return np.ascontiguousarray(dm)
 
 
-def rips(points=None, max_radius: float = np.inf, max_dim: int = 2, *, distance_matrix=None) -> Filtration:
+def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
+         distance_matrix: npt.ArrayLike | None = None) -> Filtration:
     """Vietoris–Rips filtration: σ enters at ε = (largest distance between its vertices) / 2.
 
     Thesis: Definition 2.11, R(X, ε) = {σ ⊆ X : diam σ ≤ 2ε}; a flag complex (§2.1.2).
@@ -38,20 +41,29 @@ def rips(points=None, max_radius: float = np.inf, max_dim: int = 2, *, distance_
 
     Returns
     -------
-    Filtration whose values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε).
-    Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
+    Filtration
+        Values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε; ripser's
+        ``thresh`` is 2ε).  Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
+        Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
+        1e160 or 1e-170 give correct values.
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
     if (points is None) == (distance_matrix is None):
         raise ValueError("give exactly one of points and distance_matrix")
+    none = (np.empty((0, 2), np.int64), np.empty(0))
     if distance_matrix is not None:
         dm = _as_distance_matrix(distance_matrix)
         n = dm.shape[0]
-        edges, lengths = matrix_edges(dm, 2.0 * eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
+        edges, lengths = matrix_edges(dm, 2.0 * eps) if max_dim >= 1 else none
     else:
-        pts = np.ascontiguousarray(as_points(points))
+        # work on points scaled by a power of two (no overflow of squared distances near 1e160,
+        # no underflow near 1e-170); lengths scale back exactly
+        pts, e = scaled(as_points(points))
         n = pts.shape[0]
-        edges, lengths = edges_within(pts, 2.0 * eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
+        with np.errstate(over="ignore"):
+            threshold = float(np.ldexp(2.0 * eps, e))
+        edges, lengths = edges_within(pts, threshold) if max_dim >= 1 else none
+        lengths = unscale_values(lengths, -e, "edge lengths")
     simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
     return Filtration(simplices, values, validate=False)

@@ -18,65 +18,67 @@ Vertices of both complexes are landmark positions ``0..L-1``: vertex ``i`` is th
 
 from __future__ import annotations
 
-import numba
+from ..jit import load_numba, njit
 import numpy as np
+import numpy.typing as npt
 
-from .._validate import as_points, check_max_dim, check_radius
-from ._flag import _lower_bound, flag_levels, matrix_edges
+from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
+from ._flag import lower_bound, flag_levels, matrix_edges
 from ..filtration import Filtration
+from .scaling import scaled, unscale_values
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
 
 
-
 def _check_landmarks(pts: np.ndarray, landmarks) -> np.ndarray:
     lm = np.asarray(landmarks)
-    if lm.ndim != 1 or lm.size == 0:
-        raise ValueError(f"landmarks must be a non-empty 1-D index array, got shape {lm.shape}")
-    if not np.issubdtype(lm.dtype, np.integer):
-        raise ValueError("landmarks must be integer indices into points (see maxmin_landmarks)")
-    if lm.size > pts.shape[0]:
+    if lm.ndim == 1 and lm.size > pts.shape[0]:
         raise ValueError(f"{lm.size} landmarks but only {pts.shape[0]} points")
-    if lm.min() < 0 or lm.max() >= pts.shape[0]:
-        raise ValueError(f"landmark indices must lie in 0..{pts.shape[0] - 1}")
-    if np.unique(lm).size != lm.size:
-        raise ValueError("landmarks repeat an index")
-    return lm.astype(np.int64)
+    return check_indices(lm, pts.shape[0], "landmarks", unique=True)
 
 
 def _check_nu(nu, n_landmarks: int) -> int:
-    if isinstance(nu, bool) or not isinstance(nu, (int, np.integer)) or nu < 0:
-        raise ValueError(f"nu must be an integer >= 0, got {nu!r}")
+    nu = check_int(nu, "nu", minimum=0)
     if nu > n_landmarks:
         raise ValueError(f"nu = {nu} exceeds the number of landmarks ({n_landmarks})")
-    return int(nu)
+    return nu
 
 
-def witness_offsets(points, landmarks, nu: int = 1) -> np.ndarray:
+def witness_offsets(points: npt.ArrayLike, landmarks: npt.ArrayLike, nu: int = 1) -> np.ndarray:
     """The matrix ``D[i, x] = |l_i − x| − m(x)`` (landmark i, point x) both complexes are built from.
 
     Thesis: §2.1.2, m_k(x) = distance to the (k + 1)-th closest landmark, with ν = k + 1.
+
+    Parameters
+    ----------
+    points : (N, d) array, the witnesses.
+    landmarks : 1-D distinct integer indices into ``points``.
+    nu : ν >= 0 (``nu=0``: m(x) = 0).
+
+    Returns
+    -------
+    ndarray, shape (L, N)
     """
     pts = as_points(points)
     lm = _check_landmarks(pts, landmarks)
     nu = _check_nu(nu, lm.size)
+    pts, e = scaled(pts)  # power-of-two scaling: squared distances neither overflow nor underflow
     lpts = pts[lm]
     # |l - x|² expanded is cheaper but loses accuracy near 0; chunked direct differences instead
     dist = np.empty((lm.size, pts.shape[0]))
     for start in range(0, lm.size, 64):
         block = lpts[start : start + 64]
         dist[start : start + block.shape[0]] = np.sqrt(((block[:, None, :] - pts[None, :, :]) ** 2).sum(-1))
-    if nu == 0:
-        return dist
-    m = np.partition(dist, nu - 1, axis=0)[nu - 1]
-    return dist - m[None, :]
+    if nu > 0:
+        dist -= np.partition(dist, nu - 1, axis=0)[nu - 1][None, :]
+    return unscale_values(dist, -e, "distances")
 
 
 _SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted witness lists are kept
 _BIG = 1e300  # stands for "not a witness" (finite, so the fastmath reductions stay valid)
 
 
-@numba.njit(cache=True, fastmath=True)
+@njit(cache=True, fastmath=True)
 def _minmax_full(cur, row):
     best = _BIG
     for x in range(cur.shape[0]):
@@ -85,7 +87,7 @@ def _minmax_full(cur, row):
     return best
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _minmax_gather(cur, idx, cnt, row):
     best = _BIG
     for j in range(cnt):
@@ -97,7 +99,7 @@ def _minmax_gather(cur, idx, cnt, row):
     return best
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _candidate_counts(parents, ev, eps):
     """Per parent: the landmarks w > last vertex whose edges to every vertex have value <= eps."""
     m, width = parents.shape
@@ -117,7 +119,7 @@ def _candidate_counts(parents, ev, eps):
     return counts
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid, start,
                     cur, ccur, idx):
     """Children of parent ``r`` written into rows ``start, start + 1, ...`` (one per candidate)."""
@@ -169,7 +171,7 @@ def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, ou
         if use_sorted and ub > lb:
             for i in range(width + 1):
                 u = parents[r, i] if i < width else w
-                c = _lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
+                c = lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
                 if c < n_scan:
                     n_scan = c
                     u_best = u
@@ -198,7 +200,7 @@ def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, ou
         slot += 1
 
 
-@numba.njit(cache=True, parallel=True)
+@njit(cache=True, parallel=True)
 def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chunks):
     """Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.
 
@@ -232,7 +234,7 @@ def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chun
     return out[keep], out_v[keep]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _edge_values(D):
     """Unclamped edge values min_x max(D[a, x], D[b, x]) and a witness realising each."""
     n_l, n_x = D.shape
@@ -262,7 +264,8 @@ def _edge_values(D):
     return out, arg
 
 
-def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> Filtration:
+def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+            nu: int = 1) -> Filtration:
     """Witness filtration W(X, L, ε) with the thesis's (strong, un-squared) rule.
 
     Thesis: §2.1.2 "The Witness Complex" (Definition 2.16 for landmarks), with m_k and ν = k + 1.
@@ -277,8 +280,9 @@ def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> 
 
     Returns
     -------
-    Filtration on vertices ``0..L-1`` (landmark positions); value of σ is
-    max(0, min_x (max_{l∈σ} |l − x| − m(x))).
+    Filtration
+        On vertices ``0..L-1`` (landmark positions); the value of σ is
+        max(0, min_x (max_{l∈σ} |l − x| − m(x))).
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
@@ -301,20 +305,29 @@ def witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> 
             if simplices[-1].shape[0] == 0:
                 break
             s, v = _witness_level(simplices[-1], D, ev, arg, eps, order, sorted_d, use_sorted,
-                                  64 * numba.get_num_threads())
+                                  64 * load_numba().get_num_threads())
             simplices.append(s)
             values.append(v)
     return Filtration(simplices, values, validate=False)
 
 
-def lazy_witness(points, landmarks, max_radius: float, max_dim: int, nu: int = 1) -> Filtration:
+def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+                 nu: int = 1) -> Filtration:
     """Lazy witness filtration (JavaPlex): the witness rule on edges, then the flag complex.
 
     Thesis: §2.1.2 "The Witness Complex" (edge rule with m_k, ν = k + 1) and the flag-complex
     construction of Definition 2.11's discussion; as JavaPlex's ``LazyWitnessStream`` used in §2.4.
 
-    Same parameters and vertex numbering as :func:`witness`; a simplex's value is its largest edge
-    value, so the lazy complex contains the witness complex at every ε.
+    Parameters
+    ----------
+    points, landmarks, max_radius, max_dim, nu
+        As in :func:`witness`.
+
+    Returns
+    -------
+    Filtration
+        Same vertex numbering as :func:`witness`; a simplex's value is its largest edge value, so
+        the lazy complex contains the witness complex at every ε.
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)

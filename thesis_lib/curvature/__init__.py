@@ -7,6 +7,7 @@ through :func:`validate_mesh` (one module, :mod:`.validate`).
 
 from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas
 from .gaussian import angle_defects, gaussian_curvature
+from .manifold import check_pseudomanifold
 from .mean import mean_curvature, mean_curvature_vector, total_hyperarea
 from .shape import (
     PrincipalCurvatures,
@@ -24,6 +25,7 @@ __all__ = [
     "ShapeOperator",
     "angle_defects",
     "boundary_vertices",
+    "check_pseudomanifold",
     "check_orientation",
     "circumcentric_fractions",
     "gaussian_curvature",

@@ -18,16 +18,27 @@
 
 from __future__ import annotations
 
+from ..jit import njit
 import numpy as np
+import numpy.typing as npt
 
-from .validate import Mesh, validate_mesh
+from .._validate import resolve_alias
+from .manifold import checked_mesh
+from .validate import Mesh
 
-__all__ = ["vertex_areas", "vertex_areas_of_mesh", "circumcentric_fractions", "AREA_KINDS"]
+__all__ = ["vertex_areas", "vertex_areas_of_mesh", "circumcentric_fractions", "AREA_KINDS", "check_area"]
 
 AREA_KINDS = ("mixed", "voronoi", "barycentric")
 
 
-def circumcentric_fractions(p: np.ndarray) -> np.ndarray:
+def check_area(area) -> str:
+    """The vertex-region name ``area``: one of :data:`AREA_KINDS`."""
+    if not isinstance(area, str) or area not in AREA_KINDS:
+        raise ValueError(f"unknown area {area!r}: use one of {AREA_KINDS}")
+    return area
+
+
+def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
     """Signed fraction of each simplex's hyperarea in each vertex's circumcentric cell.
 
     Thesis: §3.3.2 (Voronoi regions; the 3-simplex corner remark of §3.4.2).
@@ -49,7 +60,10 @@ def circumcentric_fractions(p: np.ndarray) -> np.ndarray:
     ValueError
         If ``p`` is not an (m, n + 1, d) array of finite numbers with d >= n.
     """
-    p = np.asarray(p, dtype=np.float64)
+    try:
+        p = np.asarray(p, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"p must be an (m, n + 1, d) array of numbers: {err}") from None
     if p.ndim != 3 or p.shape[1] < 1 or p.shape[2] < p.shape[1] - 1:
         raise ValueError(f"p must have shape (m, n + 1, d) with d >= n, got {p.shape}")
     if not np.isfinite(p).all():
@@ -76,40 +90,68 @@ def circumcentric_fractions(p: np.ndarray) -> np.ndarray:
     return frac[full]
 
 
-def _triangle_shares(mesh: Mesh, kind: str) -> np.ndarray:
-    """(3, m) area share of each corner of each triangle (corner-major), n = 2."""
-    tri = mesh.tri
-    cot = tri.dot / tri.twice_area
-    wsq = cot * tri.edge_sq  # 8 x the Voronoi weight of the edge opposite each corner
-    # corner k gets 1/8 (cot_{k+1} |e_{k+1}|^2 + cot_{k+2} |e_{k+2}|^2)
-    share = 0.125 * (wsq[[1, 2, 0]] + wsq[[2, 0, 1]])
-    if kind == "mixed":
-        obtuse = tri.dot < 0
-        tri_obtuse = obtuse[0] | obtuse[1] | obtuse[2]
-        if tri_obtuse.any():
-            quarter = 0.125 * tri.twice_area
-            share = np.where(tri_obtuse, np.where(obtuse, 2.0 * quarter, quarter), share)
-    return share
+@njit(cache=True)
+def _triangle_areas(s, dot, edge_sq, twice, nv, mixed):
+    """Vertex areas of a triangle mesh from the validated corner data, in one pass.
+
+    Corner k gets 1/8 (cot_{k+1} |e_{k+1}|² + cot_{k+2} |e_{k+2}|²) (its Voronoi share, cot_j =
+    dot_j / (2 area)); with ``mixed``, an obtuse triangle gives its obtuse corner half its area and
+    the other two a quarter each (Meyer et al.).
+    """
+    out = np.zeros(nv)
+    m = s.shape[0]
+    for t in range(m):
+        tw = twice[t]
+        if mixed and (dot[0, t] < 0 or dot[1, t] < 0 or dot[2, t] < 0):
+            for k in range(3):
+                out[s[t, k]] += 0.25 * tw if dot[k, t] < 0 else 0.125 * tw
+            continue
+        w0 = dot[0, t] / tw * edge_sq[0, t]
+        w1 = dot[1, t] / tw * edge_sq[1, t]
+        w2 = dot[2, t] / tw * edge_sq[2, t]
+        out[s[t, 0]] += 0.125 * (w1 + w2)
+        out[s[t, 1]] += 0.125 * (w2 + w0)
+        out[s[t, 2]] += 0.125 * (w0 + w1)
+    return out
 
 
-def vertex_areas_of_mesh(mesh: Mesh, kind: str = "mixed") -> np.ndarray:
-    """:func:`vertex_areas` on an already validated :class:`~.validate.Mesh`."""
+def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
+    """:func:`vertex_areas` on an already validated :class:`~.validate.Mesh`.
+
+    Thesis: §3.3.2 (Voronoi and barycentric regions).
+
+    Parameters
+    ----------
+    mesh : a validated mesh.
+    area : {"mixed", "voronoi", "barycentric"}.
+
+    Returns
+    -------
+    ndarray, shape (nv,)
+    """
+    area = check_area(area)
     v, s, areas = mesh.vertices, mesh.simplices, mesh.areas
     nv, n = len(v), mesh.n
-    if kind == "barycentric":
+    if area == "barycentric":
         return np.bincount(s.ravel(), weights=np.repeat(areas / (n + 1), n + 1), minlength=nv)
-    if kind == "mixed" and n != 2:
+    if area == "mixed" and n != 2:
         raise ValueError(f"the mixed area (Meyer et al. 2002) is defined for n = 2, got n = {n}; "
                          "use 'voronoi' or 'barycentric'")
-    if kind not in AREA_KINDS:
-        raise ValueError(f"unknown area kind {kind!r}: use one of {AREA_KINDS}")
     if n == 2:
-        return np.bincount(s.T.ravel(), weights=_triangle_shares(mesh, kind).ravel(), minlength=nv)
+        tri = mesh.tri
+        return _triangle_areas(s, tri.dot, tri.edge_sq, tri.twice_area, nv, area == "mixed")
     share = circumcentric_fractions(v[s]) * areas[:, None]
     return np.bincount(s.ravel(), weights=share.ravel(), minlength=nv)
 
 
-def vertex_areas(vertices, simplices, kind: str = "mixed") -> np.ndarray:
+def resolve_area(area: str | None, kind: str | None, *, stacklevel: int = 3) -> str:
+    """The ``area`` argument, honouring the deprecated alias ``kind=`` with a ``FutureWarning``."""
+    return check_area(resolve_alias(area, kind, name="area", alias_name="kind", default="mixed",
+                                    stacklevel=stacklevel + 1))
+
+
+def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | None = None, *,
+                 kind: str | None = None) -> np.ndarray:
     """Area (hyperarea) of each vertex's region: mixed, Voronoi (circumcentric) or barycentric.
 
     Thesis: §3.3.2 (Voronoi and barycentric regions, the formula for A_vor).
@@ -118,20 +160,22 @@ def vertex_areas(vertices, simplices, kind: str = "mixed") -> np.ndarray:
     ----------
     vertices : array_like, shape (nv, n + 1)
     simplices : array_like of int, shape (m, n + 1)
-    kind : {"mixed", "voronoi", "barycentric"}
+        Top simplices of a simplicial pseudo-manifold (checked).
+    area : {"mixed", "voronoi", "barycentric"}, default "mixed"
         See the module docstring; ``"mixed"`` needs n = 2.
+    kind : deprecated alias of ``area`` (FutureWarning; removed in the next release).
 
     Returns
     -------
     ndarray, shape (nv,)
-        Sums to the total hyperarea (for every kind).  Zero at isolated vertices.  The signed
+        Sums to the total hyperarea (for every region).  Zero at isolated vertices.  The signed
         ``"voronoi"`` area can be negative at a vertex surrounded by badly obtuse simplices.
 
     Raises
     ------
     ValueError
-        On an invalid mesh, an unknown kind, or ``"mixed"`` with n ≠ 2.
+        On an invalid mesh (not a pseudo-manifold, degenerate simplices, ...), an unknown area, or
+        ``"mixed"`` with n ≠ 2.
     """
-    if kind not in AREA_KINDS:
-        raise ValueError(f"unknown area kind {kind!r}: use one of {AREA_KINDS}")
-    return vertex_areas_of_mesh(validate_mesh(vertices, simplices), kind)
+    area = resolve_area(area, kind)
+    return vertex_areas_of_mesh(checked_mesh(vertices, simplices), area)

@@ -9,6 +9,7 @@ signed values returned here.
 
 from __future__ import annotations
 
+from math import factorial
 from typing import Callable
 
 import numpy as np
@@ -29,7 +30,15 @@ __all__ = [
     "catenoid_principal_curvatures",
     "catenoid_mean_curvature",
     "hypersurface_normal",
+    "fundamental_forms",
     "parametric_shape_operator",
+    "normal_curvature_circle",
+    "hypersphere_quadrature",
+    "ellipsoid_point",
+    "total_gauss_kronecker_curvature",
+    "hypersphere_volume",
+    "gauss_bonnet_chern_constant",
+    "torus_outer_inner_ratio",
     "relative_error",
 ]
 
@@ -243,19 +252,29 @@ def hypersurface_normal(jacobian) -> np.ndarray:
     return N / norm
 
 
-def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4) -> np.ndarray:
-    """Shape operator S = g⁻¹ B of a parametrisation X: (..., n) -> (..., n+1), by central differences.
-
-    g_ij = <X_i, X_j> (first fundamental form), B_ij = <N, X_ij> = <S X_i, X_j> (second), so the
-    matrix of S = -N_* in the basis (X_{u_1}, ..., X_{u_n}) is g⁻¹ B; returns (..., n, n).
-    Thesis: Definitions 3.1–3.2 and eq. (3.10).
-    """
+def _parameters(w) -> np.ndarray:
     w = _finite("w", w)
     if w.ndim < 1:
         raise ValueError("w must have shape (..., n)")
+    return w
+
+
+def _step(h: float) -> float:
     h = float(h)
     if not np.isfinite(h) or h <= 0:
         raise ValueError(f"step h must be positive, got {h!r}")
+    return h
+
+
+def fundamental_forms(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4):
+    """First and second fundamental forms g_ij = <X_i, X_j>, B_ij = <N, X_ij> by central differences.
+
+    ``X`` maps parameters (..., n) to points (..., n+1); returns ``(g, B)``, each (..., n, n), in the
+    basis (X_{u_1}, ..., X_{u_n}), with N the normal of eq. (3.9).  A tangent vector with parameter
+    components a has I(a) = aᵀ g a and II(a) = aᵀ B a, and its normal curvature is II(a)/I(a) (eq. 3.1).
+    Thesis: Definitions 3.1–3.2 and eq. (3.9).
+    """
+    w, h = _parameters(w), _step(h)
     n = w.shape[-1]
     eye = np.eye(n) * h
     X0 = np.asarray(X(w), dtype=np.float64)
@@ -276,7 +295,142 @@ def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float
     N = hypersurface_normal(first)
     g = np.einsum("...ki,...kj->...ij", first, first)
     B = np.einsum("...k,...kij->...ij", N, second)
+    return g, B
+
+
+def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4) -> np.ndarray:
+    """Shape operator S = g⁻¹ B of a parametrisation X: (..., n) -> (..., n+1), by central differences.
+
+    g_ij = <X_i, X_j> (first fundamental form), B_ij = <N, X_ij> = <S X_i, X_j> (second), so the
+    matrix of S = -N_* in the basis (X_{u_1}, ..., X_{u_n}) is g⁻¹ B; returns (..., n, n).
+    Thesis: Definitions 3.1–3.2 and eq. (3.10).
+    """
+    g, B = fundamental_forms(X, w, h)
     return np.linalg.solve(g, B)
+
+
+def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w, nodes: int = 64, h: float = 1e-4) -> np.ndarray:
+    """Normal curvature II(t)/I(t) of a surface (n = 2) at parameters w in the unit tangent directions
+    t(θ_k) = cos θ_k e₁ + sin θ_k e₂, θ_k = 2πk/nodes, with (e₁, e₂) the orthonormal frame that
+    Gram–Schmidt makes of (X_u, X_v); returns (..., nodes).
+
+    Definition 3.3 takes κ₁, κ₂ as the minimum and maximum over θ; eq. (3.23) integrates over θ
+    (the trapezoid rule is exact here for nodes ≥ 3: κ_n is a trigonometric polynomial of degree 2).
+    Thesis: eq. (3.1), Definition 3.3 and eq. (3.23).
+    """
+    g, B = fundamental_forms(X, w, h)
+    if g.shape[-1] != 2:
+        raise ValueError(f"normal_curvature_circle needs a surface (n = 2), got n = {g.shape[-1]}")
+    if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 3:
+        raise ValueError(f"nodes must be an integer >= 3, got {nodes!r}")
+    L = np.linalg.cholesky(g)  # g = L Lᵀ: parameter components of the orthonormal frame are L⁻ᵀ
+    Linv = np.linalg.inv(L)
+    S_orth = np.einsum("...ij,...jk,...lk->...il", Linv, B, Linv)  # L⁻¹ B L⁻ᵀ, symmetric
+    theta = 2 * np.pi * np.arange(nodes) / nodes
+    c = np.stack([np.cos(theta), np.sin(theta)])  # (2, nodes)
+    return np.einsum("ik,...ij,jk->...k", c, S_orth, c)
+
+
+def hypersphere_quadrature(n: int, nodes: int = 16) -> tuple[np.ndarray, np.ndarray]:
+    """Quadrature over the hyperspherical parameters (ψ₁, ..., ψ_{n−1}, φ) ∈ (0, π)^{n−1} × [0, 2π).
+
+    Gauss–Legendre with ``nodes`` points in each ψ, the trapezoid rule with 2·nodes points in φ
+    (periodic, so spectrally accurate).  Returns ``(params (k, n), weights (k,))``: Σ weights·f(params)
+    approximates ∫ f dψ₁ ⋯ dψ_{n−1} dφ (the parameter measure; multiply f by a volume element).
+    Thesis: §3.4.2 (the hyperspherical coordinates of the 3-sphere), Theorem 3.11.
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"n must be a positive integer, got {n!r}")
+    if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 2:
+        raise ValueError(f"nodes must be an integer >= 2, got {nodes!r}")
+    x, wx = np.polynomial.legendre.leggauss(int(nodes))
+    psi, wpsi = 0.5 * np.pi * (x + 1), 0.5 * np.pi * wx
+    phi = 2 * np.pi * np.arange(2 * nodes) / (2 * nodes)
+    wphi = np.full(2 * nodes, 2 * np.pi / (2 * nodes))
+    axes, weights = [psi] * (n - 1) + [phi], [wpsi] * (n - 1) + [wphi]
+    grids = np.meshgrid(*axes, indexing="ij")
+    wgrid = np.meshgrid(*weights, indexing="ij")
+    params = np.stack([gr.ravel() for gr in grids], axis=1)
+    return params, np.prod(np.stack([wg.ravel() for wg in wgrid]), axis=0)
+
+
+def ellipsoid_point(angles, axes) -> np.ndarray:
+    """The ellipsoid Σ x_i²/a_i² = 1 in R^{n+1}: x = a ∘ y with y the unit-sphere point of ``angles``.
+
+    ``angles`` (..., n) as in :func:`hypersphere_point`; ``axes`` the n + 1 positive semi-axes.
+    Thesis: Theorem 3.11 (a closed hypersurface that is not a sphere).
+    """
+    a = _finite("axes", axes)
+    if a.ndim != 1 or np.any(a <= 0):
+        raise ValueError(f"axes must be a 1-D array of positive semi-axes, got {a!r}")
+    y = hypersphere_point(angles, 1.0)
+    if y.shape[-1] != len(a):
+        raise ValueError(f"{len(a)} semi-axes for points in R^{y.shape[-1]}")
+    return y * a
+
+
+def total_gauss_kronecker_curvature(
+    X: Callable[[np.ndarray], np.ndarray], params, weights, h: float = 1e-4
+) -> float:
+    """∫_X K dVol ≈ Σ weights · det S · sqrt(det g) over quadrature nodes ``params`` (k, n).
+
+    K = det S (Definition 3.10) and dVol = sqrt(det g) du₁⋯du_n, from :func:`fundamental_forms`.
+    For even n, K does not depend on the choice of normal.  Gauss–Bonnet (Theorem 3.8, n = 2) and
+    Gauss–Bonnet–Chern (Theorem 3.11, n = 2m) say the result is (π^m 2^n m!/n!) χ.
+    Thesis: eq. (3.14), Theorems 3.8 and 3.11.
+    """
+    w = _finite("weights", weights)
+    g, B = fundamental_forms(X, params, h)
+    if w.shape != g.shape[:-2]:
+        raise ValueError(f"weights {w.shape} do not match params {g.shape[:-2]}")
+    return float(np.sum(w * np.linalg.det(B) / np.sqrt(np.linalg.det(g))))
+
+
+def hypersphere_volume(n: int, nodes: int = 64) -> float:
+    """Volume of the unit n-sphere, 2π ∏_{k=1}^{n−1} ∫_0^π sin^k ψ dψ, by Gauss–Legendre quadrature.
+
+    Computed from the volume element of hyperspherical coordinates, independently of the closed
+    form 2π^{(n+1)/2}/Γ((n+1)/2); Theorem 3.11's constant is half of it for even n.
+    Thesis: Theorem 3.11 ("volume of S^n / 2 = π^m 2^n m!/n!").
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"n must be a positive integer, got {n!r}")
+    x, wx = np.polynomial.legendre.leggauss(int(nodes))
+    psi, wpsi = 0.5 * np.pi * (x + 1), 0.5 * np.pi * wx
+    return float(2 * np.pi * np.prod([np.sum(wpsi * np.sin(psi) ** k) for k in range(1, n)]))
+
+
+def gauss_bonnet_chern_constant(n: int) -> float:
+    """The thesis's constant π^m 2^n m!/n! of Theorem 3.11 for even n = 2m.
+
+    Thesis: Theorem 3.11.
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2 or n % 2:
+        raise ValueError(f"n must be an even integer >= 2, got {n!r}")
+    m = n // 2
+    return float(np.pi**m * 2**n * factorial(m) / factorial(n))
+
+
+def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
+    """Mean |H| over the outer half of the torus (cos v > 0) over that of the inner half, by area.
+
+    With dA = r (R + r cos v) du dv and |H| = |R + 2r cos v| / (2r (R + r cos v)) the ratio is
+    [∫ |R + 2r cos v| dv / ∫ (R + r cos v) dv]_outer / [same]_inner; for R = 2r it is
+    (π + 2)(π − 1)/((π + 1)(π − 2)) ≈ 2.33.  What Figures 3.8–3.10's colour profile should show.
+    Thesis: §3.4.1, Figures 3.8–3.10.
+    """
+    R, r = check_torus_radii(R, r)
+    from scipy.integrate import quad
+
+    # H changes sign where cos v = -R/(2r): a kink of |H| for the quadrature to know about
+    zeros = [np.arccos(-R / (2 * r)), 2 * np.pi - np.arccos(-R / (2 * r))] if R < 2 * r else []
+
+    def mean_abs_h(a: float, b: float) -> float:
+        kinks = [v for v in zeros if a < v < b]
+        num = quad(lambda v: abs(R + 2 * r * np.cos(v)) / (2 * r), a, b, points=kinks or None)[0]
+        return num / quad(lambda v: R + r * np.cos(v), a, b)[0]
+
+    return mean_abs_h(-np.pi / 2, np.pi / 2) / mean_abs_h(np.pi / 2, 3 * np.pi / 2)
 
 
 def relative_error(estimate, exact, zero_tol: float = 1e-3) -> np.ndarray:

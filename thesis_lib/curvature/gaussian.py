@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
-from .areas import vertex_areas_of_mesh
-from .validate import Mesh, validate_mesh
+from .areas import check_area, vertex_areas_of_mesh
+from .manifold import checked_mesh
+from .validate import Mesh
 
 __all__ = ["angle_defects", "gaussian_curvature"]
 
@@ -20,7 +22,7 @@ def _angle_defects(mesh: Mesh) -> np.ndarray:
     return defect
 
 
-def angle_defects(vertices, faces) -> np.ndarray:
+def angle_defects(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> np.ndarray:
     """Angle defect 2π − Σ_j θ_j at every vertex: the integrated Gaussian curvature.
 
     Thesis: Equation (3.20) (∫_A K dA = 2π − Σ θ_j over a vertex's region).
@@ -29,6 +31,7 @@ def angle_defects(vertices, faces) -> np.ndarray:
     ----------
     vertices : array_like, shape (nv, 3)
     faces : array_like of int, shape (m, 3)
+        A simplicial pseudo-manifold (checked: no doubled face, no pinched vertex).
 
     Returns
     -------
@@ -36,10 +39,10 @@ def angle_defects(vertices, faces) -> np.ndarray:
         NaN on boundary vertices (there the defect would be π − Σ θ_j plus the boundary's turning)
         and on isolated vertices.  On a closed mesh the sum is 2πχ (Theorem 3.8).
     """
-    return _angle_defects(validate_mesh(vertices, faces))
+    return _angle_defects(checked_mesh(vertices, faces))
 
 
-def gaussian_curvature(vertices, faces, area: str = "mixed") -> np.ndarray:
+def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str = "mixed") -> np.ndarray:
     """Discrete Gaussian curvature K = (2π − Σ_j θ_j) / area at every vertex.
 
     Thesis: Definition 3.21 (Voronoi (3.21) or barycentric (3.22) region; "mixed" = Meyer et al.).
@@ -62,7 +65,8 @@ def gaussian_curvature(vertices, faces, area: str = "mixed") -> np.ndarray:
     ValueError
         On an invalid mesh, an unknown area kind, or a hypersurface with n ≠ 2.
     """
-    mesh = validate_mesh(vertices, faces)
+    area = check_area(area)
+    mesh = checked_mesh(vertices, faces)
     defect = _angle_defects(mesh)
     a = vertex_areas_of_mesh(mesh, area)
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -27,11 +27,19 @@ from itertools import combinations
 from math import factorial
 
 import numpy as np
+import numpy.typing as npt
 
-from .areas import vertex_areas_of_mesh
-from .validate import Mesh, validate_mesh
+from .areas import check_area, vertex_areas_of_mesh
+from .manifold import checked_mesh
+from .validate import Mesh
 
 __all__ = ["mean_curvature_vector", "mean_curvature", "total_hyperarea"]
+
+
+def _check_method(method) -> str:
+    if not isinstance(method, str) or method not in ("gram", "cot"):
+        raise ValueError(f"unknown method {method!r}: use 'gram' (Theorem 3.18) or 'cot' (Corollary 3.19)")
+    return method
 
 
 def _scatter(idx: np.ndarray, vals: np.ndarray, nv: int) -> np.ndarray:
@@ -119,10 +127,10 @@ def _mean_curvature_vector(mesh: Mesh, method: str) -> np.ndarray:
             idx += [s[:, i], s[:, j]]
             vals += [w[:, None] * diff, -w[:, None] * diff]
         return _scatter(np.concatenate(idx), np.concatenate(vals), nv)
-    raise ValueError(f"unknown method {method!r}: use 'gram' (Theorem 3.18) or 'cot' (Corollary 3.19)")
+    raise AssertionError(method)  # pragma: no cover - checked by the callers
 
 
-def mean_curvature_vector(vertices, simplices, method: str = "gram") -> np.ndarray:
+def mean_curvature_vector(vertices: npt.ArrayLike, simplices: npt.ArrayLike, method: str = "gram") -> np.ndarray:
     """Discrete mean curvature vector ∇_p (total hyperarea) at every vertex, integrated over its area.
 
     Thesis: Definition 3.15 (computed by Theorem 3.18 or Corollary 3.19).
@@ -132,7 +140,8 @@ def mean_curvature_vector(vertices, simplices, method: str = "gram") -> np.ndarr
     vertices : array_like, shape (nv, n + 1)
         Vertex coordinates in R^{n+1}.
     simplices : array_like of int, shape (m, n + 1)
-        Top n-simplices of the hypersurface (any orientation).
+        Top n-simplices of the hypersurface (any orientation), a simplicial pseudo-manifold
+        (checked: no doubled simplex, no ridge in three simplices, no pinched vertex).
     method : {"gram", "cot"}
         ``"gram"``: Gram-determinant gradient (Theorem 3.18), any n >= 1 (n = 1: closed or open
         polygons in the plane); ``"cot"``: cotangents of dihedral angles (Corollary 3.19, for n = 2 the
@@ -149,20 +158,28 @@ def mean_curvature_vector(vertices, simplices, method: str = "gram") -> np.ndarr
     ValueError
         On invalid meshes (see :func:`thesis_lib.curvature.validate_mesh`) or an unknown method.
     """
-    if method not in ("gram", "cot"):
-        raise ValueError(f"unknown method {method!r}: use 'gram' (Theorem 3.18) or 'cot' (Corollary 3.19)")
-    return _mean_curvature_vector(validate_mesh(vertices, simplices), method)
+    return _mean_curvature_vector(checked_mesh(vertices, simplices), _check_method(method))
 
 
-def total_hyperarea(vertices, simplices) -> float:
+def total_hyperarea(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> float:
     """Total hyperarea of a triangulated hypersurface, Σ sqrt(det G_T) / n!.
 
     Thesis: §3.3.1 (area M = Σ_T area T).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, n + 1)
+    simplices : array_like of int, shape (m, n + 1)
+
+    Returns
+    -------
+    float
     """
-    return float(validate_mesh(vertices, simplices).areas.sum())
+    return float(checked_mesh(vertices, simplices).areas.sum())
 
 
-def mean_curvature(vertices, simplices, area: str = "mixed", method: str = "gram") -> np.ndarray:
+def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str = "mixed",
+                   method: str = "gram") -> np.ndarray:
     """Absolute mean curvature |H| = ‖∇_p area M‖ / (n · area(p)) at every vertex.
 
     Thesis: Definition 3.15 with Theorem 3.12 (the norm divided by n), averaged over the regions of §3.3.2.
@@ -184,7 +201,9 @@ def mean_curvature(vertices, simplices, area: str = "mixed", method: str = "gram
         vertex area is not positive (possible with the signed ``"voronoi"`` area on badly shaped
         meshes).
     """
-    mesh = validate_mesh(vertices, simplices)
+    area = check_area(area)
+    method = _check_method(method)
+    mesh = checked_mesh(vertices, simplices)
     vec = _mean_curvature_vector(mesh, method)
     a = vertex_areas_of_mesh(mesh, area)
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -16,8 +16,14 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
 
-from .validate import Mesh, check_orientation, validate_mesh
+from .._validate import resolve_alias
+from .manifold import checked_mesh
+from .validate import Mesh, check_orientation
+
+EDGE_WEIGHTS = ("voronoi", "uniform")
+NORMALS = ("max", "area")
 
 __all__ = [
     "vertex_normals",
@@ -47,7 +53,7 @@ class PrincipalCurvatures(NamedTuple):
 
 
 def _oriented_mesh(vertices, faces) -> Mesh:
-    mesh = validate_mesh(vertices, faces)
+    mesh = checked_mesh(vertices, faces)
     if mesh.n != 2:
         raise ValueError(f"the shape operator is implemented for triangle meshes in R^3 (n = 2), got n = {mesh.n}")
     check_orientation(mesh.simplices)
@@ -65,15 +71,31 @@ def _normals(mesh: Mesh, kind: str = "max") -> np.ndarray:
         b = p[:, [2, 0, 1]] - p
         c = np.cross(a, b) / (np.einsum("mka,mka->mk", a, a) * np.einsum("mka,mka->mk", b, b))[..., None]
         idx, vals = s.ravel(), c.reshape(-1, 3)
-    else:
-        raise ValueError(f"unknown normals {kind!r}: use 'max' or 'area'")
+    else:  # pragma: no cover - checked by the callers
+        raise AssertionError(kind)
     acc = np.stack([np.bincount(idx, weights=vals[:, a], minlength=len(v)) for a in range(3)], 1)
     norm = np.linalg.norm(acc, axis=1)
     with np.errstate(invalid="ignore", divide="ignore"):
         return acc / norm[:, None]
 
 
-def vertex_normals(vertices, faces, normals: str = "max") -> np.ndarray:
+def _check_normals(normals) -> str:
+    if not isinstance(normals, str) or normals not in NORMALS:
+        raise ValueError(f"unknown normals {normals!r}: use 'max' or 'area'")
+    return normals
+
+
+def _edge_weights(edge_weights, weights) -> str:
+    """``edge_weights``, honouring the deprecated alias ``weights=`` (FutureWarning)."""
+    edge_weights = resolve_alias(edge_weights, weights, name="edge_weights", alias_name="weights",
+                                 default="voronoi", stacklevel=4,
+                                 hint=" here (weights are the points' weights everywhere else)")
+    if not isinstance(edge_weights, str) or edge_weights not in EDGE_WEIGHTS:
+        raise ValueError(f"unknown edge_weights {edge_weights!r}: use 'voronoi' or 'uniform'")
+    return edge_weights
+
+
+def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str = "max") -> np.ndarray:
     """Unit vertex normals from the oriented face normals (Max's weights or area weights).
 
     Thesis: §3.3.4 (the normal n at x_i used in equation (3.24)).
@@ -82,6 +104,12 @@ def vertex_normals(vertices, faces, normals: str = "max") -> np.ndarray:
     vectors there (N. Max, 1999): exact for any triangulation inscribed in a sphere, and much better
     than area weights for the edge-based normal curvatures (3.24) on irregular meshes.
     ``normals="area"`` is the area-weighted mean.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    normals : {"max", "area"}
 
     Returns
     -------
@@ -93,6 +121,7 @@ def vertex_normals(vertices, faces, normals: str = "max") -> np.ndarray:
     ValueError
         On an invalid or incoherently oriented mesh.
     """
+    normals = _check_normals(normals)
     return _normals(_oriented_mesh(vertices, faces), normals)
 
 
@@ -112,10 +141,17 @@ def _edges_with_weights(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     return edges, weights
 
 
-def normal_curvatures(vertices, faces, normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
+def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
     """Normal curvature estimate κ_ij = 2 (x_i − x_j)·n_i / ‖x_i − x_j‖² along every directed edge.
 
     Thesis: Equation (3.24) (circle through x_i and x_j tangent to the plane ⊥ n_i; κ = 1/R).
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    normals : {"max", "area"}
+        Vertex normals, see :func:`vertex_normals`.
 
     Returns
     -------
@@ -123,6 +159,7 @@ def normal_curvatures(vertices, faces, normals: str = "max") -> tuple[np.ndarray
         ``edges`` (2e, 2) directed edges (i, j), both directions of every edge; ``kappa`` (2e,) the
         estimate at vertex i in the direction of x_j.  Signs as in the module docstring.
     """
+    normals = _check_normals(normals)
     mesh = _oriented_mesh(vertices, faces)
     nrm = _normals(mesh, normals)
     und, _ = _edges_with_weights(mesh)
@@ -142,7 +179,8 @@ def _tangent_basis(nrm: np.ndarray) -> np.ndarray:
     return np.stack([t1, t2], axis=1)
 
 
-def shape_operator(vertices, faces, weights: str = "voronoi", normals: str = "max") -> ShapeOperator:
+def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str | None = None,
+                   normals: str = "max", *, weights: str | None = None) -> ShapeOperator:
     """Weighted least-squares shape operator at every vertex of a triangle mesh.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (minimise Σ_j w_ij (d_ijᵀ S d_ij − κ_ij)²).
@@ -158,11 +196,13 @@ def shape_operator(vertices, faces, weights: str = "voronoi", normals: str = "ma
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3), coherently oriented
-    weights : {"voronoi", "uniform"}
-        The thesis's Voronoi weights, or all w_ij = 1.
+    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    edge_weights : {"voronoi", "uniform"}, default "voronoi"
+        The thesis's Voronoi weights w_ij, or all w_ij = 1.
     normals : {"max", "area"}
         Vertex normals, see :func:`vertex_normals`.
+    weights : deprecated alias of ``edge_weights`` (FutureWarning): ``weights`` means the points'
+        weights everywhere else in the library.
 
     Returns
     -------
@@ -173,17 +213,17 @@ def shape_operator(vertices, faces, weights: str = "voronoi", normals: str = "ma
     Raises
     ------
     ValueError
-        On an invalid mesh, n ≠ 2, incoherent orientation or an unknown ``weights``.
+        On an invalid mesh, n ≠ 2, incoherent orientation or unknown ``edge_weights``/``normals``.
     """
-    if weights not in ("voronoi", "uniform"):
-        raise ValueError(f"unknown weights {weights!r}: use 'voronoi' or 'uniform'")
+    edge_weights = _edge_weights(edge_weights, weights)
+    normals = _check_normals(normals)
     mesh = _oriented_mesh(vertices, faces)
     v = mesh.vertices
     nv = len(v)
     nrm = _normals(mesh, normals)
     basis = _tangent_basis(nrm)
     und, w = _edges_with_weights(mesh)
-    w = np.clip(w, 0.0, None) if weights == "voronoi" else np.ones_like(w)
+    w = np.clip(w, 0.0, None) if edge_weights == "voronoi" else np.ones_like(w)
     i = np.concatenate([und[:, 0], und[:, 1]])
     j = np.concatenate([und[:, 1], und[:, 0]])
     ww = np.concatenate([w, w])
@@ -211,10 +251,16 @@ def shape_operator(vertices, faces, weights: str = "voronoi", normals: str = "ma
     return ShapeOperator(tensor, basis, nrm)
 
 
-def principal_curvatures(vertices, faces, weights: str = "voronoi", normals: str = "max") -> PrincipalCurvatures:
+def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str | None = None,
+                         normals: str = "max", *, weights: str | None = None) -> PrincipalCurvatures:
     """Principal curvatures κ1 ≤ κ2 and directions: eigenpairs of the least-squares shape operator.
 
     Thesis: Definition 3.3 and §3.3.4 (the principal curvatures are the eigenvalues of S).
+
+    Parameters
+    ----------
+    vertices, faces, edge_weights, normals, weights
+        As in :func:`shape_operator`.
 
     Returns
     -------
@@ -222,7 +268,7 @@ def principal_curvatures(vertices, faces, weights: str = "voronoi", normals: str
         ``k1``, ``k2`` (nv,) and unit directions ``d1``, ``d2`` (nv, 3) in the tangent plane; NaN where
         :func:`shape_operator` is NaN.  Signs as in the module docstring.
     """
-    so = shape_operator(vertices, faces, weights=weights, normals=normals)
+    so = shape_operator(vertices, faces, _edge_weights(edge_weights, weights), normals)
     nv = len(so.tensor)
     k = np.full((nv, 2), np.nan)
     vec = np.full((nv, 2, 2), np.nan)

@@ -151,8 +151,9 @@ def _ridge_keys(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, bool]:
         if float(nv) ** 2 < 2.0**62:
             return lo * nv + hi, True
         allr = np.stack([lo, hi], axis=1)
-    else:
-        allr = np.sort(np.concatenate([np.delete(simplices, i, axis=1) for i in range(w)]), axis=1)
+    else:  # rows sorted once: dropping a column keeps them sorted
+        ss = np.sort(simplices, axis=1)
+        allr = np.concatenate([np.delete(ss, i, axis=1) for i in range(w)])
     if w == 1 or float(nv) ** (w - 1) < 2.0**62:
         key = allr[:, 0].astype(np.int64)
         for j in range(1, w - 1):
@@ -282,8 +283,12 @@ def validate_mesh(vertices, simplices) -> Mesh:
     else:
         areas = simplex_hyperareas(v, s)
         p = v[s]
-        diff = p[:, :, None, :] - p[:, None, :, :]
-        longest = np.sqrt(np.einsum("mija,mija->mij", diff, diff).max(axis=(1, 2)))
+        longest_sq = np.zeros(len(s))
+        for i in range(1, d):
+            for j in range(i):
+                e = p[:, i] - p[:, j]
+                np.maximum(longest_sq, np.einsum("ma,ma->m", e, e), out=longest_sq)
+        longest = np.sqrt(longest_sq)
     degenerate = areas <= DEGENERATE_RTOL * longest**n
     if degenerate.any():
         bad = int(np.flatnonzero(degenerate)[0])

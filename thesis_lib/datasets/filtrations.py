@@ -1,13 +1,34 @@
-"""Small filtrations from the thesis's worked examples."""
+"""Small filtrations from the thesis's worked examples, and families of filtrations that grow."""
 
 from __future__ import annotations
 
+import itertools
+from collections.abc import Iterable, Mapping
+
+import numpy as np
+
+from .._validate import check_int, check_seed
 from ..filtration import Filtration
 
-__all__ = ["example_filtration", "EXAMPLE_NAMES"]
+__all__ = [
+    "example_filtration",
+    "EXAMPLE_NAMES",
+    "EXAMPLE_2_40_CYCLES",
+    "named_chain",
+    "module_filtration",
+    "dense_filtration",
+]
 
 #: vertex names of Figure 2.11: a, b, c, d, e = 0, 1, 2, 3, 4
 EXAMPLE_NAMES = "abcde"
+
+#: The cycles z₁ and z₂ of Example 2.40 as printed (oriented edges named by their vertices, with
+#: their coefficients; the powers of t only shift degrees): z₁ = da + t·cd + bc + t·ab and
+#: z₂ = ed + ce − t²·cd.
+EXAMPLE_2_40_CYCLES = {
+    "z1": {"da": 1, "cd": 1, "bc": 1, "ab": 1},
+    "z2": {"ed": 1, "ce": 1, "cd": -1},
+}
 
 
 def example_filtration() -> Filtration:
@@ -28,4 +49,96 @@ def example_filtration() -> Filtration:
         ((e, d), 3), ((c, e), 3),
         ((c, e, d), 4),
     ]  # fmt: skip
+    return Filtration.from_pairs(pairs)
+
+
+def _permutation_sign(order: Iterable[int]) -> int:
+    """+1 for an even permutation of the sorted order, −1 for an odd one."""
+    seq = list(order)
+    inversions = sum(1 for i, j in itertools.combinations(range(len(seq)), 2) if seq[i] > seq[j])
+    return -1 if inversions % 2 else 1
+
+
+def named_chain(terms: Mapping[str, int], names: str = EXAMPLE_NAMES) -> dict[tuple[int, ...], int]:
+    """A chain written with the thesis's vertex names, as ``{ascending simplex: integer coefficient}``.
+
+    Thesis: Definition 2.17 ([x_0, ..., x_p] = −[x_τ(0), ..., x_τ(p)] for an odd permutation τ).
+
+    ``terms`` maps oriented simplices named by their vertices (``"da"`` is the edge from d to a) to
+    coefficients; ``names[i]`` is the name of vertex ``i``.  ``named_chain({"da": 1})`` is
+    ``{(0, 3): -1}`` since [d, a] = −[a, d].
+    """
+    chain: dict[tuple[int, ...], int] = {}
+    for word, coefficient in terms.items():
+        try:
+            vertices = [names.index(ch) for ch in word]
+        except ValueError:
+            raise ValueError(f"{word!r} names a vertex not in {names!r}") from None
+        if len(set(vertices)) != len(vertices):
+            raise ValueError(f"{word!r} repeats a vertex")
+        key = tuple(sorted(vertices))
+        value = chain.get(key, 0) + _permutation_sign(vertices) * int(coefficient)
+        if value:
+            chain[key] = value
+        else:
+            chain.pop(key, None)
+    return chain
+
+
+def module_filtration(summands: Iterable[tuple[int, int | None]], dim: int = 1) -> Filtration:
+    """A filtration whose dimension-``dim`` persistence module is ⊕ Σ^α F[t] ⊕ Σ^γ F[t]/(t^n).
+
+    Thesis: Theorem 2.33 and Corollary 2.35 (finite sets of P-intervals and graded F[t]-modules
+    correspond), Example 2.36.
+
+    Parameters
+    ----------
+    summands : pairs ``(shift, n)``: ``(α, None)`` is the free summand Σ^α F[t] and ``(γ, n)`` the
+        torsion summand Σ^γ F[t]/(t^n) (n ≥ 1).  Shifts are non-negative integers.
+    dim : the homology dimension that carries the module (≥ 1).
+
+    Returns
+    -------
+    Filtration
+        One component per summand: the boundary of a (dim + 1)-simplex, all of it entering at the
+        shift (a dim-sphere, one class born there), and for a torsion summand the (dim + 1)-simplex
+        itself entering n steps later (the class dies).  Its dimension-``dim`` barcode is the set of
+        P-intervals (α, ∞) and (γ, γ + n) of Definition 2.34.
+    """
+    dim = check_int(dim, "dim", minimum=1)
+    pairs: list[tuple[tuple[int, ...], float]] = []
+    fills: list[tuple[tuple[int, ...], float]] = []
+    base = 0
+    for item in summands:
+        shift, n = item
+        shift = check_int(shift, "shift", minimum=0)
+        if n is not None:
+            n = check_int(n, "torsion order n", minimum=1)
+        top = tuple(range(base, base + dim + 2))
+        base += dim + 2
+        for k in range(1, dim + 2):
+            pairs += [(face, float(shift)) for face in itertools.combinations(top, k)]
+        if n is not None:
+            fills.append((top, float(shift + n)))
+    if not pairs:
+        raise ValueError("the module needs at least one summand")
+    ordered = sorted(pairs + fills, key=lambda sv: (sv[1], len(sv[0])))
+    return Filtration.from_pairs(ordered)
+
+
+def dense_filtration(n_vertices: int, *, seed: int) -> Filtration:
+    """Every vertex, edge and triangle on ``n_vertices`` vertices; edges, then triangles, in random order.
+
+    Thesis: Algorithm 2 / Summary (ComputeIntervals is O(m³) in the number m of simplices): a dense
+    input for measuring how the work of the algorithm grows; m = n + C(n, 2) + C(n, 3).
+    """
+    n = check_int(n_vertices, "n_vertices", minimum=3)
+    rng = np.random.default_rng(check_seed(seed))
+    edges = list(itertools.combinations(range(n), 2))
+    triangles = list(itertools.combinations(range(n), 3))
+    order_e = rng.permutation(len(edges))
+    order_t = rng.permutation(len(triangles))
+    pairs = [((v,), 0.0) for v in range(n)]
+    pairs += [(edges[i], 1.0 + k) for k, i in enumerate(order_e)]
+    pairs += [(triangles[i], 1.0 + len(edges) + k) for k, i in enumerate(order_t)]
     return Filtration.from_pairs(pairs)

@@ -1,13 +1,26 @@
-"""Stored benchmark results (``benchmarks/results/<topic>.json``) as tables for the book."""
+"""Stored benchmark results (``benchmarks/results/<topic>.json``) as tables and figures for the book.
+
+The files are written by the harness (``benchmarks/harness.py``): ``{"meta": ..., "rows": [...]}``
+with the commit, date, load average and cores of the run; every time ratio is a row key starting
+with ``ratio_`` (the median over interleaved rounds of ours / peer, below 1 = we are faster) and the
+number of rounds is ``rounds``.  Older files are a bare list of rows (no provenance).
+"""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
 
+import numpy as np
+
 from .paths import repo_root
 
-__all__ = ["topics", "load", "markdown"]
+__all__ = ["topics", "load", "meta", "markdown", "ratios", "fit_exponent", "ratio_figure", "scaling_figure",
+           "provenance"]
+
+#: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
+PEERS = {"ripser": "Ripser", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
+         "libigl": "libigl", "pari": "PARI", "sympy": "sympy", "ball_pivoting": "ball pivoting"}
 
 
 def _dir() -> Path:
@@ -15,20 +28,42 @@ def _dir() -> Path:
 
 
 def topics() -> list[str]:
-    """Benchmarks with stored full results (``--quick`` smoke runs are left out)."""
-    return sorted(p.stem for p in _dir().glob("*.json") if not p.stem.replace("-", "_").endswith("_quick"))
+    """Benchmarks with stored full results (``--quick`` smoke runs and partial runs are left out)."""
+    return sorted(p.stem for p in _dir().glob("*.json")
+                  if not p.stem.replace("-", "_").endswith(("_quick", "_partial")))
+
+
+def _read(topic: str):
+    path = _dir() / f"{topic}.json"
+    if not path.exists():
+        raise FileNotFoundError(f"no stored benchmark {topic!r} at {path}; run `make bench`")
+    return path, json.loads(path.read_text())
 
 
 def load(topic: str) -> list[dict]:
     """Rows of one benchmark (a list of flat dicts), as ``make bench`` stored them."""
-    path = _dir() / f"{topic}.json"
-    if not path.exists():
-        raise FileNotFoundError(f"no stored benchmark {topic!r} at {path}; run `make bench`")
-    data = json.loads(path.read_text())
+    path, data = _read(topic)
     rows = data["rows"] if isinstance(data, dict) else data
     if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
         raise ValueError(f"{path} must hold a list of rows (dicts)")
     return rows
+
+
+def meta(topic: str) -> dict:
+    """Where and when the stored run was made (commit, date, load average, cores); {} for old files."""
+    _, data = _read(topic)
+    return data.get("meta", {}) if isinstance(data, dict) else {}
+
+
+def provenance(topic: str) -> str:
+    """One sentence saying where the stored figures of ``topic`` come from."""
+    m = meta(topic)
+    if not m:
+        return f"`{topic}`: stored without provenance (an older harness): re-run `make bench`."
+    load_avg = m.get("load_average", [None])[0]
+    end = m.get("load_average_end", [None])[0]
+    return (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "
+            f"load average {load_avg} at the start and {end} at the end of the run.")
 
 
 def _cell(value) -> str:
@@ -37,9 +72,15 @@ def _cell(value) -> str:
     return "" if value is None else str(value)
 
 
-def markdown(topic: str, columns: list[str] | None = None) -> str:
-    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order."""
-    rows = load(topic)
+def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
+             where=None) -> str:
+    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order; only the
+    rows of ``cases`` when given (those stored), and with ``where`` (a predicate on a row) only the
+    rows it accepts."""
+    rows = [r for r in load(topic)
+            if (cases is None or r.get("case") in cases) and (where is None or where(r))]
+    if not rows:
+        return f"*No stored rows of `{topic}` for the cases {', '.join(cases or [])}: run `make bench`.*\n"
     if columns is None:
         columns = []
         for row in rows:
@@ -51,3 +92,92 @@ def markdown(topic: str, columns: list[str] | None = None) -> str:
     lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     lines += ["| " + " | ".join(_cell(r.get(c)) for c in columns) + " |" for r in rows]
     return "\n".join(lines) + "\n"
+
+
+def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:
+    """``(case, peer, ratio, rounds)`` for every ``ratio_<peer>`` of the stored rows (or of ``cases``)."""
+    out = []
+    for row in load(topic):
+        if cases is not None and row.get("case") not in cases:
+            continue
+        for key, value in row.items():
+            if key.startswith("ratio_") and isinstance(value, (int, float)) and not isinstance(value, bool):
+                out.append((str(row.get("case")), key[len("ratio_"):], float(value), int(row.get("rounds", 0))))
+    return out
+
+
+def fit_exponent(x, y) -> float:
+    """The exponent a of y ≈ c · x^a, by least squares on log y against log x."""
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    if x.shape != y.shape or x.size < 2 or (x <= 0).any() or (y <= 0).any():
+        raise ValueError("need at least two positive (x, y) points of the same length")
+    return float(np.polyfit(np.log(x), np.log(y), 1)[0])
+
+
+def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | None = None, ax=None):
+    """Horizontal bars of ours / peer per workload (log scale, 1 marked): one group per case.
+
+    The ratios are the stored medians of paired ratios; each label names the peer and the rounds.
+    """
+    import matplotlib.pyplot as plt
+
+    from ..graphics.style import COLORS
+
+    data = [r for r in ratios(topic, cases) if peers is None or r[1] in peers]
+    if not data:
+        raise ValueError(f"benchmark {topic!r} has no ratio_* figures to draw")
+    names = list(dict.fromkeys(r[0] for r in data))
+    kinds = list(dict.fromkeys(r[1] for r in data))
+    palette = COLORS.get("dims", ["C0", "C1", "C2", "C3", "C4"])
+    if ax is None:
+        _, ax = plt.subplots(figsize=(7.0, 0.5 + 0.28 * len(data) + 0.15 * len(names)))
+    y, ticks, labels = 0.0, [], []
+    for name in names:
+        for case, peer, value, rounds in data:
+            if case != name:
+                continue
+            ax.barh(y, value, color=palette[kinds.index(peer) % len(palette)], height=0.8)
+            ax.text(value * 1.05, y, f"{value:.2f}", va="center", fontsize=8)
+            ticks.append(y)
+            labels.append(f"{case} / {PEERS.get(peer, peer)} ({rounds} rounds)")
+            y += 1
+        y += 0.6
+    ax.axvline(1.0, color="0.3", lw=1)
+    ax.set_xscale("log")
+    ax.set_yticks(ticks)
+    ax.set_yticklabels(labels, fontsize=8)
+    ax.invert_yaxis()
+    ax.set_xlabel("time ours / peer (median of paired ratios; < 1: we are faster)")
+    return ax.figure
+
+
+def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *, x_key: str = "n_per_circle"):
+    """Time and memory against ``x_key`` for the rows whose case starts with ``prefix``, log–log,
+    one line per tool (``{row key: label}``) with its fitted exponent in the legend.
+
+    Returns ``(figure, {tool: (time exponent, memory exponent)})``.
+    """
+    import matplotlib.pyplot as plt
+
+    rows = [r for r in load(topic) if str(r.get("case", "")).startswith(prefix)]
+    if not rows:
+        raise ValueError(f"benchmark {topic!r} has no cases starting with {prefix!r}")
+    fig, (ax_t, ax_m) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    exponents = {}
+    for key, label in tools.items():
+        pts = [(r[x_key], r.get(f"{key}_s"), r.get(f"{key}_mb")) for r in rows if r.get(f"{key}_s") is not None]
+        if len(pts) < 2:
+            continue
+        x = np.array([p[0] for p in pts], float)
+        t = np.array([p[1] for p in pts], float)
+        m = np.array([max(p[2] or 0.0, 0.1) for p in pts], float)
+        et, em = fit_exponent(x, t), fit_exponent(x, m)
+        exponents[key] = (et, em)
+        ax_t.loglog(x, t, "o-", label=f"{label} (n^{et:.2f})")
+        ax_m.loglog(x, m, "o-", label=f"{label} (n^{em:.2f})")
+    for ax, what in ((ax_t, "time (s, median)"), (ax_m, "peak memory above baseline (MB)")):
+        ax.set_xlabel("points per circle")
+        ax.set_ylabel(what)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig, exponents

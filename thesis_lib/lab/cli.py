@@ -1,56 +1,104 @@
-"""The ``thesis-lab`` command line: run and sweep experiments, the report, the data layer."""
+"""The ``thesis-lab`` command line: run and sweep experiments, the report, the data layer.
+
+Exit codes: 0 success; 1 a notebook or run failed (or runs are missing); 2 bad input (an unknown
+experiment or parameter, a bad value, a malformed manifest or claims file, an unreachable cluster);
+130 / 143 cancelled by Ctrl-C / SIGTERM (running kernels are killed, nothing half-written is kept).
+"""
 
 from __future__ import annotations
 
 import argparse
+import os
+import signal
 import sys
 
-__all__ = ["main"]
+__all__ = ["main", "build_parser"]
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM, raised in the main thread so that runs and sweeps cancel as on Ctrl-C."""
 
 
 def _pairs(items: list[list[str]] | None) -> dict[str, str]:
+    from .experiments import ParameterError
+
     out: dict[str, str] = {}
     for key, value in items or []:
         if key in out:
-            raise SystemExit(f"error: parameter {key!r} given twice")
+            raise ParameterError(f"parameter {key!r} given twice (-p {key} {out[key]} and -p {key} {value})")
         out[key] = value
     return out
 
 
 def _grid(items: list[list[str]] | None) -> dict[str, list[str]]:
+    from .experiments import ParameterError
+
     out: dict[str, list[str]] = {}
     for entry in items or []:
         if len(entry) < 2:
-            raise SystemExit(f"error: -p {entry[0]} needs at least one value")
+            raise ParameterError(f"-p {entry[0]} needs at least one value")
         if entry[0] in out:
-            raise SystemExit(f"error: parameter {entry[0]!r} given twice")
+            raise ParameterError(f"parameter {entry[0]!r} given twice; give all its values after one -p")
         out[entry[0]] = entry[1:]
     return out
+
+
+def _err(text: str) -> None:
+    print(text, file=sys.stderr, flush=True)
 
 
 def _cmd_run(args) -> int:
     from .runner import run
 
-    result = run(args.experiment, _pairs(args.param), force=args.force)
+    result = run(args.experiment, _pairs(args.param), force=args.force, progress=None if not args.quiet else False)
     print(f"{result.status}: {result.path}")
     for key, value in sorted(result.results.items()):
         print(f"  {key} = {value}")
     if result.status == "failed":
-        print(f"error: the notebook failed: {result.error} (see {result.path / 'error.txt'})", file=sys.stderr)
+        _err(f"error: the notebook failed: {result.error} (see {result.path / 'error.txt'})")
         return 1
     return 0
 
 
-def _cmd_sweep(args) -> int:
-    from .runner import sweep
-
-    runs, table = sweep(args.experiment, _grid(args.param), jobs=args.jobs, progress=not args.quiet, keep=args.keep)
+def _print_table(runs, table, what: str) -> int:
     print(table.with_suffix(".md").read_text())
     print(f"table: {table} (and {table.with_suffix('.md').name})")
-    failed = [r for r in runs if r.status == "failed"]
-    for r in failed:
-        print(f"failed: {r.params} -> {r.error} (see {r.path / 'error.txt'})", file=sys.stderr)
-    return 1 if failed else 0
+    bad = [r for r in runs if r.status in ("failed", "missing")]
+    for r in bad:
+        detail = f"{r.error} (see {r.path / 'error.txt'})" if r.status == "failed" else f"no run folder {r.path}"
+        _err(f"{r.status}: {r.params} -> {detail}")
+    if bad:
+        _err(f"{what}: {sum(r.status == 'failed' for r in bad)} failed, {sum(r.status == 'missing' for r in bad)} missing")
+    return 1 if bad else 0
+
+
+def _cmd_sweep(args) -> int:
+    from .sweep import dask_client, sweep
+
+    grid = _grid(args.param)
+    progress = not args.quiet and sys.stderr.isatty()
+    common = dict(progress=progress, keep=args.keep, shard=args.shard, retries=args.retries,
+                  max_output_mb=args.max_output_mb, jobs=args.jobs)
+    if args.executor == "dask":
+        with dask_client(args.scheduler, jobs=args.jobs, retries=args.retries, log=_err) as client:
+            runs, table = sweep(args.experiment, grid, executor=client, **common)
+    else:
+        if args.scheduler:
+            from .experiments import ParameterError
+
+            raise ParameterError("--scheduler needs --executor dask")
+        runs, table = sweep(args.experiment, grid, **common)
+    if args.shard:
+        print(f"shard {args.shard} done; when every shard is done: thesis-lab collect {args.experiment} "
+              + " ".join(f"-p {k} " + " ".join(v) for k, v in grid.items()))
+    return _print_table(runs, table, "sweep")
+
+
+def _cmd_collect(args) -> int:
+    from .sweep import collect
+
+    runs, table = collect(args.experiment, _grid(args.param), keep=args.keep)
+    return _print_table(runs, table, "collect")
 
 
 def _cmd_store(args) -> int:
@@ -64,11 +112,11 @@ def _cmd_store(args) -> int:
 
 
 def _cmd_list(args) -> int:
-    from .runner import experiment_parameters, list_experiments
+    from .experiments import OUTPUT_PARAMETER, experiment_parameters, list_experiments
 
     for name in list_experiments():
         params = experiment_parameters(name)
-        params.pop("output_dir", None)
+        params.pop(OUTPUT_PARAMETER, None)
         print(name + ": " + ", ".join(f"{k}={v!r}" for k, v in params.items()))
     return 0
 
@@ -77,7 +125,7 @@ def _cmd_report(args) -> int:
     from .report import markdown, report, to_json
 
     rows = report()
-    print(to_json(rows) if args.json else markdown(rows))
+    print(to_json(rows) if args.json else markdown(rows, with_summary=True))
     return 0
 
 
@@ -95,24 +143,66 @@ def _cmd_data(args) -> int:
     return 0
 
 
+def _int_from(low: int):
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer >= {low}, got {text!r}") from None
+        if value < low:
+            raise argparse.ArgumentTypeError(f"expected an integer >= {low}, got {value}")
+        return value
+
+    return parse
+
+
+def _positive_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}") from None
+    if not value > 0 or value == float("inf"):
+        raise argparse.ArgumentTypeError(f"expected a positive number, got {text!r}")
+    return value
+
+
+def _grid_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("experiment")
+    p.add_argument("-p", "--param", nargs="+", action="append", metavar="NAME VALUE",
+                   help="a parameter and its values (repeat -p for more parameters)")
+    p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``thesis-lab``."""
-    parser = argparse.ArgumentParser(prog="thesis-lab", description=__doc__)
+    parser = argparse.ArgumentParser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
+    parser.add_argument("--project", metavar="DIR",
+                        help="the project folder (default: $THESIS_LAB_PROJECT, else the current folder or above)")
     sub = parser.add_subparsers(dest="command", required=True)
 
     p = sub.add_parser("run", help="run one experiment into runs/NAME/<hash>/")
     p.add_argument("experiment")
     p.add_argument("-p", "--param", nargs=2, action="append", metavar=("NAME", "VALUE"))
     p.add_argument("--force", action="store_true", help="run again even if complete")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress (shown only on a terminal anyway)")
     p.set_defaults(func=_cmd_run)
 
     p = sub.add_parser("sweep", help="run the Cartesian grid of parameter values")
-    p.add_argument("experiment")
-    p.add_argument("-p", "--param", nargs="+", action="append", metavar="NAME VALUE")
-    p.add_argument("-j", "--jobs", type=int, default=1)
+    _grid_options(p)
+    p.add_argument("-j", "--jobs", type=_int_from(1), default=1,
+                   help="runs at a time (local), or worker processes of the LocalCluster (dask, no --scheduler)")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
-    p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
+    p.add_argument("--executor", choices=["local", "dask"], default="local")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler (tcp://host:8786)")
+    p.add_argument("--shard", metavar="I/N", help="run only the I-th of N slices of the grid (job arrays)")
+    p.add_argument("--retries", type=_int_from(0), default=2, help="Dask: retries of a run whose worker died (default 2)")
+    p.add_argument("--max-output-mb", type=_positive_float, default=64.0,
+                   help="largest total size of one run's outputs sent back from a worker (default 64)")
     p.set_defaults(func=_cmd_sweep)
+
+    p = sub.add_parser("collect", help="the sweep table from the run folders that exist (after --shard runs)")
+    _grid_options(p)
+    p.set_defaults(func=_cmd_collect)
 
     p = sub.add_parser("store", help="re-execute stored default runs in place (all experiments by default)")
     p.add_argument("targets", nargs="*", help="experiment names or notebook paths")
@@ -132,18 +222,59 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _on_sigterm(signum, frame):
+    raise Terminated()
+
+
 def main(argv: list[str] | None = None) -> int:
     """Entry point of the ``thesis-lab`` console script."""
+    previous = signal.signal(signal.SIGTERM, _on_sigterm) if _main_thread() else None
+    try:
+        return _main(argv)
+    except KeyboardInterrupt as exc:
+        from .execute import kill_kernels
+
+        kill_kernels()
+        _err("cancelled: running kernels stopped; completed runs are kept, nothing partial is marked complete")
+        return 143 if isinstance(exc, Terminated) else 130
+    except BrokenPipeError:  # `thesis-lab list | head -1`: the reader left; say nothing more
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 141
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)
+
+
+def _main(argv: list[str] | None) -> int:
+    from nbclient.exceptions import CellExecutionError
+
     from .data import DataError
+    from .experiments import ParameterError
+    from .paths import PROJECT_ENV, ProjectError
     from .report import ClaimError
-    from .runner import ParameterError
+    from .results import ResultsError
+    from .sweep import ClusterError
 
     args = build_parser().parse_args(argv)
+    if args.project:
+        os.environ[PROJECT_ENV] = os.path.abspath(args.project)
     try:
-        return args.func(args)
-    except (ParameterError, DataError, ClaimError) as exc:
-        print(f"error: {exc}", file=sys.stderr)
+        code = args.func(args)
+        sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
+        return code
+    except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, ClusterError) as exc:
+        _err(f"error: {exc}")
         return 2
+    except CellExecutionError as exc:
+        _err(f"error: the notebook failed; nothing was stored:\n{str(exc).strip()[-2000:]}")
+        return 1
+
+
+def _main_thread() -> bool:
+    import threading
+
+    return threading.current_thread() is threading.main_thread()
 
 
 if __name__ == "__main__":

@@ -1,26 +1,29 @@
 """The data layer: every input that code cannot generate, found by name and checked by sha256.
 
-Resolution order for ``path(name)``: the local cache ``data/<file>`` of the checkout, then
+Resolution order for ``path(name)``: the local cache ``data/<file>`` of the project, then
 ``../shared/data/<file>`` beside it.  Only :func:`fetch` downloads, from the manifest's URL.
+A manifest entry's ``file`` must stay inside ``data/``: ``..``, absolute paths and symlinks that lead
+out are refused, by :func:`manifest` and again where a file is read or written.
 """
 
 from __future__ import annotations
 
 import hashlib
+import re
 import shutil
-import tempfile
-import tomllib
 import urllib.request
-from dataclasses import dataclass
-from pathlib import Path
+from dataclasses import dataclass, fields
+from pathlib import Path, PurePosixPath
 
-from .paths import repo_root, shared_dir
+from . import atomic
+from .paths import project_root, shared_dir
+from .registry import read_tables
 
-__all__ = ["DataError", "Entry", "manifest", "path", "verify", "fetch", "sha256_of"]
+__all__ = ["DataError", "Entry", "manifest", "path", "verify", "fetch", "sha256_of", "check", "inside"]
 
 
-class DataError(Exception):
-    """A data file is missing, unknown or does not match its recorded sha256."""
+class DataError(ValueError):
+    """A data file is missing, unknown, outside ``data/``, or does not match its recorded sha256."""
 
 
 @dataclass(frozen=True)
@@ -36,21 +39,77 @@ class Entry:
     licence: str
 
 
+_NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")
+_SHA = re.compile(r"[0-9a-f]{64}")
+_SCHEMES = ("https://", "http://", "file://")
+
+
 def _manifest_path() -> Path:
-    return repo_root() / "data" / "manifest.toml"
+    return project_root() / "data" / "manifest.toml"
+
+
+def _relative(file: object) -> str:
+    """``file`` as a relative POSIX path that names something below ``data/``, or a DataError."""
+    if not isinstance(file, str) or not file or "\x00" in file or "\\" in file:
+        raise DataError(f"file {file!r} must be a relative path below data/ (forward slashes)")
+    parts = PurePosixPath(file).parts
+    if file.startswith("/") or ".." in parts or not parts or any(p in ("", ".") for p in file.split("/")):
+        raise DataError(f"file {file!r} must be a relative path below data/ (no '..', '.', empty or absolute parts)")
+    return file
+
+
+def inside(base: str | Path, file: str) -> Path:
+    """``base/file`` after checking that it stays inside ``base`` once symlinks are resolved."""
+    base = Path(base).resolve()
+    target = (base / _relative(file)).resolve()
+    if not target.is_relative_to(base) or target == base:
+        raise DataError(f"file {file!r} leads outside {base} (through a symlink); refused")
+    return target
+
+
+def _validated(item: object, source: Path) -> Entry:
+    if not isinstance(item, dict):
+        raise DataError(f"{source}: a [[file]] entry must be a table, got {item!r}")
+    names = [f.name for f in fields(Entry)]
+    unknown, missing = set(item) - set(names), set(names) - set(item)
+    if unknown or missing:
+        raise DataError(f"{source}: entry {item.get('name', '?')!r}: unknown keys {sorted(unknown)}, missing {sorted(missing)}")
+    name, size, url = item["name"], item["size"], item["url"]
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise DataError(f"{source}: entry name {name!r} must be 1-64 letters, digits, '.', '_' or '-'")
+    where = f"{source}: entry {name!r}"
+    try:
+        _relative(item["file"])
+    except DataError as exc:
+        raise DataError(f"{where}: {exc}") from None
+    if not isinstance(item["sha256"], str) or not _SHA.fullmatch(item["sha256"]):
+        raise DataError(f"{where}: sha256 must be 64 lowercase hex digits, got {item['sha256']!r}")
+    if isinstance(size, bool) or not isinstance(size, int) or size < 0:
+        raise DataError(f"{where}: size must be a non-negative integer, got {size!r}")
+    if not isinstance(url, str) or not url.startswith(_SCHEMES):
+        raise DataError(f"{where}: url must start with one of {_SCHEMES}, got {url!r}")
+    for key in ("origin", "licence"):
+        if not isinstance(item[key], str):
+            raise DataError(f"{where}: {key} must be a string, got {item[key]!r}")
+    return Entry(**item)
 
 
 def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
-    """All entries of ``data/manifest.toml`` by name."""
+    """All entries of ``data/manifest.toml`` by name, each validated.
+
+    Raises
+    ------
+    DataError
+        If the file is missing or is not valid TOML, or an entry is malformed (wrong keys or types,
+        a ``file`` outside ``data/``, a repeated name).
+    """
     path = Path(manifest_file) if manifest_file else _manifest_path()
-    with open(path, "rb") as fh:
-        raw = tomllib.load(fh)
-    entries = {}
-    for item in raw.get("file", []):
-        try:
-            entry = Entry(**item)
-        except TypeError as exc:
-            raise DataError(f"{path}: malformed entry {item!r} ({exc})") from None
+    items = read_tables(path, "file", DataError)
+    entries: dict[str, Entry] = {}
+    for item in items:
+        entry = _validated(item, path)
+        if entry.name in entries:
+            raise DataError(f"{path}: data set {entry.name!r} is listed twice")
         entries[entry.name] = entry
     return entries
 
@@ -64,19 +123,20 @@ def sha256_of(file: Path) -> str:
     return h.hexdigest()
 
 
-def _entry(name: str, manifest_file: str | Path | None) -> Entry:
+def _entry(name: object, manifest_file: str | Path | None) -> Entry:
     entries = manifest(manifest_file)
-    if name not in entries:
+    if not isinstance(name, str) or name not in entries:
         known = ", ".join(sorted(entries))
         raise DataError(f"unknown data set {name!r}; the manifest lists: {known}")
     return entries[name]
 
 
 def _candidates(entry: Entry) -> list[Path]:
-    return [repo_root() / "data" / entry.file, shared_dir() / "data" / entry.file]
+    return [inside(project_root() / "data", entry.file), inside(shared_dir() / "data", entry.file)]
 
 
-def _check(entry: Entry, file: Path) -> Path:
+def check(entry: Entry, file: Path) -> Path:
+    """``file`` if its sha256 is the manifest's, else a DataError saying what to do."""
     digest = sha256_of(file)
     if digest != entry.sha256:
         raise DataError(
@@ -93,16 +153,18 @@ def path(name: str, manifest_file: str | Path | None = None) -> Path:
     Raises
     ------
     DataError
-        If the name is unknown, no copy exists, or the copy's sha256 does not match.
+        If the name is unknown, the entry leads outside ``data/``, no copy exists, or the copy's
+        sha256 does not match.
     """
     entry = _entry(name, manifest_file)
-    for candidate in _candidates(entry):
+    candidates = _candidates(entry)
+    for candidate in candidates:
         if candidate.is_file():
-            return _check(entry, candidate)
-    tried = " and ".join(str(c) for c in _candidates(entry))
+            return check(entry, candidate)
+    tried = " and ".join(str(c) for c in candidates)
     raise DataError(
         f"data set {name!r} ({entry.file}) is missing: looked in {tried}. Put ../shared beside the "
-        f"checkout, or run `thesis-lab data fetch {name}` to download it from {entry.url}"
+        f"project, or run `thesis-lab data fetch {name}` to download it from {entry.url}"
     )
 
 
@@ -120,23 +182,20 @@ def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]
 def fetch(name: str, manifest_file: str | Path | None = None, timeout: float = 60.0) -> Path:
     """Download data set ``name`` from its public source into ``data/<file>`` and check its sha256.
 
-    This is the only function of thesis-lab that touches the network; it runs only when asked.
+    The download goes to a temporary file beside the target and replaces it only once its sha256
+    is right: an interrupted or wrong download leaves ``data/`` as it was.  This is the only
+    function of thesis-lab that touches the network; it runs only when asked.
     """
     entry = _entry(name, manifest_file)
-    target = repo_root() / "data" / entry.file
+    target = inside(project_root() / "data", entry.file)
     target.parent.mkdir(parents=True, exist_ok=True)
-    with tempfile.NamedTemporaryFile(dir=target.parent, delete=False) as tmp:
-        tmp_path = Path(tmp.name)
+    atomic.clean_stale(target.parent)
+    with atomic.replacing(target) as tmp:
         try:
-            with urllib.request.urlopen(entry.url, timeout=timeout) as response:
-                shutil.copyfileobj(response, tmp)
-        except OSError as exc:
-            tmp_path.unlink(missing_ok=True)
+            with urllib.request.urlopen(entry.url, timeout=timeout) as response, open(tmp, "wb") as fh:
+                shutil.copyfileobj(response, fh)
+        except (OSError, ValueError) as exc:
             raise DataError(f"could not download {name!r} from {entry.url}: {exc}") from None
-    try:
-        _check(entry, tmp_path)
-    except DataError:
-        tmp_path.unlink(missing_ok=True)
-        raise
-    tmp_path.replace(target)
+        check(entry, tmp)
+        inside(project_root() / "data", entry.file)  # the folders may have changed meanwhile
     return target

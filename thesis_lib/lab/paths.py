@@ -1,24 +1,71 @@
-"""Where the compendium keeps things: the repository root and its folders."""
+"""Where the compendium keeps things: the project folder and the shared folder beside it.
+
+The project is any folder that holds ``experiments/`` and ``data/manifest.toml`` (a git checkout, an
+unpacked archive, a copy on a cluster node).  It is found, in this order, from
+
+1. ``--project DIR`` on the command line (which sets ``THESIS_LAB_PROJECT``),
+2. the environment variable ``THESIS_LAB_PROJECT`` (``THESIS_LAB_ROOT`` is an older alias),
+3. the current folder or the nearest folder above it that is a project,
+4. the folder the package itself was installed from (an editable install inside a checkout).
+"""
 
 from __future__ import annotations
 
 import os
 from pathlib import Path
 
-__all__ = ["repo_root", "shared_dir"]
+__all__ = ["PROJECT_ENV", "ProjectError", "is_project", "project_root", "repo_root", "shared_dir"]
+
+#: environment variable naming the project folder (``thesis-lab --project DIR`` sets it)
+PROJECT_ENV = "THESIS_LAB_PROJECT"
+_LEGACY_ENV = "THESIS_LAB_ROOT"
 
 
-def repo_root() -> Path:
-    """The thesis-lab checkout this package runs from (``THESIS_LAB_ROOT`` overrides it)."""
-    env = os.environ.get("THESIS_LAB_ROOT")
-    if env:
-        return Path(env).resolve()
-    return Path(__file__).resolve().parents[2]
+class ProjectError(ValueError):
+    """No thesis-lab project folder could be found, or the one named is not a project."""
+
+
+def is_project(folder: str | Path) -> bool:
+    """Whether ``folder`` holds a thesis-lab project (``experiments/`` and ``data/manifest.toml``)."""
+    folder = Path(folder)
+    return (folder / "experiments").is_dir() and (folder / "data" / "manifest.toml").is_file()
+
+
+def project_root() -> Path:
+    """The project folder this package works on (see the module docstring for the search order).
+
+    Raises
+    ------
+    ProjectError
+        If the environment names a file, or no project is found.
+    """
+    for var in (PROJECT_ENV, _LEGACY_ENV):
+        named = os.environ.get(var)
+        if named:
+            folder = Path(named).expanduser().resolve()
+            if folder.exists() and not folder.is_dir():
+                raise ProjectError(f"{var}={named!r} is a file, not a project folder")
+            return folder
+    here = Path.cwd().resolve()
+    for folder in (here, *here.parents):
+        if is_project(folder):
+            return folder
+    installed = Path(__file__).resolve().parents[2]
+    if is_project(installed):
+        return installed
+    raise ProjectError(
+        f"no thesis-lab project found in {here} or above it, nor at {installed}: run from inside the "
+        f"project folder, pass --project DIR, or set {PROJECT_ENV}=DIR"
+    )
+
+
+#: the name older code uses
+repo_root = project_root
 
 
 def shared_dir() -> Path:
-    """The ``shared/`` folder beside the checkout (``THESIS_LAB_SHARED`` overrides it)."""
+    """The ``shared/`` folder beside the project (``THESIS_LAB_SHARED`` overrides it)."""
     env = os.environ.get("THESIS_LAB_SHARED")
     if env:
         return Path(env).resolve()
-    return repo_root().parent / "shared"
+    return project_root().parent / "shared"

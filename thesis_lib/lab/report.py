@@ -1,33 +1,44 @@
-"""The reproduction report: each numeric claim of the thesis beside what the stored runs measured.
+"""The reproduction report: each claim of the thesis beside what the stored runs measured.
 
-Claims live in ``experiments/claims/*.toml`` as ``[[claim]]`` tables with the keys
-
+Claims live in ``experiments/claims/*.toml`` as ``[[claim]]`` tables (schema in CONVENTIONS.md):
 ``id``, ``where`` (thesis place), ``thesis`` (the thesis's value, as stated), ``result``
-(``"<results name>:<key>"`` or a list of them), ``compare`` (``eq``, ``rel``, ``abs``, ``le``, ``ge``,
-``between``), its tolerances (``rtol``, ``atol``, ``low``, ``high``), optionally ``value`` (the number
-to compare with when ``thesis`` is prose), ``note`` (required unless reproduced) and
-``not_reproducible`` (the thesis's input or set-up cannot be had).
+(``"<results name>:<key>"`` or a list of them; optional with ``compare = "none"``), ``compare``
+(``eq``, ``rel``, ``abs``, ``le``, ``ge``, ``between``, ``none``), its tolerances (``rtol``, ``atol``,
+``low``, ``high``), optionally ``value`` (the number compared with when ``thesis`` is prose),
+``correct`` (errata: the corrected value), ``provenance`` (``computed``, ``reconstructed input``,
+``transcribed``), ``section`` (``thesis`` or ``beyond``), ``link`` (``<book page>#<label>``), ``note``
+(required unless reproduced) and ``not_reproducible``.
 
-The report reads only stored results (``experiments/results/<name>/results.json``), so it works in a
-fresh clone without running anything.
+Statuses are computed, never typed: ``reproduced``, ``differs``, ``erratum`` (passes with ``correct``,
+fails with the thesis's value), ``not-reproducible``, ``figure-only`` (``compare = "none"``) and
+``new`` (``section = "beyond"``, reported in its own section).  The report follows the thesis's
+order: each claim sits where its place (caption, statement or heading) stands in the thesis text.
+It reads only stored results, so it works in a fresh clone without running anything.
 """
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import re
-import tomllib
+from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
-from .paths import repo_root
-from .results import load
+from .paths import project_root, shared_dir
+from .registry import read_tables
+from .results import ResultsError, check_name, load
+from .tables import markdown_table
 
-__all__ = ["Claim", "ClaimError", "load_claims", "evaluate", "report", "markdown"]
+__all__ = ["Claim", "ClaimError", "STATUSES", "load_claims", "evaluate", "report", "summary", "summary_markdown",
+           "markdown", "to_json", "place_line"]
 
-STATUSES = ("reproduced", "differs", "not-reproducible")
-COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between")
+STATUSES = ("reproduced", "erratum", "differs", "not-reproducible", "figure-only", "new")
+COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
+PROVENANCES = ("computed", "reconstructed input", "transcribed")
+SECTIONS = ("thesis", "beyond")
+THESIS_TEXT = "botnan-2011-three-approaches.txt"
 
 
 class ClaimError(ValueError):
@@ -45,68 +56,176 @@ class Claim:
     compare: str
     source: str
     value: object = None
+    correct: object = None
     rtol: float = 0.0
     atol: float = 0.0
     low: float | None = None
     high: float | None = None
     note: str = ""
     not_reproducible: bool = False
+    provenance: str | None = None
+    section: str = "thesis"
+    link: str | None = None
 
-    def reference(self) -> list[float]:
-        """The numbers the comparison uses, one per result key."""
-        ref = self.thesis if self.value is None else self.value
+    def reference(self, which: str = "thesis") -> list[float]:
+        """The numbers the comparison uses, one per result key: the thesis's (``value`` when the
+        thesis is prose) or, with ``which="correct"``, the corrected value of an erratum."""
+        ref = self.correct if which == "correct" else (self.thesis if self.value is None else self.value)
         values = ref if isinstance(ref, list) else [ref] * len(self.result)
         if len(values) != len(self.result):
             raise ClaimError(f"claim {self.id}: {len(values)} reference values for {len(self.result)} results")
-        return [float(v) for v in values]
+        try:
+            return [float(v) for v in values]
+        except (TypeError, ValueError):
+            raise ClaimError(f"claim {self.id}: {which} value {ref!r} is not a number; give `value`") from None
 
 
 def claims_dir() -> Path:
     """Folder of the claim registry."""
-    return repo_root() / "experiments" / "claims"
+    return project_root() / "experiments" / "claims"
 
 
-_KEYS = {"id", "where", "thesis", "result", "compare", "value", "rtol", "atol", "low", "high", "note", "not_reproducible"}
+_KEYS = {"id", "where", "thesis", "result", "compare", "value", "correct", "rtol", "atol", "low", "high", "note",
+         "not_reproducible", "provenance", "section", "link"}
+_LINK = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_./-]*#[A-Za-z0-9_][A-Za-z0-9_.-]*")
 
 
-def _parse(item: dict, source: str) -> Claim:
+def _parse(item: object, source: str) -> Claim:
+    if not isinstance(item, dict):
+        raise ClaimError(f"{source}: a [[claim]] must be a table, got {item!r}")
+    cid = item.get("id", "?")
+    where = f"{source}: claim {cid}"
     unknown = set(item) - _KEYS
-    missing = {"id", "where", "thesis", "result", "compare"} - set(item)
+    required = {"id", "where", "thesis", "compare"} | ({"result"} if item.get("compare") != "none" else set())
+    missing = required - set(item)
     if unknown or missing:
-        raise ClaimError(f"{source}: claim {item.get('id', '?')}: unknown keys {sorted(unknown)}, missing {sorted(missing)}")
-    result = item["result"]
-    result = tuple(result) if isinstance(result, list) else (result,)
+        raise ClaimError(f"{where}: unknown keys {sorted(unknown)}, missing {sorted(missing)}")
+    for key in ("id", "where"):
+        if not isinstance(item[key], str) or not item[key].strip():
+            raise ClaimError(f"{where}: {key} must be a non-empty string")
+    result = item.get("result", ())
+    result = tuple(result) if isinstance(result, list) else (result,) if result != () else ()
     for key in result:
-        if ":" not in key:
-            raise ClaimError(f"{source}: claim {item['id']}: result {key!r} is not '<results name>:<key>'")
+        if not isinstance(key, str) or ":" not in key:
+            raise ClaimError(f"{where}: result {key!r} is not '<results name>:<key>'")
+        try:
+            check_name(key.split(":", 1)[0])
+        except ResultsError as exc:
+            raise ClaimError(f"{where}: result {key!r}: {exc}") from None
     if item["compare"] not in COMPARISONS:
-        raise ClaimError(f"{source}: claim {item['id']}: compare must be one of {COMPARISONS}")
+        raise ClaimError(f"{where}: compare must be one of {COMPARISONS}")
     if item["compare"] == "between" and ("low" not in item or "high" not in item):
-        raise ClaimError(f"{source}: claim {item['id']}: 'between' needs low and high")
+        raise ClaimError(f"{where}: 'between' needs low and high")
+    if "correct" in item and item["compare"] in ("between", "none"):
+        raise ClaimError(f"{where}: 'correct' needs a comparison with a value (not {item['compare']!r})")
+    if item.get("provenance") is not None and item["provenance"] not in PROVENANCES:
+        raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item['provenance']!r}")
+    if item.get("section", "thesis") not in SECTIONS:
+        raise ClaimError(f"{where}: section must be one of {SECTIONS}, got {item['section']!r}")
+    if "link" in item and (not isinstance(item["link"], str) or not _LINK.fullmatch(item["link"]) or ".." in item["link"]):
+        raise ClaimError(f"{where}: link must be '<book page>#<label>' (like 'ch3-curvature#fig-3-5'), got {item['link']!r}")
+    for key in ("rtol", "atol", "low", "high"):
+        if key in item and (isinstance(item[key], bool) or not isinstance(item[key], (int, float))):
+            raise ClaimError(f"{where}: {key} must be a number, got {item[key]!r}")
     fields = {k: v for k, v in item.items() if k != "result"}
     return Claim(result=result, source=source, **fields)
 
 
-def _place(claim: Claim) -> tuple[int, ...]:
-    """Sort key: the first thesis number in ``where`` (``Figure 2.14`` → (2, 14); ``§2.2.2`` → (2, 2, 2))."""
-    m = re.search(r"\d+(?:\.\d+)*", claim.where)
-    return tuple(int(x) for x in m.group(0).split(".")) if m else (99,)
-
-
 def load_claims(directory: Path | None = None) -> list[Claim]:
-    """Every claim of the registry, ordered by thesis place (stable); ids must be unique."""
+    """Every claim of the registry in the thesis's order (stable); ids must be unique."""
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
-        with open(file, "rb") as fh:
-            raw = tomllib.load(fh)
-        claims += [_parse(item, file.name) for item in raw.get("claim", [])]
+        items = read_tables(file, "claim", ClaimError)
+        claims += [_parse(item, file.name) for item in items]
     ids = [c.id for c in claims]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
         raise ClaimError(f"claim ids must be unique; repeated: {sorted(dup)}")
-    return sorted(claims, key=_place)
+    index = _thesis_index()
+    return sorted(claims, key=lambda c: place_line(c.where, index))
 
 
+# ---------------------------------------------------------------------------- thesis order
+_DEFINED = re.compile(r"(Figure|Table) (\d+(?:\.\d+)+):|"
+                      r"(Example|Theorem|Corollary|Lemma|Definition|Proposition|Remark|Algorithm) (\d+(?:\.\d+)*)[.:]")
+_HEADING = re.compile(r"(\d+(?:\.\d+)+) [A-Z]")
+_EQUATION = re.compile(r"\((\d+\.\d+)\)\$*\s*$")
+_REF = re.compile(r"(Figure|Fig\.|Table|Example|Theorem|Corollary|Lemma|Definition|Proposition|Remark|Algorithm|"
+                  r"Eq\.|Equation|§)\s*\(?(\d+(?:\.\d+)*)\)?")
+_KINDS = {"Fig.": "Figure", "Eq.": "Eq", "Equation": "Eq"}
+
+
+def _index_text(text: str) -> dict[tuple[str, str], int]:
+    """Line of each place defined in the thesis text: captions, statements, headings, equation tags."""
+    index: dict[tuple[str, str], int] = {}
+    for number, line in enumerate(text.splitlines()):
+        m = _DEFINED.match(line)
+        if m:
+            kind, num = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
+            index.setdefault((kind, num), number)
+        m = _HEADING.match(line)
+        if m:
+            index.setdefault(("§", m.group(1)), number)
+        m = _EQUATION.search(line)
+        if m:
+            index.setdefault(("Eq", m.group(1)), number)
+        if line.strip() == "Summary":
+            index.setdefault(("Summary", ""), number)
+    return index
+
+
+@functools.lru_cache(maxsize=4)
+def _index_file(path: str, mtime: float) -> dict[tuple[str, str], int]:
+    return _index_text(Path(path).read_text(encoding="utf-8", errors="replace"))
+
+
+def _thesis_index() -> dict[tuple[str, str], int]:
+    path = shared_dir() / "thesis" / THESIS_TEXT
+    try:
+        return _index_file(str(path), path.stat().st_mtime)
+    except OSError:
+        return {}
+
+
+def place_line(where: str, index: dict[tuple[str, str], int] | None = None) -> tuple[float, ...]:
+    """Sort key of a thesis place: the line where its first reference is defined in the thesis text
+    (``Figure 3.5`` → its caption, ``Example 2.36`` → its statement, ``§3.4.2`` → its heading), else
+    the heading of its section (``Figure 9.1`` → ``9.1``), else its numbers; places with none go last."""
+    index = _thesis_index() if index is None else index
+    refs = [(_KINDS.get(k, k), n) for k, n in _REF.findall(where)]
+    if "Summary" in where:
+        refs.append(("Summary", ""))
+    for ref in refs:
+        if ref in index:
+            return (index[ref], 0.0)
+    for kind, num in refs:  # not in the text: after the nearest place of its kind before it, or its section
+        if not num:
+            continue
+        key = _numbers(num)
+        before = [line for (k, n), line in index.items() if k == kind and n and key[0] == _numbers(n)[0]
+                  and _numbers(n) < key]
+        if before:
+            return (max(before), 0.5)
+        parts = num.split(".")
+        for k in range(len(parts), 0, -1):
+            head = ("§", ".".join(parts[:k]) if k > 1 else f"{parts[0]}.1")
+            if head in index:
+                return (index[head], 0.5)
+    if refs and refs[0][1]:
+        return (float("inf"),) + tuple(float(x) for x in refs[0][1].split("."))
+    return (float("inf"), float("inf"))
+
+
+def _numbers(num: str) -> tuple[int, ...]:
+    return tuple(int(x) for x in num.split("."))
+
+
+def _chapter(where: str) -> str:
+    m = re.search(r"\d+", where)
+    return m.group(0) if m else ("5" if "Summary" in where else "other")
+
+
+# ---------------------------------------------------------------------------- evaluation
 def _ours(claim: Claim, cache: dict[str, dict]) -> list[float] | None:
     values = []
     for ref in claim.result:
@@ -119,14 +238,14 @@ def _ours(claim: Claim, cache: dict[str, dict]) -> list[float] | None:
         if key not in cache[name]:
             return None
         values.append(float(cache[name][key]))
-    return values
+    return values or None
 
 
-def _holds(claim: Claim, ours: list[float]) -> bool:
+def _holds(claim: Claim, ours: list[float], reference: list[float] | None) -> bool:
     if claim.compare == "between":
         return all(claim.low <= o <= claim.high for o in ours)
     checks = []
-    for o, t in zip(ours, claim.reference()):
+    for o, t in zip(ours, reference):
         if math.isnan(o):
             checks.append(False)
         elif claim.compare == "eq":
@@ -142,17 +261,27 @@ def _holds(claim: Claim, ours: list[float]) -> bool:
     return all(checks)
 
 
+def _status(claim: Claim, ours: list[float] | None) -> str:
+    if claim.section == "beyond":
+        return "new"
+    if claim.not_reproducible or (ours is None and claim.compare != "none"):
+        return "not-reproducible"
+    if claim.compare == "none":
+        return "figure-only"
+    reference = None if claim.compare == "between" else claim.reference()
+    if _holds(claim, ours, reference):
+        return "reproduced"
+    if claim.correct is not None and _holds(claim, ours, claim.reference("correct")):
+        return "erratum"
+    return "differs"
+
+
 def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, object]:
-    """The report row of one claim: id, where, thesis, ours, status, note."""
+    """The report row of one claim: id, where, thesis, ours, status, note, provenance, section, link, correct."""
     ours = _ours(claim, {} if cache is None else cache)
-    if claim.not_reproducible:
-        status = "not-reproducible"
-    elif ours is None:
-        status = "not-reproducible"
-    else:
-        status = "reproduced" if _holds(claim, ours) else "differs"
+    status = _status(claim, ours)
     note = claim.note
-    if ours is None and not claim.not_reproducible:
+    if ours is None and claim.result and not claim.not_reproducible:
         note = f"no stored result for {', '.join(claim.result)}: run `make experiments`"
     if status != "reproduced" and not note:
         raise ClaimError(f"claim {claim.id} is {status} but has no note saying why")
@@ -161,13 +290,47 @@ def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, ob
         shown = int(shown)
     elif isinstance(shown, list):
         shown = [int(v) if float(v).is_integer() else v for v in shown]
-    return {"id": claim.id, "where": claim.where, "thesis": claim.thesis, "ours": shown, "status": status, "note": note}
+    return {"id": claim.id, "where": claim.where, "thesis": claim.thesis, "ours": shown, "status": status,
+            "note": note, "provenance": claim.provenance, "section": claim.section, "link": claim.link,
+            "correct": claim.correct}
 
 
 def report(directory: Path | None = None) -> list[dict[str, object]]:
-    """Rows of the whole report, one per claim."""
+    """Rows of the whole report, one per claim, in the thesis's order."""
     cache: dict[str, dict] = {}
     return [evaluate(c, cache) for c in load_claims(directory)]
+
+
+def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
+    """Counts of the report: ``total``, ``by_status`` (every status, zeros included), ``by_chapter``
+    (chapter → status → count, thesis section only), ``by_provenance`` and ``beyond`` (new work)."""
+    rows = report() if rows is None else rows
+    thesis = [r for r in rows if r.get("section", "thesis") == "thesis"]
+    by_chapter: dict[str, dict[str, int]] = {}
+    for r in thesis:
+        counts = by_chapter.setdefault(_chapter(str(r["where"])), {})
+        counts[r["status"]] = counts.get(r["status"], 0) + 1
+    return {
+        "total": len(rows),
+        "by_status": {s: sum(r["status"] == s for r in rows) for s in STATUSES},
+        "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (not kv[0].isdigit(), kv[0].zfill(3)))),
+        "by_provenance": dict(Counter(r.get("provenance") or "unstated" for r in rows)),
+        "beyond": len(rows) - len(thesis),
+    }
+
+
+def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
+    """The summary as Markdown: one sentence of counts, then claims per chapter by status."""
+    s = summary(rows)
+    counts = ", ".join(f"{n} {status}" for status, n in s["by_status"].items() if n)
+    prov = ", ".join(f"{n} {p}" for p, n in sorted(s["by_provenance"].items()))
+    lines = [f"{s['total']} claims: {counts}. Provenance: {prov}."]
+    shown = [st for st in STATUSES if st != "new" and any(st in c for c in s["by_chapter"].values())]
+    if shown:
+        table = [[f"Chapter {ch}" if ch.isdigit() else ch] + [c.get(st, 0) for st in shown] + [sum(c.values())]
+                 for ch, c in s["by_chapter"].items()]
+        lines += ["", markdown_table(["chapter"] + shown + ["claims"], table).rstrip("\n")]
+    return "\n".join(lines) + "\n"
 
 
 def _fmt(value: object) -> str:
@@ -178,16 +341,34 @@ def _fmt(value: object) -> str:
     return "—" if value is None else str(value)
 
 
-def markdown(rows: list[dict[str, object]] | None = None) -> str:
-    """The report as a Markdown table (what the book's report page shows)."""
+def _place(row: dict[str, object], link_suffix: str) -> str:
+    link = row.get("link")
+    if not link:
+        return str(row["where"])
+    page, label = str(link).split("#", 1)
+    return f"[{row['where']}]({page}{link_suffix}#{label})"
+
+
+def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False, link_suffix: str = ".html") -> str:
+    """The report as Markdown: the thesis's claims in its order, then new work beyond the thesis.
+
+    ``with_summary`` puts :func:`summary_markdown` first; a claim's thesis place links to
+    ``<page><link_suffix>#<label>`` where the book computes it.
+    """
     rows = report() if rows is None else rows
-    lines = ["| claim | thesis place | thesis | ours | status | note |", "|---|---|---|---|---|---|"]
-    for r in rows:
-        cells = [r["id"], r["where"], _fmt(r["thesis"]), _fmt(r["ours"]), f"**{r['status']}**", r["note"]]
-        lines.append("| " + " | ".join(str(c).replace("|", "\\|") for c in cells) + " |")
-    counts = {s: sum(r["status"] == s for r in rows) for s in STATUSES}
-    summary = ", ".join(f"{n} {s}" for s, n in counts.items())
-    return "\n".join(lines) + f"\n\n{len(rows)} claims: {summary}.\n"
+    titles = ["claim", "thesis place", "thesis", "ours", "status", "provenance", "note"]
+
+    def table(part):
+        return markdown_table(titles, [[r["id"], _place(r, link_suffix), _fmt(r["thesis"]), _fmt(r["ours"]),
+                                         f"**{r['status']}**", r.get("provenance") or "", r["note"]] for r in part])
+
+    thesis = [r for r in rows if r.get("section", "thesis") == "thesis"]
+    beyond = [r for r in rows if r.get("section") == "beyond"]
+    parts = [summary_markdown(rows)] if with_summary else []
+    parts.append(table(thesis))
+    if beyond:
+        parts.append("### Beyond the thesis\n\n" + table(beyond))
+    return "\n".join(parts)
 
 
 def to_json(rows: list[dict[str, object]] | None = None) -> str:

@@ -12,9 +12,21 @@ import numbers
 import os
 from pathlib import Path
 
-from .paths import repo_root
+from . import atomic
+from .paths import project_root
 
-__all__ = ["Recorder", "load", "figure", "results_dir", "round_sig", "RESULTS_FILE", "TIMINGS_FILE", "RESULT_DIGITS"]
+__all__ = [
+    "Recorder",
+    "ResultsError",
+    "check_name",
+    "load",
+    "figure",
+    "results_dir",
+    "round_sig",
+    "RESULTS_FILE",
+    "TIMINGS_FILE",
+    "RESULT_DIGITS",
+]
 
 RESULTS_FILE = "results.json"
 #: wall-clock times vary from run to run: kept apart from the results, and not committed
@@ -41,9 +53,20 @@ def round_sig(x: float, digits: int) -> float:
     return round(x, digits - 1 - math.floor(math.log10(abs(x))))
 
 
+class ResultsError(ValueError):
+    """Stored results are unreadable (not JSON, not a flat table of numbers) or a name is not a name."""
+
+
+def check_name(name: object) -> str:
+    """``name`` if it can name a results folder: a non-empty name with no path separator, never ``..``."""
+    if not isinstance(name, str) or not name or name in (".", "..") or any(c in name for c in "/\\\x00"):
+        raise ResultsError(f"invalid experiment name {name!r}: a results name has no path separator and is not '..'")
+    return name
+
+
 def results_dir(name: str) -> Path:
     """Folder of the stored default run of experiment ``name`` (committed with the repository)."""
-    return repo_root() / "experiments" / "results" / name
+    return project_root() / "experiments" / "results" / check_name(name)
 
 
 def _as_number(key: str, value) -> float | int:
@@ -68,9 +91,7 @@ class Recorder:
     """
 
     def __init__(self, name: str, output_dir: str | Path | None = ""):
-        if not name or "/" in name:
-            raise ValueError(f"invalid experiment name {name!r}")
-        self.name = name
+        self.name = check_name(name)
         redirect = os.environ.get(DEFAULT_RUN_ENV)
         default = Path(redirect) / name if redirect else results_dir(name)
         self.path = Path(output_dir) if output_dir else default
@@ -78,49 +99,71 @@ class Recorder:
         self.results: dict[str, float | int] = {}
         self._write()
 
-    def record(self, **values) -> dict[str, float | int]:
-        """Add flat ``name=number`` results and rewrite ``results.json``; returns what was recorded."""
+    def record(self, **values) -> None:
+        """Add flat ``name=number`` results and rewrite ``results.json`` (atomically).
+
+        Reals are rounded to ``RESULT_DIGITS`` significant digits.  Returns None, so that a notebook
+        cell ending with a ``record`` call shows nothing; read values back from ``rec.results``.
+        """
+        checked = {}
         for key, value in values.items():
             if not key.replace("_", "").isalnum():
                 raise ValueError(f"result names are identifiers, got {key!r}")
-            self.results[key] = _as_number(key, value)
+            checked[key] = _as_number(key, value)
+        self.results.update(checked)
         self._write()
-        return {k: self.results[k] for k in values}
 
     def timing(self, **seconds) -> None:
         """Record wall-clock times (``timings.json``): shown to the reader, never compared."""
         file = self.path / TIMINGS_FILE
         times = json.loads(file.read_text()) if file.exists() else {}
         times.update({k: round(float(v), 4) for k, v in seconds.items()})
-        file.write_text(json.dumps(times, indent=1, sort_keys=True) + "\n")
+        atomic.write_text(file, json.dumps(times, indent=1, sort_keys=True) + "\n")
 
     def savefig(self, fig, stem: str, dpi: int = 110) -> Path:
         """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs)."""
-        out = self.path / f"{stem}.png"
-        fig.savefig(out, dpi=dpi, bbox_inches="tight", metadata={"Software": None})
+        out = self.path / f"{check_name(stem)}.png"
+        with atomic.replacing(out) as tmp:
+            fig.savefig(tmp, format="png", dpi=dpi, bbox_inches="tight", metadata={"Software": None})
         return out
 
     def _write(self) -> None:
         text = json.dumps(self.results, indent=1, sort_keys=True, allow_nan=True)
-        (self.path / RESULTS_FILE).write_text(text + "\n")
+        atomic.write_text(self.path / RESULTS_FILE, text + "\n")
 
 
 def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | int]:
-    """Read the results of experiment ``name`` (default: its stored default run)."""
+    """Read the results of experiment ``name`` (default: its stored default run).
+
+    Raises
+    ------
+    FileNotFoundError
+        If there are no stored results (saying how to make them).
+    ResultsError
+        If ``results.json`` is not valid JSON or not a flat table of numbers (saying how to restore it).
+    """
     path = (Path(output_dir) if output_dir else results_dir(name)) / RESULTS_FILE
     if not path.exists():
         raise FileNotFoundError(
             f"no stored results for {name!r} at {path}; run `thesis-lab run {name}` or `make experiments`"
         )
-    data = json.loads(path.read_text())
-    return {k: (v if not isinstance(v, float) or not math.isnan(v) else math.nan) for k, v in data.items()}
+    restore = f"re-run `thesis-lab store {name}` or restore it with `git checkout -- {path.name}` in its folder"
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise ResultsError(f"{path} is not valid JSON ({exc}): it is truncated or corrupt; {restore}") from None
+    if not isinstance(data, dict) or not all(
+        isinstance(v, (int, float)) and not isinstance(v, bool) for v in data.values()
+    ):
+        raise ResultsError(f"{path} must hold a flat JSON object of numbers; {restore}")
+    return data
 
 
 def figure(name: str, stem: str, width: int = 640):
     """A stored figure of experiment ``name``'s default run, for display in a notebook."""
     from IPython.display import Image
 
-    path = results_dir(name) / f"{stem}.png"
+    path = results_dir(name) / f"{check_name(stem)}.png"
     if not path.exists():
         raise FileNotFoundError(f"no stored figure {stem!r} for {name!r} at {path}; run `make experiments`")
     return Image(filename=str(path), width=width)

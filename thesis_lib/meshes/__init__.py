@@ -1,6 +1,7 @@
 """Triangulations for chapter 3: parameter grids (torus, Freudenthal subdivisions of the 3-sphere
 and the n-catenoid), convex hulls of spheres, random surface samples, the Crust algorithm [ABK98]
-and ball pivoting; plus the thesis's neighbour-grid stencil and topological checks.
+and ball pivoting; plus the thesis's neighbour-grid stencil, topological checks, and mesh files and
+pyvista meshes in and out (:mod:`.io`).
 """
 
 from .crust import crust, crust_candidates, extract_manifold, poles
@@ -14,13 +15,16 @@ from .grids import (
     torus_grid,
 )
 from .hull import convex_hull_surface, orient_outward, sphere_hull
+from .io import from_pyvista, read_mesh, to_pyvista, write_mesh
 from .plotting import mesh_figure, render_mesh
 from .pivoting import ball_pivoting, estimate_normals
+from .reconstruct import RECONSTRUCTIONS, reconstruct_surface
 from .sampling import sample_catenoid, sample_sphere, sample_torus
 from .stencil import cross_stars, neighbour_grid_mean_curvature
 from .topology import euler_characteristic, facet_degrees, faces_of, is_closed_pseudomanifold
 
 __all__ = [
+    "RECONSTRUCTIONS",
     "ball_pivoting",
     "catenoid_freudenthal",
     "convex_hull_surface",
@@ -33,6 +37,7 @@ __all__ = [
     "faces_of",
     "facet_degrees",
     "freudenthal",
+    "from_pyvista",
     "grid_parameters",
     "hypersphere_freudenthal",
     "is_closed_pseudomanifold",
@@ -41,11 +46,15 @@ __all__ = [
     "neighbour_grid_mean_curvature",
     "orient_outward",
     "poles",
+    "read_mesh",
+    "reconstruct_surface",
     "render_mesh",
     "sample_catenoid",
     "sample_sphere",
     "sample_torus",
     "sphere_hull",
+    "to_pyvista",
     "torus_chosen_points",
     "torus_grid",
+    "write_mesh",
 ]

@@ -27,15 +27,23 @@ pole whose half-line removes the midpoint.  This gives the triangles of Del(S �
 compares with Qhull's triangulation of S ∪ P — at a fraction of the cost: the poles cluster along
 the medial axis, where Qhull builds about 34 tetrahedra per point (6·10⁴ torus samples) and took
 70 s at 10⁵ samples for this step alone.
+
+Degenerate samples.  Four co-circular samples (the isosceles-trapezoid quads of a parameter grid,
+such as the thesis's chosen points on the torus) make a flat Delaunay tetrahedron with no
+circumcentre.  They are resolved as a symbolic perturbation would (:func:`_flat_tetrahedra`): one
+diagonal per quadrilateral, its two triangles joined to the Voronoi vertices on both sides, so the
+Crust of such a grid is closed.
 """
 
 from __future__ import annotations
 
-import numba
+from ..jit import njit
 import numpy as np
-from scipy.spatial import Delaunay, cKDTree
+import numpy.typing as npt
+from scipy.spatial import Delaunay, QhullError, cKDTree
 
-from .._validate import as_points
+from .._validate import as_points, check_real, check_simplices
+from ..complexes.scaling import scaled
 
 __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
 
@@ -71,19 +79,29 @@ def _group_argmax(group: np.ndarray, value: np.ndarray, n_groups: int) -> np.nda
     return out
 
 
-def _samples(points) -> np.ndarray:
+def _samples(points) -> tuple[np.ndarray, int]:
     pts = as_points(points, min_points=5, allow_duplicates=False)
     if pts.shape[1] != 3:
         raise ValueError(f"crust needs points in R³, got dimension {pts.shape[1]}")
-    return pts
+    # the Crust is scale-equivariant: run it on points scaled by a power of two to about 1 (Qhull
+    # crashes on coordinates near 1e150, squared distances overflow beyond)
+    return scaled(pts)
 
 
-def _far(pts: np.ndarray, far: float | None) -> float:
+def _far(pts: np.ndarray, far: float | None, e: int) -> float:
+    """``far`` in the scaled units (default: half the bounding-box diagonal)."""
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
-    far = 0.5 * diag if far is None else float(far)
-    if not np.isfinite(far) or far <= 0:
-        raise ValueError(f"far must be a positive distance, got {far!r}")
-    return far
+    if far is None:
+        return 0.5 * diag
+    with np.errstate(over="ignore"):
+        return float(np.ldexp(check_real(far, "far", positive=True), e))
+
+
+def _delaunay(pts: np.ndarray) -> Delaunay:
+    try:
+        return Delaunay(pts)
+    except QhullError:
+        raise ValueError("the samples lie in a plane (or a line): the Crust needs a surface sampled in R³") from None
 
 
 def _poles(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: float):
@@ -125,16 +143,78 @@ def _poles(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: 
     return pts + plus_vec, pts + minus_vec
 
 
-def poles(points, far: float | None = None):
-    """The poles p⁺ and p⁻ of every sample (ABK98, §4): arrays ``(n, 3)`` each.
+def poles(points: npt.ArrayLike, far: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """The poles p⁺ and p⁻ of every sample (ABK98, §4).
 
-    ``far`` is the distance used for poles at infinity and caps all pole distances (default: half
-    the diagonal of the bounding box).  p⁻ falls back to the reflection of p⁺ when a cell has no
-    Voronoi vertex on the opposite side.  Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
+    Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
+
+    Parameters
+    ----------
+    points : (n, 3) samples, n >= 5, no duplicates, not coplanar.
+    far : distance used for poles at infinity, and cap of all pole distances (default: half the
+        diagonal of the bounding box).
+
+    Returns
+    -------
+    p_plus, p_minus : (n, 3) arrays; p⁻ falls back to the reflection of p⁺ when a cell has no
+        Voronoi vertex on the opposite side.
     """
-    pts = _samples(points)
-    tri = Delaunay(pts)
-    return _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far))
+    pts, e = _samples(points)
+    tri = _delaunay(pts)
+    p_plus, p_minus = _poles(pts, tri, *_circumcentres(pts[tri.simplices]), _far(pts, far, e))
+    return np.ldexp(p_plus, -e), np.ldexp(p_minus, -e)
+
+
+def _flat_tetrahedra(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray):
+    """Degenerate (co-circular) Delaunay cells, seen as a symbolic perturbation would see them.
+
+    Four co-circular samples (an isosceles trapezoid of a parameter grid, say) have a one-parameter
+    family of empty spheres, and Qhull's triangulated output puts a flat tetrahedron between the
+    two cells on either side of the quadrilateral: one diagonal's two triangles face one side, the
+    other diagonal's face the other, and no circumcentre exists.  A slight perturbation of the
+    points would keep one diagonal on both sides.  We keep the diagonal through the smallest sample
+    index (a combinatorial rule, so the choice does not depend on rounding) and drop the other
+    diagonal's two faces; the Voronoi edge dual to a kept face joins the circumcentres of the cells
+    on the two sides (all of them lie on the axis of the circle), which is the dual edge the
+    perturbed triangulation would have.
+
+    Returns ``(centre, keep, across)``: ``centre`` is ``cc`` with the circle's centre for flat
+    tetrahedra; ``keep[t, k]`` says whether face slot k of tetrahedron t stays a Delaunay face;
+    ``across[t, k]`` is, for a kept face of a flat tetrahedron, the cell on the far side of the flat
+    tetrahedron (a neighbour across a dropped face; -1 for the outside) and otherwise t itself.
+    """
+    tets, nbr = tri.simplices, tri.neighbors
+    n_tets = len(tets)
+    centre = cc.copy()
+    keep = np.ones((n_tets, 4), dtype=bool)
+    across = np.repeat(np.arange(n_tets)[:, None], 4, axis=1)
+    flat = np.flatnonzero(~ok)
+    if len(flat) == 0:
+        return centre, keep, across
+    p = pts[tets[flat]]  # (f, 4, 3)
+    # circle centre: circumcentre of the largest of the four faces (they share one circle)
+    faces = np.stack([np.delete(p, k, axis=1) for k in range(4)], axis=1)  # (f, 4, 3, 3)
+    a, b = faces[:, :, 1] - faces[:, :, 0], faces[:, :, 2] - faces[:, :, 0]
+    axb = np.cross(a, b)
+    big = np.argmax(np.einsum("fkj,fkj->fk", axb, axb), axis=1)
+    rows = np.arange(len(flat))
+    a, b, axb, p0 = a[rows, big], b[rows, big], axb[rows, big], faces[rows, big, 0]
+    num = np.cross(np.einsum("ij,ij->i", a, a)[:, None] * b - np.einsum("ij,ij->i", b, b)[:, None] * a, axb)
+    centre[flat] = p0 + num / (2 * np.einsum("ij,ij->i", axb, axb)[:, None] + 1e-300)
+    # the diagonals are the pairing of the four vertices with the largest total length
+    pairings = (((0, 1), (2, 3)), ((0, 2), (1, 3)), ((0, 3), (1, 2)))
+    length = np.stack([sum(np.linalg.norm(p[:, i] - p[:, j], axis=1) for i, j in pr) for pr in pairings], axis=1)
+    best = np.argmax(length, axis=1)
+    lowest = np.argmin(tets[flat], axis=1)
+    for j, t in enumerate(flat):
+        d1, d2 = pairings[best[j]]
+        kept, other = (d1, d2) if lowest[j] in d1 else (d2, d1)
+        # a face keeps the diagonal `kept` when its opposite vertex (its slot) lies on `other`
+        keep[t, list(kept)] = False
+        far = [int(nbr[t, k]) for k in kept]
+        far = sorted(far, key=lambda x: (x < 0, x >= 0 and not ok[x]))[0]
+        across[t, list(other)] = far
+    return centre, keep, across
 
 
 def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, p_plus: np.ndarray, theta: float):
@@ -142,33 +222,46 @@ def _candidate_edges(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndar
     ``c0 + t d``, t ∈ [0, t_max].
 
     Processed one face slot of the tetrahedra at a time (peak memory); the normal filter comes
-    first as it is cheap and shortens the Voronoi filter's work.  Triangles next to a flat
-    tetrahedron (no circumcentre) are left out.
+    first as it is cheap and shortens the Voronoi filter's work.  Flat tetrahedra (co-circular
+    samples) are resolved by :func:`_flat_tetrahedra`.
     """
     tets, nbr = tri.simplices, tri.neighbors
     idx = np.arange(len(tets))
     diag = float(np.linalg.norm(pts.max(0) - pts.min(0)))
+    centre, keep, across = _flat_tetrahedra(pts, tri, cc, ok)
     faces, c0s, ds, tmaxs = [], [], [], []
     for k in range(4):
         other = nbr[:, k]
         sel = (other == -1) | (other > idx)  # each interior face once, from its lower tetrahedron
         i, o = idx[sel], other[sel]
         face = np.delete(tets[i], k, axis=1)
-        good = ok[i] & ok[np.where(o >= 0, o, i)]
-        good[good] = _normal_filter(pts, face[good], p_plus, theta)
-        i, o, face = i[good], o[good], face[good]
-        c0 = cc[i]
-        d = np.empty_like(c0)
+        # the slot of this face in the neighbour (to read the neighbour's flat-cell data)
+        ko = np.zeros(len(o), dtype=np.int64)
         inner = o >= 0
-        d[inner] = cc[o[inner]] - c0[inner]
-        hp = pts[face[~inner]]  # convex-hull face: a ray away from the opposite vertex
+        ko[inner] = np.argmax(nbr[o[inner]] == i[inner, None], axis=1)
+        good = keep[i, k] & np.where(inner, keep[np.maximum(o, 0), ko], True)
+        # the two cells joined by the dual Voronoi edge (-1 = outside: the edge is a ray)
+        end0 = across[i, k]
+        end1 = np.where(inner, across[np.maximum(o, 0), ko], -1)
+        end0, end1 = np.where(end0 < 0, end1, end0), np.where(end0 < 0, end0, end1)
+        good &= end0 >= 0
+        good[good] = _normal_filter(pts, face[good], p_plus, theta)
+        face, end0, end1 = face[good], end0[good], end1[good]
+        c0 = centre[end0]
+        d = np.empty_like(c0)
+        bounded = end1 >= 0
+        d[bounded] = centre[end1[bounded]] - c0[bounded]
+        # a face on the convex hull: a ray away from the vertex of end0 farthest from its plane
+        hp = pts[face[~bounded]]
         nrm = np.cross(hp[:, 1] - hp[:, 0], hp[:, 2] - hp[:, 0])
-        nrm *= np.sign(np.einsum("ij,ij->i", nrm, hp[:, 0] - pts[tets[i[~inner], k]]))[:, None]
-        d[~inner] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
+        height = np.einsum("ikj,ij->ik", pts[tets[end0[~bounded]]] - hp[:, :1], nrm)
+        apex = height[np.arange(len(height)), np.argmax(np.abs(height), axis=1)]
+        nrm *= -np.sign(apex)[:, None]
+        d[~bounded] = nrm * (diag / (np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300))
         faces.append(face)
         c0s.append(c0)
         ds.append(d)
-        tmaxs.append(np.where(inner, 1.0, _RAY_LENGTH))
+        tmaxs.append(np.where(bounded, 1.0, _RAY_LENGTH))
     return np.concatenate(faces), np.concatenate(c0s), np.concatenate(ds), np.concatenate(tmaxs)
 
 
@@ -237,19 +330,29 @@ def _normal_filter(pts: np.ndarray, faces: np.ndarray, p_plus: np.ndarray, theta
     return np.all(c >= limit, axis=1)
 
 
-def crust_candidates(points, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
+def crust_candidates(points: npt.ArrayLike, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
     """Steps 1–4 of the Crust: Delaunay triangles of S ∪ P with sample vertices, filtered by normal.
 
-    Returns ``(m, 3)`` vertex triples, each sorted, in lexicographic order.
     Thesis: §3.4, "Triangulations" ([ABK98]).
+
+    Parameters
+    ----------
+    points, far
+        As in :func:`poles`.
+    theta : normal-filter angle in (0, π/2).
+
+    Returns
+    -------
+    ndarray, shape (m, 3)
+        Vertex triples, each sorted, in lexicographic order.
     """
-    theta = float(theta)
+    theta = check_real(theta, "theta")
     if not 0 < theta < np.pi / 2:
         raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
-    pts = _samples(points)
-    tri = Delaunay(pts)
+    pts, e = _samples(points)
+    tri = _delaunay(pts)
     cc, ok = _circumcentres(pts[tri.simplices])
-    p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far))
+    p_plus, p_minus = _poles(pts, tri, cc, ok, _far(pts, far, e))
     faces, c0, d, t_max = _candidate_edges(pts, tri, cc, ok, p_plus, theta)
     faces = faces[_voronoi_filter(pts, faces, c0, d, t_max, np.vstack([p_plus, p_minus]))]
     faces = np.sort(faces, axis=1)
@@ -269,7 +372,7 @@ def _edge_structure(tris: np.ndarray, nv: int):
     return uniq, edge_of, start, tri_of
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _sharp_edges(pts, tris, alive, uniq, start, tri_of, nv):
     ne = len(uniq)
     sharp = np.zeros(ne, dtype=np.bool_)
@@ -325,7 +428,7 @@ def _prune_sharp(pts, tris, max_rounds=10000):
     return tris[alive]
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _walk(pts, tris, edge_of, start, tri_of, seed_tri, seed_flip):
     nt = len(tris)
     orient = np.zeros((nt, 3), dtype=np.int64)
@@ -396,7 +499,7 @@ def _walk(pts, tris, edge_of, start, tri_of, seed_tri, seed_flip):
     return orient, visit[:nvisit], conflicts
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _greedy_manifold(edge_of, order, n_edges):
     """Keep faces in visiting order while each of their edges has fewer than two kept faces."""
     used = np.zeros(n_edges, dtype=np.int64)
@@ -410,21 +513,29 @@ def _greedy_manifold(edge_of, order, n_edges):
     return keep
 
 
-def extract_manifold(points, triangles, prune: bool = True):
+def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: bool = True) -> tuple[np.ndarray, int]:
     """Trimming step of the Crust: sharp-edge removal, then the outer walk from an outer triangle.
 
-    Returns ``(faces, conflicts)``: consistently oriented faces (outward for a closed surface) and the
-    number of orientation conflicts met by the walk (0 for an orientable manifold result).  Faces
-    that would put a third face on an edge are left out (in visiting order), so every edge of the
-    result lies in one or two faces.
     Thesis: §3.4, "Triangulations" ([ABK98], manifold extraction).
+
+    Parameters
+    ----------
+    points : (n, 3) samples.
+    triangles : (m, 3) candidate triangles (indices into ``points``).
+    prune : remove triangles with sharp edges first.
+
+    Returns
+    -------
+    faces : consistently oriented faces (outward for a closed surface); faces that would put a
+        third face on an edge are left out (in visiting order), so every edge of the result lies in
+        one or two faces.
+    conflicts : the number of orientation conflicts met by the walk (0 for an orientable result).
     """
     pts = as_points(points, min_points=3)
-    tris = np.asarray(triangles, dtype=np.int64)
-    if tris.ndim != 2 or tris.shape[1] != 3 or len(tris) == 0:
-        raise ValueError(f"triangles must be a non-empty (m, 3) array, got shape {tris.shape}")
-    if tris.min() < 0 or tris.max() >= len(pts):
-        raise ValueError("triangles refer to points that do not exist")
+    if pts.shape[1] != 3:
+        raise ValueError(f"the trimming walks surfaces in R³, got points in R^{pts.shape[1]}")
+    pts, _ = scaled(pts)  # angles only: scale-invariant, and cross products stay finite
+    tris = check_simplices(triangles, len(pts), "triangles", width=3)
     if prune:
         tris = _prune_sharp(pts, tris)
         if len(tris) == 0:
@@ -446,7 +557,7 @@ def extract_manifold(points, triangles, prune: bool = True):
     return orient[order[keep]], int(conflicts)
 
 
-def crust(points, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
+def crust(points: npt.ArrayLike, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
     """Triangulate a point cloud sampled from a surface in R³ with the Crust algorithm [ABK98].
 
     Parameters
@@ -464,12 +575,13 @@ def crust(points, theta: float = np.pi / 4, prune: bool = True, far: float | Non
 
     Returns
     -------
-    ``(m, 3)`` faces into ``points``, consistently oriented (outward for a closed surface).
+    ndarray, shape (m, 3)
+        Faces into ``points``, consistently oriented (outward for a closed surface).
 
     Thesis: §3.4, "Triangulations" (the Crust algorithm [ABK98], used for Figures 3.8–3.11).
     """
-    pts = _samples(points)
-    cand = crust_candidates(pts, theta, far)
+    cand = crust_candidates(points, theta, far)
+    pts, _ = _samples(points)
     if len(cand) == 0:
         raise ValueError("no triangle survived the Crust's filtering")
     try:

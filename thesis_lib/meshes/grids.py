@@ -9,12 +9,17 @@ through a parametrisation X this triangulates the hypersurfaces of §3.4 in any 
 from __future__ import annotations
 
 import itertools
+import math
+from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import cKDTree
 
+from .._validate import InvalidTypeError, as_points, check_int, check_real, check_simplices, check_size
+from ..complexes.scaling import scaled
 from ..curvature.exact import catenoid_point, hypersphere_point, torus_point
 
 __all__ = [
@@ -28,17 +33,20 @@ __all__ = [
 ]
 
 
-def _count(name: str, n, low: int = 1) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < low:
-        raise ValueError(f"{name} must be an integer >= {low}, got {n!r}")
-    return int(n)
-
-
-def _positive(name: str, x) -> float:
-    x = float(x)
-    if not np.isfinite(x) or x <= 0:
-        raise ValueError(f"{name} must be a positive finite number, got {x!r}")
-    return x
+def _check_grid(shape, periodic) -> tuple[tuple[int, ...], tuple[bool, ...]]:
+    """Validated grid shape and periodicity; refuses up front a triangulation too large to build."""
+    shape = tuple(shape) if np.ndim(shape) else (shape,)
+    if len(shape) == 0:
+        raise ValueError("shape must have at least one axis")
+    n = len(shape)
+    per = (bool(periodic),) * n if np.ndim(periodic) == 0 else tuple(bool(p) for p in periodic)
+    if len(per) != n:
+        raise ValueError(f"periodic has {len(per)} entries for {n} axes")
+    shape = tuple(check_int(m, "grid size", minimum=3 if p else 2) for m, p in zip(shape, per))
+    cells = math.prod(m if p else m - 1 for m, p in zip(shape, per))
+    count = math.factorial(n) * cells
+    check_size(count * (n + 1), f"vertex entries ({count:,} simplices of {n + 1} vertices)")
+    return shape, per
 
 
 def _permutation_sign(perm: tuple[int, ...]) -> int:
@@ -52,7 +60,7 @@ def _permutation_sign(perm: tuple[int, ...]) -> int:
     return sign
 
 
-def freudenthal(shape, periodic=False) -> np.ndarray:
+def freudenthal(shape: Sequence[int] | int, periodic: bool | Sequence[bool] = False) -> np.ndarray:
     """Freudenthal/Kuhn subdivision of an n-dimensional vertex grid into n-simplices.
 
     Parameters
@@ -67,16 +75,15 @@ def freudenthal(shape, periodic=False) -> np.ndarray:
     (det[v_1 - v_0, ..., v_n - v_0] > 0 before wrapping).
 
     Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
+
+    Raises
+    ------
+    ValueError
+        On a bad shape, or when the triangulation would hold more than 10⁹ vertex entries (say
+        ``(2,) * 12``: 12! = 479,001,600 simplices), before anything is built.
     """
-    shape = tuple(shape) if np.ndim(shape) else (shape,)
-    if len(shape) == 0:
-        raise ValueError("shape must have at least one axis")
+    shape, per = _check_grid(shape, periodic)
     n = len(shape)
-    per = (bool(periodic),) * n if np.ndim(periodic) == 0 else tuple(bool(p) for p in periodic)
-    if len(per) != n:
-        raise ValueError(f"periodic has {len(per)} entries for {n} axes")
-    for m, p in zip(shape, per):
-        _count("grid size", m, 3 if p else 2)
     cells = [m if p else m - 1 for m, p in zip(shape, per)]
     base = np.stack(np.meshgrid(*[np.arange(c) for c in cells], indexing="ij"), axis=-1).reshape(-1, n)
     out = []
@@ -97,26 +104,49 @@ def freudenthal(shape, periodic=False) -> np.ndarray:
     return np.concatenate(out, axis=0).astype(np.int64)
 
 
-def grid_parameters(*axes) -> np.ndarray:
+def grid_parameters(*axes: npt.ArrayLike) -> np.ndarray:
     """Parameters of the grid ``axes[0] × axes[1] × ...`` in the C order used by :func:`freudenthal`.
 
     Thesis: §3.4 (the parameter grids {0, ε, 2ε, ...}).
+
+    Parameters
+    ----------
+    *axes : 1-D arrays of finite numbers, one per parameter.
+
+    Returns
+    -------
+    ndarray, shape (Π len(axes[i]), len(axes))
     """
-    arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
+    try:
+        arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"grid axes must be arrays of numbers: {err}") from None
     if not arrs or any(a.size == 0 for a in arrs):
         raise ValueError("need at least one non-empty axis")
     if any(not np.all(np.isfinite(a)) for a in arrs):
         raise ValueError("grid axes contain NaN or infinite values")
+    count = math.prod(a.size for a in arrs)
+    check_size(count * len(arrs), f"coordinates ({count:,} grid points in R^{len(arrs)})")
     return np.stack(np.meshgrid(*arrs, indexing="ij"), axis=-1).reshape(-1, len(arrs))
 
 
 def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
     """Periodic n × n grid on the torus, u_i = 2πi/n, v_j = 2πj/n, with one diagonal per square.
 
-    Returns ``(vertices (n², 3), faces (2n², 3))``; vertex ``i·n + j`` is X(u_i, v_j) and every face is
-    oriented by X_u × X_v (outward).  Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
+    Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
+
+    Parameters
+    ----------
+    n : grid points per circle (>= 3).
+    R, r : the torus's radii, 0 < r < R.
+
+    Returns
+    -------
+    vertices : (n², 3); vertex ``i·n + j`` is X(u_i, v_j).
+    faces : (2n², 3), every face oriented by X_u × X_v (outward).
     """
-    n = _count("n", n, 3)
+    n = check_int(n, "n", minimum=3)
+    check_size(2 * n * n, "faces")
     t = 2 * np.pi * np.arange(n) / n
     uv = grid_parameters(t, t)
     vertices = torus_point(uv[:, 0], uv[:, 1], R, r)
@@ -129,36 +159,57 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
     return vertices, faces
 
 
-def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0, r: float = 5.0):
+def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
+                        r: float = 5.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The thesis's "chosen points" (u, v) ∈ {0, ε, ..., 2π - ε}² on the torus, triangulated.
 
-    Returns ``(vertices, faces, uv)``.  ``2π/ε`` must be an integer (up to 1e-9).
     Thesis: §3.4.1, Figures 3.4–3.7 (ε = π/50).
+
+    Parameters
+    ----------
+    epsilon : grid step; ``2π/ε`` must be an integer >= 3 (up to 1e-9).
+    R, r : the torus's radii.
+
+    Returns
+    -------
+    vertices, faces, uv
+        As :func:`torus_grid`, and the (n², 2) parameters of the vertices.
     """
-    epsilon = _positive("epsilon", epsilon)
-    m = 2 * np.pi / epsilon
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    m = _steps(2 * np.pi, epsilon, "u")
     n = int(round(m))
     if abs(m - n) > 1e-9 * m or n < 3:
         raise ValueError(f"2π/epsilon must be an integer >= 3, got {m!r}")
+    check_size(2 * n * n, "faces")
     vertices, faces = torus_grid(n, R, r)
     t = 2 * np.pi * np.arange(n) / n
     return vertices, faces, grid_parameters(t, t)
 
 
-def merge_coincident(vertices, simplices, tol: float = 1e-9):
+def merge_coincident(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
+                     tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Identify vertices closer than ``tol``, then drop degenerate and repeated simplices.
 
-    Returns ``(vertices, simplices, kept)``: ``kept[i]`` is the original index of new vertex ``i``
-    (its first representative).  Simplices keep their vertex order (and so their orientation).
     Thesis: §3.4.2 (grid points at the poles of hyperspherical coordinates coincide).
+
+    Parameters
+    ----------
+    vertices : (nv, d) array.
+    simplices : (m, k) vertex indices.
+    tol : distance below which vertices are identified (>= 0).
+
+    Returns
+    -------
+    vertices, simplices, kept
+        The merged vertices, the simplices renumbered (vertex order, and so orientation, kept),
+        and ``kept[i]``, the original index of new vertex ``i`` (its first representative).
     """
-    v = np.asarray(vertices, dtype=np.float64)
-    s = np.asarray(simplices)
-    if v.ndim != 2 or s.ndim != 2:
-        raise ValueError("vertices and simplices must be 2-D arrays")
-    if s.size and (s.min() < 0 or s.max() >= len(v)):
-        raise ValueError("simplices refer to vertices that do not exist")
-    pairs = cKDTree(v).query_pairs(float(tol), output_type="ndarray")
+    v = as_points(vertices, name="vertices")
+    s = check_simplices(simplices, len(v), allow_empty=True)
+    tol = check_real(tol, "tol", minimum=0.0)
+    vs, e = scaled(v)  # squared distances must not overflow
+    with np.errstate(over="ignore"):
+        pairs = cKDTree(vs).query_pairs(float(np.ldexp(tol, e)), output_type="ndarray")
     nv = len(v)
     graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(nv, nv))
     _, label = connected_components(graph, directed=False)
@@ -178,31 +229,62 @@ def merge_coincident(vertices, simplices, tol: float = 1e-9):
     return v[kept], s2, kept
 
 
+def _steps(span: float, epsilon: float, name: str) -> float:
+    """span / epsilon, refused when it is not finite or would build a grid of more than 10⁹ points."""
+    steps = span / epsilon
+    if not np.isfinite(steps):
+        raise ValueError(f"{name}: the grid step {epsilon!r} is too small (the grid would be infinite)")
+    check_size(steps, f"grid points on the {name} axis")
+    return steps
+
+
+def _pair(value, name: str) -> tuple:
+    try:
+        low, high = value
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a pair (low, high), got {value!r}") from None
+    return low, high
+
+
 def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray:
-    steps = (high - low) / epsilon
+    low, high = check_real(low, f"{name} low"), check_real(high, f"{name} high")
+    steps = _steps(high - low, epsilon, name)
     k = int(round(steps))
     if k < 1 or abs(steps - k) > 1e-6 * max(1.0, steps):
         raise ValueError(f"{name}: (high - low)/epsilon must be a positive integer, got {steps!r}")
     return low + epsilon * np.arange(k + 1)
 
 
-def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0, n: int = 3):
+def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
+                            n: int = 3) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of the n-sphere of radius ρ in R^{n+1} in hyperspherical coordinates.
 
-    Grid ψ_i ∈ {0, ε, ..., π} (i < n) and φ ∈ {0, ε, ..., 2π - ε} (periodic); ``π/ε`` must be an
-    integer.  The grid points on the degenerate region (ψ_i ∈ {0, π} for some i < n, where the
-    coordinates collapse) are identified, and the simplices that collapse there are dropped, which
-    leaves a closed triangulation of the whole sphere.  Returns ``(vertices, simplices, params)``
-    with ``params`` the coordinates of each vertex's first grid representative.
     Thesis: §3.4.2 (3-sphere, hyperspherical coordinates, ε = π/50).
+
+    Grid ψ_i ∈ {0, ε, ..., π} (i < n) and φ ∈ {0, ε, ..., 2π - ε} (periodic).  The grid points on
+    the degenerate region (ψ_i ∈ {0, π} for some i < n, where the coordinates collapse) are
+    identified, and the simplices that collapse there are dropped, which leaves a closed
+    triangulation of the whole sphere.
+
+    Parameters
+    ----------
+    epsilon : grid step; ``π/ε`` must be an integer >= 2.
+    radius : ρ > 0.
+    n : dimension of the sphere (>= 1).
+
+    Returns
+    -------
+    vertices, simplices, params
+        ``params`` are the coordinates of each vertex's first grid representative.
     """
-    epsilon = _positive("epsilon", epsilon)
-    radius = _positive("radius", radius)
-    n = _count("n", n, 1)
-    m = np.pi / epsilon
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    radius = check_real(radius, "radius", positive=True)
+    n = check_int(n, "n", minimum=1)
+    m = _steps(np.pi, epsilon, "ψ")
     if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
         raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
     k = int(round(m))
+    _check_grid((k + 1,) * (n - 1) + (2 * k,), (False,) * (n - 1) + (True,))
     ang = np.pi * np.arange(k + 1) / k
     phi = np.pi * np.arange(2 * k) / k
     params = grid_parameters(*([ang] * (n - 1) + [phi]))
@@ -217,16 +299,29 @@ def catenoid_freudenthal(
 ):
     """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
 
-    u is periodic with ``n_u`` steps (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε);
-    v ∈ {v_low, v_low + ε, ..., v_high} and each extra coordinate w ∈ {w_low, ..., w_high} step ε.
-    Returns ``(vertices, simplices, params)``; the boundary is v = v_low, v_high (and w = w_low, w_high).
     Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
+
+    Parameters
+    ----------
+    epsilon : grid step of v and w (the ranges must be whole multiples of it).
+    n : dimension (>= 2).
+    v_range, w_range : (low, high) of v and of each extra coordinate w.
+    n_u : steps of the periodic u (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
+
+    Returns
+    -------
+    vertices, simplices, params
+        The boundary is v = v_low, v_high (and w = w_low, w_high).
     """
-    epsilon = _positive("epsilon", epsilon)
-    n = _count("n", n, 2)
-    n_u = int(round(2 * np.pi / epsilon)) if n_u is None else _count("n_u", n_u, 3)
-    axes = [2 * np.pi * np.arange(n_u) / n_u, _grid_axis("v_range", *map(float, v_range), epsilon)]
-    axes += [_grid_axis("w_range", *map(float, w_range), epsilon)] * (n - 2)
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    n = check_int(n, "n", minimum=2)
+    n_u = int(round(_steps(2 * np.pi, epsilon, "u"))) if n_u is None else check_int(n_u, "n_u", minimum=3)
+    if n_u < 3:
+        raise ValueError(f"the u axis needs at least 3 steps (epsilon <= 2π/3), got epsilon = {epsilon}")
+    v_axis = _grid_axis("v_range", *_pair(v_range, "v_range"), epsilon)
+    w_axis = _grid_axis("w_range", *_pair(w_range, "w_range"), epsilon) if n > 2 else np.zeros(0)
+    _check_grid((n_u, len(v_axis)) + (len(w_axis),) * (n - 2), (True,) + (False,) * (n - 1))
+    axes = [2 * np.pi * np.arange(n_u) / n_u, v_axis] + [w_axis] * (n - 2)
     params = grid_parameters(*axes)
     simplices = freudenthal(tuple(len(a) for a in axes), periodic=(True,) + (False,) * (n - 1))
     return catenoid_point(params), simplices, params

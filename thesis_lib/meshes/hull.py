@@ -3,24 +3,41 @@
 from __future__ import annotations
 
 import numpy as np
-from scipy.spatial import ConvexHull
+import numpy.typing as npt
+from scipy.spatial import ConvexHull, QhullError
 
-from .._validate import as_points
+from .._validate import as_points, check_int, check_simplices
+from ..complexes.scaling import scaled
 from .sampling import sample_sphere
 
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]
 
 
-def orient_outward(vertices, simplices, centre=None) -> np.ndarray:
+def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike, centre: npt.ArrayLike | None = None) -> np.ndarray:
     """Reorder each facet so that det[v_1 - v_0, ..., v_n - v_0, v_0 - centre] > 0 (outward normal).
 
     Thesis: eq. (3.9) (orientation of N = X_{u_1} ∧ ... ∧ X_{u_n}/W).
+
+    Parameters
+    ----------
+    vertices : (nv, n + 1) array of points.
+    simplices : (m, n + 1) vertex indices of the facets.
+    centre : (n + 1,) point inside the surface (default: the mean of the vertices).
+
+    Returns
+    -------
+    ndarray, shape (m, n + 1)
+        The facets, each with its first two vertices swapped where needed.
     """
-    v = np.asarray(vertices, dtype=np.float64)
-    s = np.array(simplices, dtype=np.int64, copy=True)
-    if s.ndim != 2 or v.ndim != 2 or s.shape[1] != v.shape[1]:
-        raise ValueError("need (m, n+1) facets of (nv, n+1) vertices")
-    c = v.mean(axis=0) if centre is None else np.asarray(centre, dtype=np.float64)
+    v = as_points(vertices, name="vertices")
+    s = check_simplices(simplices, len(v), width=v.shape[1]).copy()
+    if centre is None:
+        c = v.mean(axis=0)
+    else:
+        c = as_points(np.atleast_2d(centre), name="centre")
+        if c.shape != (1, v.shape[1]):
+            raise ValueError(f"centre must be one point of R^{v.shape[1]}, got shape {np.shape(centre)}")
+        c = c[0]
     p = v[s]
     mat = np.concatenate([p[:, 1:] - p[:, :1], (p[:, 0] - c)[:, None]], axis=1)
     flip = np.linalg.det(mat) < 0
@@ -28,23 +45,51 @@ def orient_outward(vertices, simplices, centre=None) -> np.ndarray:
     return s
 
 
-def convex_hull_surface(points) -> np.ndarray:
+def convex_hull_surface(points: npt.ArrayLike) -> np.ndarray:
     """Facets of the convex hull of ``points`` (n-simplices in R^{n+1}), oriented outward.
 
     Thesis: §3.4 (triangulating a convex hypersurface from a point cloud in any dimension).
+
+    Parameters
+    ----------
+    points : (N, n + 1) array, n + 1 >= 2, no duplicates, not all in a hyperplane.
+
+    Returns
+    -------
+    ndarray, shape (m, n + 1)
+        Facets as vertex indices into ``points``, oriented outward.
     """
     pts = as_points(points, allow_duplicates=False)
     d = pts.shape[1]
     if d < 2 or len(pts) < d + 1:
-        raise ValueError(f"need at least {d + 1} points in dimension >= 2")
-    hull = ConvexHull(pts)
+        raise ValueError(f"need at least {d + 1} points in dimension >= 2, got {len(pts)} in dimension {d}")
+    try:  # on points scaled by a power of two (Qhull crashes on coordinates near 1e150)
+        hull = ConvexHull(scaled(pts)[0])
+    except QhullError:
+        raise ValueError(f"the points span less than R^{d} (all on a hyperplane), so their convex hull "
+                         "is not a closed hypersurface") from None
     return orient_outward(pts, hull.simplices, pts.mean(axis=0))
 
 
-def sphere_hull(n_dims: int = 3, n_points: int = 1000, seed: int = 0, radius: float = 1.0):
+def sphere_hull(n_dims: int = 3, n_points: int = 1000, seed: int = 0,
+                radius: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
     """Random uniform points on S^{n_dims-1}(radius) ⊂ R^{n_dims} and their convex-hull triangulation.
 
-    Returns ``(vertices, simplices)``, simplices oriented outward.  Thesis: §3.4.2 (spheres in R^{n+1}).
+    Thesis: §3.4.2 (spheres in R^{n+1}).
+
+    Parameters
+    ----------
+    n_dims : ambient dimension (>= 2).
+    n_points : number of points (>= n_dims + 1).
+    seed : seed of the random points.
+    radius : radius of the sphere.
+
+    Returns
+    -------
+    (vertices, simplices)
+        ``(n_points, n_dims)`` points and their outward-oriented hull facets.
     """
+    n_dims = check_int(n_dims, "n_dims", minimum=2)
+    n_points = check_int(n_points, "n_points", minimum=n_dims + 1)
     pts = sample_sphere(n_points, n_dims, radius, seed)
     return pts, convex_hull_surface(pts)

@@ -3,23 +3,36 @@
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
-from .._validate import as_points
+from .._validate import as_points, check_int
+from ..complexes.scaling import scaled
 
 __all__ = ["estimate_normals", "ball_pivoting"]
 
 
-def estimate_normals(points, k: int = 10) -> np.ndarray:
+def estimate_normals(points: npt.ArrayLike, k: int = 10) -> np.ndarray:
     """Unit normals from PCA of the ``k`` nearest neighbours, oriented away from the centroid.
 
     Thesis: §3.3.1 (there is no canonical normal for discrete data; here a local plane fit).
+
+    Parameters
+    ----------
+    points : (n, 3) array, n >= 3.
+    k : number of neighbours (>= 3; at most n are used).
+
+    Returns
+    -------
+    ndarray, shape (n, 3)
+        Unit normals.
     """
     from scipy.spatial import cKDTree
 
     pts = as_points(points, min_points=3)
-    k = int(k)
-    if k < 3:
-        raise ValueError(f"k must be >= 3, got {k}")
+    if pts.shape[1] != 3:
+        raise ValueError(f"normals are estimated for points in R³, got dimension {pts.shape[1]}")
+    k = check_int(k, "k", minimum=3)
+    pts, _ = scaled(pts)  # normals do not depend on the scale; distances must not overflow
     k = min(k, len(pts))
     _, nb = cKDTree(pts).query(pts, k)
     q = pts[nb] - pts[nb].mean(axis=1, keepdims=True)
@@ -31,13 +44,24 @@ def estimate_normals(points, k: int = 10) -> np.ndarray:
     return nrm
 
 
-def ball_pivoting(points, normals=None, radii=None) -> np.ndarray:
-    """Triangulate ``points`` in R³ by pymeshlab's ball pivoting; returns ``(m, 3)`` faces into ``points``.
+def ball_pivoting(points: npt.ArrayLike, normals: npt.ArrayLike | None = None,
+                  radii: npt.ArrayLike | None = None) -> np.ndarray:
+    """Triangulate ``points`` in R³ by pymeshlab's ball pivoting.
 
-    ``normals`` default to :func:`estimate_normals`.  ``radii``: ball radii pivoted in turn, each pass
-    keeping the faces of the previous ones (default 2, 3, 4 and 6 times the mean nearest-neighbour
-    distance; a single radius leaves many holes in random samples).
     Thesis: §3.4, "Triangulations" (an alternative to the Crust [ABK98]).
+
+    Parameters
+    ----------
+    points : (n, 3) array, n >= 4, no duplicates.
+    normals : (n, 3) array; default :func:`estimate_normals`.
+    radii : ball radii pivoted in turn, each pass keeping the faces of the previous ones (default
+        2, 3, 4 and 6 times the mean nearest-neighbour distance; a single radius leaves many holes
+        in random samples).
+
+    Returns
+    -------
+    ndarray, shape (m, 3)
+        Faces as indices into ``points``.
     """
     import pymeshlab
     from scipy.spatial import cKDTree
@@ -45,16 +69,23 @@ def ball_pivoting(points, normals=None, radii=None) -> np.ndarray:
     pts = as_points(points, min_points=4, allow_duplicates=False)
     if pts.shape[1] != 3:
         raise ValueError(f"ball pivoting needs points in R³, got dimension {pts.shape[1]}")
-    nrm = estimate_normals(pts) if normals is None else np.asarray(normals, dtype=np.float64)
-    if nrm.shape != pts.shape or not np.all(np.isfinite(nrm)):
-        raise ValueError(f"normals must be a finite array of shape {pts.shape}")
+    nrm = estimate_normals(pts) if normals is None else as_points(normals, name="normals")
+    if nrm.shape != pts.shape:
+        raise ValueError(f"normals must be a finite array of shape {pts.shape}, got {nrm.shape}")
+    if radii is not None:
+        try:
+            radii = np.atleast_1d(np.asarray(radii, dtype=np.float64))
+        except (TypeError, ValueError):
+            raise ValueError(f"radii must be positive finite numbers, got {radii!r}") from None
+        if radii.ndim != 1 or radii.size == 0 or not np.all(np.isfinite(radii)) or np.any(radii <= 0):
+            raise ValueError(f"radii must be positive finite numbers, got {radii!r}")
+    pts, e = scaled(pts)  # ball pivoting is scale-equivariant: run it near 1, radii scaled alike
     tree = cKDTree(pts)
     if radii is None:
         spacing = float(tree.query(pts, 2)[0][:, 1].mean())
-        radii = [f * spacing for f in (2.0, 3.0, 4.0, 6.0)]
-    radii = np.atleast_1d(np.asarray(radii, dtype=np.float64))
-    if radii.size == 0 or not np.all(np.isfinite(radii)) or np.any(radii <= 0):
-        raise ValueError(f"radii must be positive finite numbers, got {radii!r}")
+        radii = np.array([f * spacing for f in (2.0, 3.0, 4.0, 6.0)])
+    else:
+        radii = np.ldexp(radii, e)
     ms = pymeshlab.MeshSet()
     ms.add_mesh(pymeshlab.Mesh(vertex_matrix=pts, v_normals_matrix=nrm))
     for rad in radii:

@@ -4,15 +4,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import check_int, check_real, check_seed, check_size
 from ..curvature.exact import catenoid_point, torus_point
 
-__all__ = ["sample_torus", "sample_catenoid", "sample_sphere"]
+__all__ = ["sample_torus", "sample_catenoid", "sample_sphere", "sample_n_catenoid"]
 
 
-def _count(name: str, n) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"{name} must be a positive integer, got {n!r}")
-    return int(n)
+def _count(n, dim: int) -> int:
+    """A number of samples n >= 1, refused up front if the (n, dim) output would be too large."""
+    n = check_int(n, "n", minimum=1)
+    check_size(n * dim, f"coordinates ({n:,} points in R^{dim})")
+    return n
 
 
 def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
@@ -26,16 +28,29 @@ def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
     return np.concatenate(out)[:n]
 
 
-def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0, return_uv: bool = False):
+def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
+                 return_uv: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the torus: (u, v) uniform, accepted with prob. (R + r cos v)/(R + r).
 
+    Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
+
     The area element of the torus is r (R + r cos v) du dv, so rejection on that density gives the
-    uniform distribution on the surface.  Returns ``(n, 3)`` points (and ``(n, 2)`` parameters when
-    ``return_uv``).  Thesis: §3.4.1, "Torus 2: random sampling" (rejection sampling).
+    uniform distribution on the surface.
+
+    Parameters
+    ----------
+    n : number of samples (>= 1; refused up front beyond 10⁹ coordinates).
+    R, r : the torus's radii.
+    seed : seed of the random draws.
+    return_uv : also return the parameters.
+
+    Returns
+    -------
+    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_uv``.
     """
-    n = _count("n", n)
+    n = _count(n, 3)
     torus_point(0.0, 0.0, R, r)  # validates the radii
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_seed(seed))
     uv = _rejection(
         n, rng, lambda m: rng.uniform(0.0, 2 * np.pi, (m, 2)),
         lambda c: R + r * np.cos(c[:, 1]), R + r,
@@ -44,16 +59,33 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0, return_
     return (pts, uv) if return_uv else pts
 
 
-def sample_catenoid(n: int, v_range=(-1.0, 1.0), seed: int = 0, return_params: bool = False):
+def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0,
+                    return_params: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the catenoid piece v ∈ v_range (area element cosh² v du dv).
 
     Thesis: §3.4.3, Figure 3.14 (point cloud on the 2-catenoid).
+
+    Parameters
+    ----------
+    n : number of samples (>= 1).
+    v_range : (low, high) with low < high.
+    seed : seed of the random draws.
+    return_params : also return the (u, v) parameters.
+
+    Returns
+    -------
+    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_params``.
     """
-    n = _count("n", n)
-    lo, hi = map(float, v_range)
-    if not (np.isfinite(lo) and np.isfinite(hi)) or hi <= lo:
-        raise ValueError(f"v_range must be a finite interval (low < high), got {v_range!r}")
-    rng = np.random.default_rng(seed)
+    n = _count(n, 3)
+    try:
+        lo, hi = v_range
+    except (TypeError, ValueError):
+        raise ValueError(f"v_range must be a pair (low, high), got {v_range!r}") from None
+    lo, hi = check_real(lo, "v_range low"), check_real(hi, "v_range high")
+    if hi <= lo or max(abs(lo), abs(hi)) > 300:
+        raise ValueError(f"v_range must be an interval low < high within [-300, 300] (cosh² overflows beyond), "
+                         f"got {v_range!r}")
+    rng = np.random.default_rng(check_seed(seed))
     wmax = np.cosh(max(abs(lo), abs(hi))) ** 2
     uv = _rejection(
         n, rng,
@@ -68,13 +100,50 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
     """``n`` points uniform on the sphere S^{n_dims - 1} of the given radius in R^{n_dims}.
 
     Thesis: §3.4.2 (spheres as test hypersurfaces).
+
+    Parameters
+    ----------
+    n : number of samples (>= 1).
+    n_dims : ambient dimension (>= 2).
+    radius : > 0.
+    seed : seed of the random draws.
+
+    Returns
+    -------
+    ndarray, shape (n, n_dims)
     """
-    n = _count("n", n)
-    d = _count("n_dims", n_dims)
-    if d < 2:
-        raise ValueError(f"n_dims must be >= 2, got {d}")
-    radius = float(radius)
-    if not np.isfinite(radius) or radius <= 0:
-        raise ValueError(f"radius must be positive, got {radius!r}")
-    g = np.random.default_rng(seed).normal(size=(n, d))
+    d = check_int(n_dims, "n_dims", minimum=2)
+    n = _count(n, d)
+    radius = check_real(radius, "radius", positive=True)
+    g = np.random.default_rng(check_seed(seed)).normal(size=(n, d))
     return radius * g / np.linalg.norm(g, axis=1, keepdims=True)
+
+
+def sample_n_catenoid(n_points: int, *, dimension: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0),
+                      seed: int = 0, return_params: bool = False):
+    """``n_points`` uniform w.r.t. volume on the piece v ∈ v_range, every w_i ∈ w_range of the
+    n-catenoid (catenoid × R^{n-2}) in R^{n+1}; volume element cosh² v du dv dw.
+
+    Thesis: §3.4.3 (the 3-catenoid on u ∈ [−π, π], v, r ∈ [−1, 1]), sampled at random (Chapter 5).
+    """
+    n_points = _count("n_points", n_points)
+    dimension = _count("dimension", dimension)
+    if dimension < 2:
+        raise ValueError(f"dimension must be >= 2, got {dimension}")
+    ranges = []
+    for name, rng_ in (("v_range", v_range), ("w_range", w_range)):
+        lo, hi = map(float, rng_)
+        if not (np.isfinite(lo) and np.isfinite(hi)) or hi <= lo:
+            raise ValueError(f"{name} must be a finite interval (low < high), got {rng_!r}")
+        ranges.append((lo, hi))
+    (vlo, vhi), (wlo, whi) = ranges
+    rng = np.random.default_rng(seed)
+    wmax = np.cosh(max(abs(vlo), abs(vhi))) ** 2
+    params = _rejection(
+        n_points, rng,
+        lambda m: np.column_stack([rng.uniform(0, 2 * np.pi, m), rng.uniform(vlo, vhi, m)]
+                                  + [rng.uniform(wlo, whi, m) for _ in range(dimension - 2)]),
+        lambda c: np.cosh(c[:, 1]) ** 2, wmax,
+    )
+    pts = catenoid_point(params)
+    return (pts, params) if return_params else pts

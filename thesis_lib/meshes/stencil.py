@@ -14,33 +14,48 @@ import itertools
 from typing import Callable
 
 import numpy as np
+import numpy.typing as npt
+
+from .._validate import InvalidTypeError, as_points, check_real, check_size
 
 __all__ = ["cross_stars", "neighbour_grid_mean_curvature"]
 
 
-def cross_stars(X: Callable[[np.ndarray], np.ndarray], params, epsilon: float):
+def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
+                epsilon: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Disjoint cross-polytope stars around the points X(w), w in ``params`` (k, n).
 
-    Returns ``(vertices (k(2n+1), n+1), simplices (k·2^n, n+1), centres (k,))``: vertex
-    ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and X(w_j - ε e_i) for i = 0..n-1.
     Thesis: §3.4.2 (neighbouring vertices (ψ ± ε, θ ± ε, φ ± ε)).
+
+    Parameters
+    ----------
+    X : parametrisation mapping (m, n) parameters to (m, n + 1) points.
+    params : (k, n) parameter points.
+    epsilon : grid step (> 0).
+
+    Returns
+    -------
+    vertices : (k(2n+1), n+1); vertex ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and
+        X(w_j - ε e_i) for i = 0..n-1.
+    simplices : (k·2^n, n+1).
+    centres : (k,).
     """
-    w = np.asarray(params, dtype=np.float64)
-    if w.ndim != 2 or w.shape[0] == 0 or w.shape[1] < 1:
-        raise ValueError(f"params must be a non-empty (k, n) array, got shape {w.shape}")
-    if not np.all(np.isfinite(w)):
-        raise ValueError("params contain NaN or infinite values")
-    epsilon = float(epsilon)
-    if not np.isfinite(epsilon) or epsilon <= 0:
-        raise ValueError(f"epsilon must be positive, got {epsilon!r}")
+    w = as_points(params, name="params")
+    epsilon = check_real(epsilon, "epsilon", positive=True)
+    if not callable(X):
+        raise InvalidTypeError(f"X must be a function of parameters, got {X!r}")
     k, n = w.shape
+    check_size(k * 2**n * (n + 1), f"vertex entries ({k * 2**n:,} simplices of the stars)")
     shifts = [np.zeros(n)]
     for i in range(n):
         e = np.zeros(n)
         e[i] = epsilon
         shifts += [e, -e]
     allw = (w[:, None, :] + np.array(shifts)[None]).reshape(-1, n)
-    vertices = np.asarray(X(allw), dtype=np.float64)
+    try:
+        vertices = np.asarray(X(allw), dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"X must map (m, {n}) parameters to (m, {n + 1}) points: {err}") from None
     if vertices.shape != (len(allw), n + 1):
         raise ValueError(f"X must map (m, {n}) parameters to (m, {n + 1}) points, got {vertices.shape}")
     base = np.arange(k) * (2 * n + 1)
@@ -53,13 +68,24 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params, epsilon: float):
 
 
 def neighbour_grid_mean_curvature(
-    X: Callable[[np.ndarray], np.ndarray], params, epsilon: float, method: str = "gram"
+    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, epsilon: float, method: str = "gram"
 ) -> np.ndarray:
     """|H| at X(w) for each w in ``params`` from its 2n grid neighbours (the thesis's approximation).
 
-    |H| = ‖∇_p hyperarea(star)‖ / (n · hyperarea(star)/2), with the gradient from
-    :func:`thesis_lib.curvature.mean_curvature_vector` (``method`` "gram" or "cot").
     Thesis: §3.4.2 (Figure 3.12) and §3.4.3 (Figure 3.13).
+
+    |H| = ‖∇_p hyperarea(star)‖ / (n · hyperarea(star)/2), with the gradient from
+    :func:`thesis_lib.curvature.mean_curvature_vector`.
+
+    Parameters
+    ----------
+    X, params, epsilon
+        As in :func:`cross_stars`.
+    method : "gram" or "cot".
+
+    Returns
+    -------
+    ndarray, shape (k,)
     """
     from ..curvature import mean_curvature_vector, simplex_hyperareas
 

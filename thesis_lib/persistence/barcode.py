@@ -49,6 +49,13 @@ def _is_sorted(b: np.ndarray, d: np.ndarray) -> bool:
     return bool(np.all((b[1:] > b[:-1]) | ((b[1:] == b[:-1]) & (d[1:] >= d[:-1])))) if db.size else True
 
 
+def _dimension(dim) -> int:
+    """A homology dimension: a non-negative integer (``1.5`` and ``True`` are refused)."""
+    from .._validate import check_int
+
+    return check_int(dim, "homology dimension", minimum=0)
+
+
 class Barcode:
     """The barcode of a filtered complex: finite and infinite P-intervals ``(birth, death)`` per dimension.
 
@@ -74,6 +81,11 @@ class Barcode:
         essential, born at ``values[mask]`` by the simplices where the boolean ``mask`` is true;
         the arrays are only built (sorted) when first asked for (a truncated complex can have
         millions of top-dimensional classes).  ``intervals`` must not also give that dimension.
+    complete : the dimensions whose intervals are the whole truth (default: all of ``dimensions``).
+        The top dimension of a complex cut at ``max_dim`` (a Rips complex) is not complete: its
+        classes could only die by simplices that were never built, so they show as essential.
+        ``repr``, :meth:`betti` without a dimension, :meth:`to_diagrams`, comparisons and the plots
+        use the complete dimensions; :meth:`intervals` still returns any computed dimension.
     """
 
     def __init__(
@@ -86,10 +98,15 @@ class Barcode:
         filtration: Any = None,
         killers: Mapping[int, np.ndarray] | None = None,
         essential: Mapping[int, tuple[np.ndarray, np.ndarray]] | None = None,
+        complete: Iterable[int] | None = None,
     ):
         dims = sorted(set(int(d) for d in (intervals.keys() if dimensions is None else dimensions)))
         if any(d < 0 for d in dims):
             raise ValueError("homology dimensions must be non-negative")
+        done = dims if complete is None else sorted(set(int(d) for d in complete))
+        if set(done) - set(dims):
+            raise ValueError(f"complete dimensions {sorted(set(done) - set(dims))} were not computed")
+        self._complete = tuple(done)
         extra_dims = set(int(d) for d in intervals) - set(dims)
         if extra_dims:
             raise ValueError(f"intervals given for dimensions {sorted(extra_dims)} outside {dims}")
@@ -134,7 +151,45 @@ class Barcode:
             by_dim.setdefault(int(dim), []).append((float(b), float(d)))
         return cls(by_dim, dimensions)
 
+    @classmethod
+    def from_diagrams(cls, diagrams: Iterable[Any], *, p: int | None = None) -> Barcode:
+        """Build from persistence diagrams in the ripser/persim format: ``diagrams[k]`` is a ``(m, 2)``
+        array of ``(birth, death)`` of dimension k (``inf`` for essential classes).
+
+        Thesis: Definition 2.34 (a set of P-intervals per dimension).  Values are taken as they
+        are: ripser's are diameters (2ε), so halve them to compare with :func:`rips` (ε).
+        """
+        if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
+            raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
+        by_dim = {}
+        for d, dgm in enumerate(diagrams):
+            arr = np.asarray(dgm, dtype=np.float64)
+            if arr.size and (arr.ndim != 2 or arr.shape[1] != 2):
+                raise ValueError(f"diagram {d} must be an (m, 2) array, got shape {arr.shape}")
+            by_dim[d] = arr.reshape(-1, 2)
+        return cls(by_dim, range(len(by_dim)), p=p)
+
+    def to_diagrams(self, dims: Iterable[int] | None = None) -> list[np.ndarray]:
+        """The barcode as persistence diagrams (ripser/persim format): a list of ``(m, 2)`` arrays, one
+        per dimension 0, 1, ... up to the largest complete one (or the given ``dims``' maximum).
+
+        Thesis: Definition 2.34 and Theorem 2.37 (P-intervals drawn as points).  The values are
+        this barcode's (ε for :func:`rips`; ripser reports diameters 2ε).
+        """
+        dims = self._complete if dims is None else tuple(int(d) for d in dims)
+        top = max(dims, default=-1)
+        return [np.array(self.intervals(d)) for d in range(top + 1)]
+
     # ------------------------------------------------------------------ queries
+    @property
+    def complete_dimensions(self) -> tuple[int, ...]:
+        """The dimensions whose intervals are complete (the top dimension of a truncated complex is not).
+
+        Thesis: Theorem 2.39 (a class of H_p dies only by a (p+1)-simplex, so H_p is known only when
+        the (p+1)-simplices are all built).
+        """
+        return self._complete
+
     @property
     def dimensions(self) -> tuple[int, ...]:
         """The homology dimensions this barcode covers (0 .. dim K for a computed barcode).
@@ -173,16 +228,16 @@ class Barcode:
 
         Thesis: Theorem 2.39 (the intervals read off the column-echelon form).
         """
-        dim = int(dim)
-        if dim < 0:
-            raise ValueError(f"homology dimension must be non-negative, got {dim}")
-        return self._get(dim)[0]
+        return self._get(_dimension(dim))[0]
 
-    def betti(self, value: float, dim: int) -> int:
+    def betti(self, value: float, dim: int | None = None) -> int | list[int]:
         """Betti number of ``H_dim`` of the complex at filtration value ``value``: bars with birth ≤ value < death.
+        Without ``dim``: the list of Betti numbers of the complete dimensions.
 
         Thesis: §2.3.1, β_p^l = rank H_p^l (the special case k = 0 of Definition 2.23).
         """
+        if dim is None:
+            return [self.persistent_betti(value, 0.0, d) for d in self._complete]
         return self.persistent_betti(value, 0.0, dim)
 
     def persistent_betti(self, l: float, k: float, dim: int) -> int:
@@ -214,6 +269,9 @@ class Barcode:
 
         Thesis: §2.3 (long bars are the persistent features, short ones noise).
         """
+        from .._validate import check_int
+
+        n = check_int(n, "n", minimum=0)
         arr = self.intervals(dim)
         order = np.lexsort((arr[:, 0], -(arr[:, 1] - arr[:, 0])))
         return order[: int(n)]
@@ -238,7 +296,7 @@ class Barcode:
 
         Thesis: Corollary 2.35 (equal barcodes ⇔ isomorphic persistence modules).
         """
-        for d in sorted(set(self._dims) | set(other.dimensions)):
+        for d in sorted(set(self._complete) | set(other.complete_dimensions)):
             a, b = self.intervals(d), other.intervals(d)
             if a.shape != b.shape:
                 return f"H{d}: {a.shape[0]} intervals vs {b.shape[0]}"
@@ -257,8 +315,11 @@ class Barcode:
     def __repr__(self) -> str:
         parts = ", ".join(
             f"H{d}: {self.intervals(d).shape[0]} ({int(np.isinf(self.intervals(d)[:, 1]).sum())} essential)"
-            for d in self._dims
+            for d in self._complete
         )
+        rest = [d for d in self._dims if d not in self._complete]
+        if rest:
+            parts += "; " + ", ".join(f"H{d}" for d in rest) + " incomplete (top dimension of a truncated complex)"
         return f"Barcode({parts})"
 
     # ------------------------------------------------------------------ representatives
@@ -270,7 +331,7 @@ class Barcode:
         """
         if not self._has_simplices:
             raise ValueError("this barcode does not know its simplices (it was not computed from a filtration)")
-        dim = int(dim)
+        dim = _dimension(dim)
         arr, extra = self._get(dim)
         if extra is None:  # a lazily listed dimension of essential classes
             extra = np.empty((arr.shape[0], 2), dtype=np.int64)
@@ -292,7 +353,9 @@ class Barcode:
 
         if self.filtration is None or not self._has_simplices or self._killers is None:
             raise ValueError("representatives need a barcode computed from a filtration")
-        dim, i = int(dim), int(i)
+        from .._validate import check_int
+
+        dim, i = _dimension(dim), check_int(i, "interval index")
         arr = self.intervals(dim)
         if not 0 <= i < arr.shape[0]:
             raise ValueError(f"no interval {i} in dimension {dim} (there are {arr.shape[0]})")

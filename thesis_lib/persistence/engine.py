@@ -20,78 +20,20 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
 
 from __future__ import annotations
 
-import numba
 import numpy as np
+
+from ..jit import njit
 
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
 from .barcode import Barcode
+from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
 
 __all__ = ["persistence"]
 
 
-# ---------------------------------------------------------------------------- facet lookup
-@numba.njit(cache=True)
-def _hash(key: np.int64, mask: np.int64) -> np.int64:
-    h = np.uint64(key) * np.uint64(0x9E3779B97F4A7C15)
-    return np.int64(h >> np.uint64(20)) & mask
-
-
-@numba.njit(cache=True)
-def _facet_lookup(lower: np.ndarray, upper: np.ndarray, base: np.int64) -> np.ndarray:
-    """Index in ``lower`` of facet i (omitting vertex i) of every row of ``upper``; -1 if missing."""
-    m0, k = lower.shape
-    m1 = upper.shape[0]
-    size = 1
-    while size < 2 * m0 + 2:
-        size *= 2
-    mask = np.int64(size - 1)
-    keys = np.full(size, -1, dtype=np.int64)
-    vals = np.empty(size, dtype=np.int64)
-    for r in range(m0):
-        key = np.int64(0)
-        for c in range(k):
-            key = key * base + lower[r, c]
-        h = _hash(key, mask)
-        while keys[h] != -1:
-            h = (h + 1) & mask
-        keys[h] = key
-        vals[h] = r
-    out = np.empty((m1, k + 1), dtype=np.int32)
-    for r in range(m1):
-        for i in range(k + 1):
-            key = np.int64(0)
-            for c in range(k + 1):
-                if c != i:
-                    key = key * base + upper[r, c]
-            h = _hash(key, mask)
-            found = -1
-            while keys[h] != -1:
-                if keys[h] == key:
-                    found = vals[h]
-                    break
-                h = (h + 1) & mask
-            out[r, i] = found
-    return out
-
-
-@numba.njit(cache=True)
-def _edge_facets_dense(edges: np.ndarray, tris: np.ndarray, n: np.int64) -> np.ndarray:
-    """Facets of triangles through a dense n × n table of edge indices (small n: cache friendly)."""
-    table = np.full(n * n, -1, dtype=np.int32)
-    for r in range(edges.shape[0]):
-        table[edges[r, 0] * n + edges[r, 1]] = r
-    out = np.empty((tris.shape[0], 3), dtype=np.int32)
-    for r in range(tris.shape[0]):
-        a, b, c = tris[r, 0], tris[r, 1], tris[r, 2]
-        out[r, 0] = table[b * n + c]
-        out[r, 1] = table[a * n + c]
-        out[r, 2] = table[a * n + b]
-    return out
-
-
 # ---------------------------------------------------------------------------- coboundary columns
-@numba.njit(cache=True)
+@njit(cache=True)
 def _column_storage(indptr: np.ndarray, m_d: int):
     """Turn the per-column counts ``indptr[c + 1]`` into offsets (in place) and allocate the columns:
     (fill cursors, rows, signs, pivot, pivot_sign, pivot_value), no pivot found yet.
@@ -110,7 +52,7 @@ def _column_storage(indptr: np.ndarray, m_d: int):
     return fill, rows, signs, pivot, pivot_sign, pivot_value
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_values: np.ndarray):
     """:func:`_coboundary` of the edges, fused with the dense facet lookup (no facet array at all)."""
     m_d = edges.shape[0]
@@ -150,7 +92,7 @@ def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_v
 def _coboundary_matrix(K, d: int, up_values: np.ndarray):
     """(indptr, rows, signs, pivot, pivot_sign) of δ on the d-simplices of K."""
     m_d = K.simplices[d].shape[0]
-    if d == 1 and "_facet_cache" not in K.__dict__:
+    if d == 1:  # edges: the triangles' facets through a dense edge table, fused with the assembly
         lower, upper = K.simplices[1], K.simplices[2]
         n = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
         if n * n <= max(1 << 22, 8 * lower.shape[0]):
@@ -159,31 +101,11 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
                 t = upper[out[5]]
                 raise ValueError(f"an edge of the triangle {tuple(int(v) for v in t)} is missing from the filtration")
             return out[:5]
-    return _coboundary(_facets(K, d + 1), up_values, m_d)
-
-
-def _facets(K, d: int) -> np.ndarray:
-    """(m_d, d + 1) indices into ``K.simplices[d - 1]``; column i omits vertex i (as ``facet_indices``)."""
-    cache = K.__dict__.get("_facet_cache")
-    if cache is not None and d in cache:  # a validated Filtration already found them
-        return cache[d]
-    lower, upper = K.simplices[d - 1], K.simplices[d]
-    base = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
-    if d * np.log2(base) >= 62:  # keys would overflow: use the generic lookup
-        return K.facet_indices(d)
-    if d == 2 and base * base <= max(1 << 22, 8 * lower.shape[0]):
-        out = _edge_facets_dense(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
-    else:
-        out = _facet_lookup(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(base))
-    if (out < 0).any():
-        r, i = np.argwhere(out < 0)[0]
-        face = tuple(int(v) for j, v in enumerate(upper[r]) if j != i)
-        raise ValueError(f"face {face} of {tuple(int(v) for v in upper[r])} is missing from the filtration")
-    return out
+    return _coboundary(K.facet_indices(d + 1), up_values, m_d)
 
 
 # ---------------------------------------------------------------------------- H0: union-find
-@numba.njit(cache=True)
+@njit(cache=True)
 def _find(parent: np.ndarray, x: np.int64) -> np.int64:
     while parent[x] != x:
         parent[x] = parent[parent[x]]
@@ -191,7 +113,7 @@ def _find(parent: np.ndarray, x: np.int64) -> np.int64:
     return x
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
     """Elder-rule union–find over the edges in filtration order.
 
@@ -227,7 +149,7 @@ def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
 
 
 # ---------------------------------------------------------------------------- coboundary matrix
-@numba.njit(cache=True)
+@njit(cache=True)
 def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     """Compressed columns of δ on the d-simplices (by index): entries are indices of the (d+1)-cofaces.
 
@@ -257,63 +179,7 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
 
 
 # ---------------------------------------------------------------------------- reduction over Z/p
-@numba.njit(cache=True)
-def _inv(a: np.int64, p: np.int64) -> np.int64:
-    # extended Euclid: a^{-1} mod p
-    t, newt, r, newr = np.int64(0), np.int64(1), p, a % p
-    while newr != 0:
-        q = r // newr
-        t, newt = newt, t - q * newt
-        r, newr = newr, r - q * newr
-    return t % p
-
-
-@numba.njit(cache=True)
-def _heap_push(hv, ht, hc, n, v, t, c):
-    """Push (value v, index t, coefficient c) on the binary min-heap keyed by (value, index)."""
-    i = n
-    hv[i] = v
-    ht[i] = t
-    hc[i] = c
-    while i > 0:
-        par = (i - 1) >> 1
-        if hv[i] < hv[par] or (hv[i] == hv[par] and ht[i] < ht[par]):
-            hv[i], hv[par] = hv[par], hv[i]
-            ht[i], ht[par] = ht[par], ht[i]
-            hc[i], hc[par] = hc[par], hc[i]
-            i = par
-        else:
-            break
-    return n + 1
-
-
-@numba.njit(cache=True)
-def _heap_pop(hv, ht, hc, n):
-    """Remove the top of the heap of size n (returns the new size); read the top before calling."""
-    n -= 1
-    hv[0] = hv[n]
-    ht[0] = ht[n]
-    hc[0] = hc[n]
-    i = 0
-    while True:
-        left = 2 * i + 1
-        if left >= n:
-            break
-        m = left
-        right = left + 1
-        if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and ht[right] < ht[left])):
-            m = right
-        if hv[m] < hv[i] or (hv[m] == hv[i] and ht[m] < ht[i]):
-            hv[i], hv[m] = hv[m], hv[i]
-            ht[i], ht[m] = ht[m], ht[i]
-            hc[i], hc[m] = hc[m], hc[i]
-            i = m
-        else:
-            break
-    return n
-
-
-@numba.njit(cache=True)
+@njit(cache=True)
 def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared, up_values, p):
     """Reduce the coboundary columns, latest d-simplex first, with clearing (Ripser's scheme).
 
@@ -331,17 +197,15 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
     pcoef = np.zeros(m_d, dtype=np.int64)  # coefficient of its pivot in each reduced column
     vstart = np.full(m_d, -1, dtype=np.int64)  # -1: V_c = c (the column was not reduced)
     vlen = np.zeros(m_d, dtype=np.int64)
-    vcap = 1024
-    pool_k = np.empty(vcap, dtype=np.int64)
-    pool_c = np.empty(vcap, dtype=np.int64)
+    pool_k = np.empty(1024, dtype=np.int64)
+    pool_c = np.empty(1024, dtype=np.int64)
     vused = 0
     hcap = 1024
     hv = np.empty(hcap)
     ht = np.empty(hcap, dtype=np.int64)
     hc = np.empty(hcap, dtype=np.int64)
-    wcap = 64
-    wk = np.empty(wcap, dtype=np.int64)
-    wc = np.empty(wcap, dtype=np.int64)
+    wk = np.empty(64, dtype=np.int64)
+    wc = np.empty(64, dtype=np.int64)
     npmax = min(m_d, m_up)
     pair_c = np.empty(npmax, dtype=np.int64)
     pair_r = np.empty(npmax, dtype=np.int64)
@@ -372,40 +236,24 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
         wc[0] = 1
         wn = 1
         a, b = indptr[c], indptr[c + 1]
-        if b - a > hcap:
-            while hcap < b - a:
-                hcap *= 2
-            hv = np.empty(hcap)
-            ht = np.empty(hcap, dtype=np.int64)
-            hc = np.empty(hcap, dtype=np.int64)
+        hv, ht, hc = grow(hv, ht, hc, 0, b - a)
         for k in range(a, b):
             t = np.int64(rows[k])
-            hn = _heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
+            hn = heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
         piv = -1
         pc = 0
         while True:
             # pop the pivot: the earliest coface whose coefficients do not cancel
-            piv = -1
-            while hn > 0:
-                t = ht[0]
-                cc = hc[0]
-                hn = _heap_pop(hv, ht, hc, hn)
-                while hn > 0 and ht[0] == t:
-                    cc += hc[0]
-                    hn = _heap_pop(hv, ht, hc, hn)
-                cc %= p
-                if cc != 0:
-                    piv = t
-                    pc = cc
-                    break
-            if piv == -1:
+            hn, _, piv, pc = pop_pivot(hv, ht, hc, hn, p)
+            if pc == 0:
+                piv = -1
                 break
             o = np.int64(owner[piv])
             if o == -1:
                 break
             # add factor · (reduced column of o) = factor · Σ_k V_o[k] δ(σ_k)
             additions += 1
-            factor = (p - pc * _inv(pcoef[o], p) % p) % p
+            factor = (p - pc * mod_inverse(pcoef[o], p) % p) % p
             # the pivot entry cancels exactly: drop it rather than pushing it back
             if vstart[o] == -1:
                 ol = 1
@@ -417,62 +265,32 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
                 else:
                     k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
                 f = factor * k_c % p
-                if wn == wcap:
-                    wcap *= 2
-                    nk = np.empty(wcap, dtype=np.int64)
-                    nc = np.empty(wcap, dtype=np.int64)
-                    nk[:wn] = wk[:wn]
-                    nc[:wn] = wc[:wn]
-                    wk, wc = nk, nc
+                if wn == wk.shape[0]:
+                    wk, wc, _ = grow(wk, wc, wc, wn, wn + 1)
                 wk[wn] = k_s
                 wc[wn] = f
                 wn += 1
                 a, b = indptr[k_s], indptr[k_s + 1]
-                if hn + (b - a) > hcap:
-                    while hcap < hn + (b - a):
-                        hcap *= 2
-                    nv = np.empty(hcap)
-                    nt = np.empty(hcap, dtype=np.int64)
-                    ncf = np.empty(hcap, dtype=np.int64)
-                    nv[:hn] = hv[:hn]
-                    nt[:hn] = ht[:hn]
-                    ncf[:hn] = hc[:hn]
-                    hv, ht, hc = nv, nt, ncf
+                hv, ht, hc = grow(hv, ht, hc, hn, hn + (b - a))
                 for k in range(a, b):
                     t = np.int64(rows[k])
                     if t == piv:  # σ_k's entry at the pivot: it cancels with the popped one
                         continue
-                    hn = _heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
+                    hn = heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
         if piv == -1:
             ess[ness] = c
             ness += 1
             continue
         # store V_c (duplicates merged, zeros dropped) and the pair
-        order = np.argsort(wk[:wn], kind="mergesort")
-        if vused + wn > vcap:
-            while vcap < vused + wn:
-                vcap *= 2
-            nk = np.empty(vcap, dtype=np.int64)
-            nc = np.empty(vcap, dtype=np.int64)
-            nk[:vused] = pool_k[:vused]
-            nc[:vused] = pool_c[:vused]
-            pool_k, pool_c = nk, nc
+        pos, sums = merge_entries(wk, wc, wn, p)
+        if vused + pos.shape[0] > pool_k.shape[0]:
+            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + pos.shape[0])
         vstart[c] = vused
-        q = 0
-        i = 0
-        while i < wn:
-            k_s = wk[order[i]]
-            s_c = np.int64(0)
-            while i < wn and wk[order[i]] == k_s:
-                s_c += wc[order[i]]
-                i += 1
-            s_c %= p
-            if s_c != 0:
-                pool_k[vused + q] = k_s
-                pool_c[vused + q] = s_c
-                q += 1
-        vlen[c] = q
-        vused += q
+        for q in range(pos.shape[0]):
+            pool_k[vused + q] = wk[pos[q]]
+            pool_c[vused + q] = sums[q]
+        vlen[c] = pos.shape[0]
+        vused += pos.shape[0]
         owner[piv] = c
         pcoef[c] = pc
         pair_c[npairs] = c
@@ -497,6 +315,8 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
 
     Notes
     -----
+    A filtration cut at ``max_dim`` (``filtration.truncated``, set by :func:`rips`) has an incomplete
+    top dimension: the barcode marks it (``complete_dimensions``) and shows it only when asked.
     The top dimension's essential classes (a truncated Rips complex has millions) are listed lazily:
     they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
@@ -533,7 +353,7 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
     vrank = np.empty(K.simplices[0].shape[0], dtype=np.int64)
     vrank[orders[0]] = np.arange(orders[0].shape[0])
     order1 = orders[1] if D > 1 else np.argsort(K.values[1], kind="stable")
-    pv, pe, cleared, ess = _h0(_facets(K, 1), vrank, order1)
+    pv, pe, cleared, ess = _h0(K.facet_indices(1), vrank, order1)
     finish(0, pv, pe, ess)
     if stats is not None:
         stats[0] = {"columns": int(K.simplices[1].shape[0]), "additions": 0}
@@ -557,5 +377,6 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
     # often millions of classes of a truncated complex, which nobody reads)
     essential_top = {D: (K.values[D], ~cleared)}
     return Barcode(
-        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top
+        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top,
+        complete=range(D if getattr(K, "truncated", False) else D + 1),
     )

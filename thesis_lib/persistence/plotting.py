@@ -19,8 +19,12 @@ def _color(dim: int) -> str:
     return dims[dim % len(dims)]
 
 
+#: plot_barcode refuses to draw more bars than this (one matplotlib artist each)
+MAX_BARS = 5000
+
+
 def _dims(barcode: Barcode, dims: Sequence[int] | None) -> list[int]:
-    dims = list(barcode.dimensions if dims is None else dims)
+    dims = list(barcode.complete_dimensions if dims is None else dims)
     if not dims:
         raise ValueError("no homology dimension to plot")
     return [int(d) for d in dims]
@@ -41,6 +45,8 @@ def plot_barcode(
     axes=None,
     max_value: float | None = None,
     min_length: float = 0.0,
+    min_fraction: float = 0.01,
+    max_bars: int = MAX_BARS,
     xlabel: str = "filtration value",
     title: str | None = None,
 ):
@@ -51,22 +57,36 @@ def plot_barcode(
     Parameters
     ----------
     barcode : the Barcode.
-    dims : dimensions to draw (default: all computed ones), one panel each, top to bottom.
+    dims : dimensions to draw (default: the complete ones), one panel each, top to bottom.
     axes : optional sequence of matplotlib axes (one per dimension); a new figure otherwise.
     max_value : right end of the axis; essential bars run to it and end in an arrow.
     min_length : leave out bars shorter than this (noise).
-    Returns the figure.
+    min_fraction : also leave out bars shorter than this fraction of the drawn range (default 1 %:
+        bars thinner than a line width; 0 draws every bar).
+    max_bars : refuse (ValueError) to draw more bars than this; raise ``min_length`` or
+        ``min_fraction``, or choose ``dims``, to draw fewer.
+
+    Returns
+    -------
+    The matplotlib figure.
     """
     import matplotlib.pyplot as plt
 
     dims = _dims(barcode, dims)
-    if min_length < 0 or np.isnan(min_length):
-        raise ValueError(f"min_length must be >= 0, got {min_length}")
+    for name, value in (("min_length", min_length), ("min_fraction", min_fraction)):
+        if not value >= 0:
+            raise ValueError(f"{name} must be >= 0, got {value}")
     right = _right_edge(barcode, dims, max_value)
+    lowest = min([0.0] + [float(barcode.intervals(d)[:, 0].min()) for d in dims if barcode.intervals(d).size])
+    cut = max(float(min_length), float(min_fraction) * (right - lowest))
     bars = {}
     for d in dims:
         iv = barcode.intervals(d)
-        bars[d] = iv[(iv[:, 1] - iv[:, 0]) >= min_length] if min_length else iv
+        bars[d] = iv[(iv[:, 1] - iv[:, 0]) >= cut] if cut > 0 else iv
+    total = sum(b.shape[0] for b in bars.values())
+    if total > max_bars:
+        raise ValueError(f"{total} bars to draw (more than max_bars={max_bars}): raise min_length or min_fraction, "
+                         "or choose dims")
     if axes is None:
         heights = [max(1, bars[d].shape[0]) for d in dims]
         ratios = [0.6 + min(h, 40) for h in heights]

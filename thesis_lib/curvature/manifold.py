@@ -1,0 +1,193 @@
+"""Simplicial pseudo-manifolds: the combinatorial condition the curvature estimates need (§3.3).
+
+The discrete curvatures of §3.3 sum over the star of a vertex (the simplices around it, in one
+fan) and over the two simplices at each ridge.  They are meaningful on a *simplicial
+pseudo-manifold*: every ridge (codimension-1 face) lies in one or two top simplices, no top simplex
+is repeated, and (for n >= 2) the link of every vertex is connected, so that its star is a single
+fan.  A doubled triangle or two cones glued at their apex (a pinched vertex) are not; on them the
+estimates return numbers without meaning, and the least-squares shape operator breaks down.
+
+:func:`check_pseudomanifold` checks this in one compiled pass (ridges bucketed by their smallest
+vertex, then a union–find of the corners across shared ridges), cheap enough to run on every call
+on meshes of 10⁵ vertices, and names the simplex or vertex that breaks it.
+"""
+
+from __future__ import annotations
+
+from ..jit import njit
+import numpy as np
+import numpy.typing as npt
+
+from .validate import Mesh, validate_mesh
+
+__all__ = ["check_pseudomanifold", "checked_mesh"]
+
+
+@njit(cache=True)
+def _find(parent, x):
+    while parent[x] != x:
+        parent[x] = parent[parent[x]]
+        x = parent[x]
+    return x
+
+
+@njit(cache=True)
+def _edge_codes(s):
+    """:func:`_ridge_codes` for triangles: the two other vertices of each corner, (min, max)."""
+    m = s.shape[0]
+    lo = np.empty(3 * m, dtype=np.int64)
+    hi = np.empty(3 * m, dtype=np.int64)
+    for t in range(m):
+        for i in range(3):
+            a = s[t, (i + 1) % 3]
+            b = s[t, (i + 2) % 3]
+            lo[3 * t + i] = min(a, b)
+            hi[3 * t + i] = max(a, b)
+    return lo, hi
+
+
+@njit(cache=True)
+def _pseudomanifold_kernel(s, lo, key, nv, check_links):
+    """(code, a, b, c): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+ simplices;
+    3 vertex a pinched between simplices b and c.
+
+    Ridge r = (simplex r // k without its local vertex r % k) has smallest vertex ``lo[r]`` and the
+    others encoded injectively in ``key[r]``.
+    """
+    m, k = s.shape
+    counts = np.zeros(nv + 1, dtype=np.int64)
+    for r in range(m * k):
+        counts[lo[r] + 1] += 1
+    for v in range(nv):
+        counts[v + 1] += counts[v]
+    fill = counts[:-1].copy()
+    entries = np.empty(m * k, dtype=np.int64)
+    for r in range(m * k):
+        entries[fill[lo[r]]] = r
+        fill[lo[r]] += 1
+    parent = np.arange(m * k)
+    for v in range(nv):
+        start, end = counts[v], counts[v + 1]
+        size = end - start
+        if size < 2:
+            continue
+        bucket = entries[start:end]
+        if size <= 32:  # insertion sort by key (buckets hold a vertex's few ridges on meshes)
+            for x in range(1, size):
+                cur = bucket[x]
+                y = x - 1
+                while y >= 0 and key[bucket[y]] > key[cur]:
+                    bucket[y + 1] = bucket[y]
+                    y -= 1
+                bucket[y + 1] = cur
+        else:
+            bucket = bucket[np.argsort(key[bucket], kind="mergesort")]
+        x = 0
+        while x < size:
+            y = x + 1
+            while y < size and key[bucket[y]] == key[bucket[x]]:
+                y += 1
+            run = y - x
+            if run > 2:
+                return 2, bucket[x] // k, bucket[x] % k, 0
+            if run == 2:
+                t1, i1 = bucket[x] // k, bucket[x] % k
+                t2, i2 = bucket[x + 1] // k, bucket[x + 1] % k
+                if s[t1, i1] == s[t2, i2]:
+                    return 1, min(t1, t2), max(t1, t2), 0
+                # glue the corners of the two simplices at each vertex of the common ridge
+                for j1 in range(k):
+                    if j1 == i1:
+                        continue
+                    for j2 in range(k):
+                        if s[t2, j2] == s[t1, j1]:
+                            ra = _find(parent, t1 * k + j1)
+                            rb = _find(parent, t2 * k + j2)
+                            if ra != rb:
+                                parent[ra] = rb
+            x = y
+    if not check_links:
+        return 0, 0, 0, 0
+    first = np.full(nv, -1, dtype=np.int64)
+    where = np.full(nv, -1, dtype=np.int64)
+    for t in range(m):
+        for j in range(k):
+            v = s[t, j]
+            r = _find(parent, t * k + j)
+            if first[v] < 0:
+                first[v] = r
+                where[v] = t
+            elif first[v] != r:
+                return 3, v, where[v], t
+    return 0, 0, 0, 0
+
+
+def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
+    """For ridge r = (simplex r // k without vertex r % k): its smallest vertex and an injective
+    int64 code of the other ones."""
+    m, k = s.shape
+    if k == 3:
+        return _edge_codes(s)
+    ridges = np.sort(np.stack([np.delete(s, i, axis=1) for i in range(k)], axis=1).reshape(m * k, k - 1), axis=1)
+    rest = ridges[:, 1:]
+    if rest.shape[1] == 0:
+        return ridges[:, 0], np.zeros(m * k, dtype=np.int64)
+    if float(nv) ** rest.shape[1] < 2.0**62:
+        code = np.zeros(m * k, dtype=np.int64)
+        for j in range(rest.shape[1]):
+            code = code * nv + rest[:, j]
+        return ridges[:, 0], code
+    _, code = np.unique(rest, axis=0, return_inverse=True)  # huge vertex counts: rank the rows instead
+    return ridges[:, 0], code.ravel().astype(np.int64)
+
+
+def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> None:
+    """Raise ``ValueError`` unless the top simplices form a simplicial pseudo-manifold.
+
+    Thesis: §3.3 (the discrete curvatures sum over the star of a vertex and the two simplices at a
+    ridge) and §3.1.2 (each edge of a closed surface lies in exactly two triangles).
+
+    Parameters
+    ----------
+    simplices : (m, n + 1) int64 vertex indices in 0..n_vertices-1, no repeated vertex in a row.
+    n_vertices : number of vertices.
+
+    Raises
+    ------
+    ValueError
+        Naming a repeated simplex, a ridge in three or more simplices, or a pinched vertex (for
+        n >= 2: a vertex whose link is disconnected, its star two fans meeting only there).
+    """
+    s = np.ascontiguousarray(simplices, dtype=np.int64)
+    lo, key = _ridge_codes(s, int(n_vertices))
+    code, a, b, c = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
+    if code == 1:
+        raise ValueError(f"simplices {a} and {b} have the same vertices {sorted(s[a].tolist())}: a doubled "
+                         "simplex is not a pseudo-manifold")
+    if code == 2:
+        ridge = sorted(np.delete(s[a], b).tolist())
+        raise ValueError(f"the ridge {tuple(ridge)} of simplex {a} lies in three or more top simplices: "
+                         "not a pseudo-manifold")
+    if code == 3:
+        raise ValueError(f"vertex {a} is pinched: its link is disconnected (simplices {b} and {c} meet "
+                         "only through it), so it has no single fan; not a pseudo-manifold")
+
+
+def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
+    """:func:`~.validate.validate_mesh` followed by :func:`check_pseudomanifold`.
+
+    Thesis: Definition 3.13 (a triangulated hypersurface) and §3.3.
+
+    Parameters
+    ----------
+    vertices : (nv, n + 1) array of points.
+    simplices : (m, n + 1) top simplices (rows in orientation order).
+
+    Returns
+    -------
+    Mesh
+        The validated mesh.
+    """
+    mesh = validate_mesh(vertices, simplices)
+    check_pseudomanifold(mesh.simplices, len(mesh.vertices))
+    return mesh

@@ -1,0 +1,214 @@
+"""Experiments and their parameters: names, the ``parameters`` cell, validation and run hashes.
+
+An experiment is ``experiments/<name>.ipynb`` with one code cell tagged ``parameters`` that assigns
+plain literals: an int, float, str or bool, or a non-empty list of one of those.  Only the names
+:func:`list_experiments` shows are accepted (never a path), and every parameter value is checked
+against its default's type before any kernel starts.
+"""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+import json
+import math
+from collections.abc import Mapping
+from pathlib import Path
+
+import nbformat
+
+from .paths import project_root
+
+__all__ = [
+    "OUTPUT_PARAMETER",
+    "ParameterError",
+    "experiments_dir",
+    "list_experiments",
+    "notebook_path",
+    "experiment_parameters",
+    "resolve_parameters",
+    "run_hash",
+]
+
+#: set by the runner (the run's output folder); never a user parameter
+OUTPUT_PARAMETER = "output_dir"
+
+
+class ParameterError(ValueError):
+    """An experiment name, parameter name or parameter value is not acceptable."""
+
+
+def experiments_dir() -> Path:
+    """Folder holding the experiment notebooks."""
+    return project_root() / "experiments"
+
+
+def list_experiments() -> list[str]:
+    """Names of all experiments (notebooks in ``experiments/``)."""
+    return sorted(p.stem for p in experiments_dir().glob("*.ipynb") if not p.name.startswith("."))
+
+
+def notebook_path(name: object) -> Path:
+    """The notebook of experiment ``name``; only names that :func:`list_experiments` shows are accepted.
+
+    Raises
+    ------
+    ParameterError
+        For anything else (a path, ``..``, an unknown name), naming the known experiments.
+    """
+    known = list_experiments()
+    if not isinstance(name, str) or name not in known:
+        shown = ", ".join(known) or "none"
+        raise ParameterError(f"unknown experiment {name!r}; known experiments: {shown}")
+    folder = experiments_dir().resolve()
+    path = (folder / f"{name}.ipynb").resolve()
+    if path.parent != folder or not path.is_file():
+        raise ParameterError(f"experiment {name!r} is not a notebook inside {folder}")
+    return path
+
+
+def _parameters_cell(nb) -> str:
+    cells = [c for c in nb.cells if c.cell_type == "code" and "parameters" in c.metadata.get("tags", [])]
+    if len(cells) != 1:
+        raise ParameterError(f"an experiment needs exactly one cell tagged 'parameters', found {len(cells)}")
+    return cells[0].source
+
+
+def _is_scalar(value: object) -> bool:
+    return isinstance(value, (bool, int, float, str))
+
+
+def _is_scalar_list(value: object) -> bool:
+    """A non-empty list whose items share one scalar kind (ints may stand among floats)."""
+    if not isinstance(value, list) or not value or not all(_is_scalar(v) for v in value):
+        return False
+    kinds = {type(v) for v in value}
+    return len(kinds) == 1 or kinds == {int, float}
+
+
+def experiment_parameters(name: str) -> dict[str, object]:
+    """Default value of every parameter of experiment ``name``, read from its ``parameters`` cell."""
+    nb = nbformat.read(notebook_path(name), as_version=4)
+    try:
+        tree = ast.parse(_parameters_cell(nb))
+    except SyntaxError as exc:
+        raise ParameterError(f"{name}: the parameters cell is not valid Python ({exc.msg}, line {exc.lineno})") from None
+    params: dict[str, object] = {}
+    for node in tree.body:
+        if not (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)):
+            raise ParameterError(f"{name}: the parameters cell may only assign literals to names")
+        try:
+            value = ast.literal_eval(node.value)
+        except ValueError:
+            raise ParameterError(f"{name}: parameter {node.targets[0].id} is not a plain literal") from None
+        if not _is_scalar(value) and not _is_scalar_list(value):
+            raise ParameterError(f"{name}: parameter {node.targets[0].id} must be an int, float, str or bool, "
+                                 "or a non-empty list of one of those")
+        params[node.targets[0].id] = value
+    return params
+
+
+_TRUE = {"true", "yes", "1", "on"}
+_FALSE = {"false", "no", "0", "off"}
+
+
+def _kind(default: object) -> str:
+    if isinstance(default, list):
+        return f"a list of {type(default[0]).__name__}" if len({type(v) for v in default}) == 1 else "a list of float"
+    return type(default).__name__
+
+
+def _refuse(key: str, default: object, value: object, why: str = "") -> ParameterError:
+    text = f"parameter {key!r} expects {_kind(default)} (like {default!r}), got {value!r}"
+    return ParameterError(text + (f": {why}" if why else ""))
+
+
+def _coerce_list(key: str, value: object, default: list) -> list:
+    """A list parameter: a list, a JSON list (``[60, 100]``) or comma-separated text (``60,100``)."""
+    original = value
+    if isinstance(value, str):
+        text = value.strip()
+        if text.startswith("["):
+            try:
+                value = json.loads(text)
+            except (json.JSONDecodeError, RecursionError):
+                raise _refuse(key, default, value, "not a JSON list") from None
+        else:
+            value = text.split(",") if text else []
+    if isinstance(value, tuple):
+        value = list(value)
+    if not isinstance(value, list) or not value:
+        raise _refuse(key, default, value, "a non-empty list is needed")
+    item_default = 0.0 if any(isinstance(v, float) for v in default) else default[0]
+    items = []
+    for item in value:
+        try:
+            items.append(_coerce(key, item, item_default))
+        except ParameterError as exc:
+            inner = str(exc).split(f"got {item!r}", 1)[-1].lstrip(": ")
+            why = f"item {item!r} is not {_kind(item_default)}" + (f" ({inner})" if inner else "")
+            raise _refuse(key, default, original, why) from None
+    return items
+
+
+def _coerce(key: str, value: object, default: object) -> object:
+    if isinstance(default, list):
+        return _coerce_list(key, value, default)
+    if isinstance(value, str) and not isinstance(default, str):
+        text = value.strip()
+        try:
+            if isinstance(default, bool):
+                if text.lower() in _TRUE:
+                    return True
+                if text.lower() in _FALSE:
+                    return False
+                raise ValueError
+            value = int(text) if isinstance(default, int) else float(text)
+        except ValueError:
+            raise _refuse(key, default, value) from None
+    if isinstance(default, bool):
+        ok = isinstance(value, bool)
+    elif isinstance(default, int):
+        ok = isinstance(value, int) and not isinstance(value, bool)
+    elif isinstance(default, float):
+        ok = isinstance(value, (int, float)) and not isinstance(value, bool)
+        if ok:
+            try:
+                value = float(value)
+            except OverflowError:
+                raise _refuse(key, default, value, "too large for a float") from None
+            if not math.isfinite(value):
+                raise _refuse(key, default, value, "NaN and infinity are not parameter values")
+    else:
+        ok = isinstance(value, str)
+    if not ok:
+        raise _refuse(key, default, value)
+    return value
+
+
+def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None) -> dict[str, object]:
+    """Defaults of ``name`` updated with ``overrides`` (strings are converted to the default's type).
+
+    Raises ``ParameterError`` for an unknown experiment, an unknown parameter or a value of the
+    wrong type (NaN and infinity included); ``output_dir`` is set by the runner and cannot be
+    overridden.
+    """
+    defaults = experiment_parameters(name)
+    if overrides is not None and not isinstance(overrides, Mapping):
+        raise ParameterError(f"parameters must be a mapping of name to value, got {type(overrides).__name__}")
+    params = dict(defaults)
+    for key, value in (overrides or {}).items():
+        if key == OUTPUT_PARAMETER:
+            raise ParameterError(f"{OUTPUT_PARAMETER!r} is set by the runner; it is not a parameter to pass")
+        if key not in defaults:
+            known = ", ".join(k for k in defaults if k != OUTPUT_PARAMETER)
+            raise ParameterError(f"experiment {name!r} has no parameter {key!r}; its parameters are: {known}")
+        params[key] = _coerce(key, value, defaults[key])
+    params.pop(OUTPUT_PARAMETER, None)
+    return params
+
+
+def run_hash(params: Mapping[str, object]) -> str:
+    """Short stable hash of resolved parameters: the run's folder name."""
+    text = json.dumps(dict(params), sort_keys=True, allow_nan=False)
+    return hashlib.sha256(text.encode()).hexdigest()[:10]

@@ -1,0 +1,742 @@
+"""The Crust for hypersurfaces of R^{n+1}, n = 1, 2, 3: the thesis's "natural next step" (Chapter 5).
+
+The steps of :mod:`.crust` (ABK98) carry over to any dimension d = n + 1 word for word, because a
+hypersurface has codimension one:
+
+1. Delaunay triangulation of the samples S (Qhull; in R⁴ with the joggle option ``QJ``: samples of
+   the 3-sphere are co-spherical, a degenerate input on which Qhull's default merging takes minutes
+   at 10⁴ points, while the joggled triangulation takes seconds and equals the Delaunay
+   triangulation whenever it is unique).
+2. Poles: p⁺ the farthest Voronoi vertex of each sample's cell, p⁻ the farthest on the other side.
+   The Voronoi cell of a sample of a hypersurface is long and thin along the normal in any
+   dimension, so p⁺ - s estimates the normal line.
+3. Voronoi filtering: the n-simplices of Del(S ∪ P) with sample vertices.  An n-simplex of R^{n+1}
+   is dual to a Voronoi *edge* (codimension one), so the one-dimensional linear program of
+   :mod:`.crust` decides it without triangulating S ∪ P, in any dimension.
+4. Normal filter: the simplex's normal within θ of the pole vector at the vertex opposite its
+   largest facet (for a triangle: the largest-angle vertex), within 3θ/2 at the others.
+5. Trimming.  An (n - 1)-face (a ridge) of an n-simplex in R^{n+1} has a two-dimensional normal
+   plane, in which every n-simplex through the ridge is a direction — exactly as the triangles about
+   an edge in R³.  So the two steps of the 3-D trimming generalise: remove simplices with a sharp
+   ridge (in one simplex only, or all its simplices within a wedge of angle < π/2), then walk from
+   an outer simplex, across every ridge to the next simplex met when turning about the ridge
+   through the outside, orienting coherently; a simplex that would put a third simplex on a ridge
+   is left out.
+
+The result is checked (:func:`manifold_report`): every ridge in two simplices, every link of an
+(n - 2)-face a single circle, every vertex link a sphere (n = 3: connected with Euler
+characteristic 2), coherent orientation.  :func:`crust_nd` refuses (``ReconstructionError``, with
+the report) rather than return something that is not a closed manifold when ``closed=True``.
+
+For n = 2 this is the same computation as :func:`thesis_lib.meshes.crust` (a test compares them).
+Cocone (Amenta, Choi, Dey, Leekha 2002) would replace step 3 by a test of the Voronoi edge against
+each vertex's cocone; the Voronoi filter of the Crust already runs without triangulating S ∪ P, and
+on the 3-sphere and 3-catenoid it closes the surface (see ``experiments/hypersurface-crust``), so
+the Crust is kept.
+"""
+
+from __future__ import annotations
+
+import math
+from itertools import combinations
+from typing import NamedTuple
+
+import numba
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import Delaunay, QhullError, cKDTree
+
+from .._validate import as_points
+from .topology import euler_characteristic
+from .crust_geometry import filtered_faces, simplex_normals
+
+__all__ = ["crust_nd", "crust_nd_candidates", "extract_manifold_nd", "manifold_report", "manifold_vertices",
+           "ManifoldReport", "CrustResult", "ReconstructionError", "MAX_AMBIENT_DIM"]
+
+#: the largest ambient dimension d = n + 1 the Crust accepts (a 3-manifold in R⁴)
+MAX_AMBIENT_DIM = 4
+
+
+class ManifoldReport(NamedTuple):
+    """What a reconstructed n-dimensional simplicial complex is (:func:`manifold_report`)."""
+
+    n: int  #: dimension of the simplices
+    n_simplices: int
+    n_vertices: int  #: samples that are vertices of some simplex
+    vertex_fraction: float  #: n_vertices / number of samples
+    boundary_ridges: int  #: (n-1)-faces in one simplex (holes)
+    singular_ridges: int  #: (n-1)-faces in three or more simplices
+    boundary_components: int  #: connected pieces of the boundary (holes), 0 if closed
+    bad_ridge_links: int  #: (n-2)-faces whose link is not one circle or one path (n >= 2)
+    bad_vertex_links: int  #: vertices whose link is not a sphere or a disc (n = 3)
+    orientation_conflicts: int  #: ridges whose two simplices induce the same orientation
+    euler_characteristic: int
+
+    @property
+    def is_manifold(self) -> bool:
+        """A combinatorial n-manifold (possibly with boundary), coherently oriented."""
+        return (self.singular_ridges == 0 and self.bad_ridge_links == 0 and self.bad_vertex_links == 0
+                and self.orientation_conflicts == 0 and self.n_simplices > 0)
+
+    @property
+    def is_closed_manifold(self) -> bool:
+        """A closed, coherently oriented combinatorial n-manifold (every ridge in exactly two simplices)."""
+        return self.is_manifold and self.boundary_ridges == 0
+
+    def describe(self) -> str:
+        """One line: what is wrong (or that nothing is)."""
+        bad = []
+        if self.n_simplices == 0:
+            bad.append("no simplex")
+        if self.boundary_ridges:
+            bad.append(f"{self.boundary_ridges} ridges in one simplex ({self.boundary_components} holes)")
+        if self.singular_ridges:
+            bad.append(f"{self.singular_ridges} ridges in three or more simplices")
+        if self.bad_ridge_links:
+            bad.append(f"{self.bad_ridge_links} {self.n - 2}-faces whose link is not one circle")
+        if self.bad_vertex_links:
+            bad.append(f"{self.bad_vertex_links} vertices whose link is not a {self.n - 1}-sphere")
+        if self.orientation_conflicts:
+            bad.append(f"{self.orientation_conflicts} orientation conflicts")
+        head = (f"{self.n_simplices} {self.n}-simplices on {self.n_vertices} vertices "
+                f"({100 * self.vertex_fraction:.1f}% of the samples), χ = {self.euler_characteristic}")
+        return head + (": " + "; ".join(bad) if bad else ": a closed oriented combinatorial manifold")
+
+
+class CrustResult(NamedTuple):
+    """The reconstruction and its check."""
+
+    simplices: np.ndarray  #: (m, n + 1) coherently oriented n-simplices (outward for a closed surface)
+    report: ManifoldReport
+    pole_ratio: float  #: median over samples of (inner pole distance) / (nearest-sample distance)
+
+
+class ReconstructionError(ValueError):
+    """The Crust did not produce a closed manifold; ``report`` says what failed."""
+
+    def __init__(self, message: str, report: ManifoldReport | None = None, pole_ratio: float | None = None):
+        super().__init__(message)
+        self.report = report
+        self.pole_ratio = pole_ratio
+
+
+# ---------------------------------------------------------------------------- input
+def _samples_nd(points) -> np.ndarray:
+    pts = as_points(points, allow_duplicates=False)
+    n_pts, d = pts.shape
+    if d < 2:
+        raise ValueError(f"the Crust reconstructs hypersurfaces of R^d with d >= 2, got points in R^{d}")
+    if d > MAX_AMBIENT_DIM:
+        bound = float(n_pts) ** math.ceil(d / 2)
+        raise ValueError(
+            f"points in R^{d} (hypersurfaces of dimension {d - 1}) are refused: the Crust would build the "
+            f"Delaunay triangulation of {n_pts:,} points in R^{d}, up to n^⌈d/2⌉ ≈ {bound:.2g} simplices "
+            f"(R⁴ samples already give 13–53 simplices a point); the limit is d = {MAX_AMBIENT_DIM}")
+    if n_pts < d + 3:
+        raise ValueError(f"too few samples: {n_pts} points in R^{d}; the Crust needs at least {d + 3} "
+                         "(and many more to close a hypersurface)")
+    centred = pts - pts.mean(axis=0)
+    sv = np.linalg.svd(centred, compute_uv=False)
+    if sv[-1] <= 1e-10 * sv[0]:
+        raise ValueError(f"the points lie in an affine subspace of dimension < {d}: they sample no hypersurface "
+                         f"of R^{d} (drop a coordinate)")
+    return pts
+
+
+def _delaunay(pts: np.ndarray) -> Delaunay:
+    try:
+        return Delaunay(pts, qhull_options="QJ")
+    except QhullError as err:  # pragma: no cover - Qhull refuses only degenerate inputs caught above
+        raise ValueError(f"Qhull could not triangulate the samples: {str(err).splitlines()[0]}") from None
+
+
+def _far(pts: np.ndarray, far) -> float:
+    """Distance of the poles at infinity: ``far``, or half the diagonal of the bounding box."""
+    if far is None:
+        return 0.5 * float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0)))
+    f = float(far)
+    if not np.isfinite(f) or f <= 0:
+        raise ValueError(f"far must be a positive distance, got {far!r}")
+    return f
+
+
+def _check_theta(theta) -> float:
+    theta = float(theta)
+    if not 0 < theta < np.pi / 2:
+        raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
+    return theta
+
+
+def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
+    """Steps 1–4 of the Crust in R^{n+1}: the n-simplices of Del(S ∪ P) with sample vertices that
+    pass the normal filter.
+
+    Returns ``(m, n + 1)`` sorted vertex rows in lexicographic order.
+    Thesis: Chapter 5 (a higher-dimensional analogue of the Crust used in §3.4).
+    """
+    theta = _check_theta(theta)
+    pts = _samples_nd(points)
+    return filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))[0]
+
+
+# ---------------------------------------------------------------------------- trimming kernels
+def _unique_rows(rows: np.ndarray, return_counts: bool = False):
+    """``np.unique(rows, axis=0, return_inverse=True)`` for non-negative integer rows, by one int64
+    key per row (much faster than a row-wise unique)."""
+    rows = np.asarray(rows, dtype=np.int64)
+    base = int(rows.max()) + 1 if rows.size else 1
+    if base ** rows.shape[1] >= 2**62:
+        out = np.unique(rows, axis=0, return_inverse=True, return_counts=return_counts)
+        return (out[0], out[1].reshape(-1)) + tuple(out[2:])
+    key = np.zeros(len(rows), dtype=np.int64)
+    for c in range(rows.shape[1]):
+        key = key * base + rows[:, c]
+    out = np.unique(key, return_index=True, return_inverse=True, return_counts=return_counts)
+    return (rows[out[1]], out[2].reshape(-1)) + tuple(out[3:])
+
+
+def _ridge_structure(simplices: np.ndarray, nv: int):
+    """Ridges of the n-simplices: ``ridges`` (R, n) sorted rows, ``ridge_of`` (m, n + 1) the ridge
+    opposite each local vertex, and per ridge the incident simplices ``tri_of[start[r]:start[r+1]]``
+    with their opposite vertices ``opp``.  Slots are listed in the order n, 0, 1, …, n - 1 (for
+    n = 2 the edge order of :mod:`.crust`)."""
+    m, k1 = simplices.shape
+    slots = [k1 - 1] + list(range(k1 - 1))
+    r = np.concatenate([np.delete(simplices, k, axis=1) for k in slots])
+    r.sort(axis=1)
+    ridges, inv = _unique_rows(r)
+    uniq = ridges
+    ridge_of = np.empty((m, k1), dtype=np.int64)
+    for j, k in enumerate(slots):
+        ridge_of[:, k] = inv[j * m:(j + 1) * m]
+    order = np.argsort(inv, kind="stable")
+    counts = np.bincount(inv, minlength=len(uniq))
+    start = np.concatenate([[0], np.cumsum(counts)])
+    tri_of = order % m
+    opp = simplices[tri_of, np.asarray(slots)[order // m]]
+    return ridges, ridge_of, start, tri_of, opp
+
+
+@numba.njit(cache=True)
+def _complement_basis(pts, ridge):
+    """Orthonormal basis (rows) of the directions of the ridge's affine span (Gram–Schmidt)."""
+    k = ridge.shape[0] - 1
+    d = pts.shape[1]
+    q = np.zeros((k, d))
+    for i in range(k):
+        v = pts[ridge[i + 1]] - pts[ridge[0]]
+        for j in range(i):
+            v = v - (v * q[j]).sum() * q[j]
+        q[i] = v / (np.sqrt((v * v).sum()) + 1e-300)
+    return q
+
+
+@numba.njit(cache=True)
+def _project(w, q):
+    """``w`` minus its projection on the span of the rows of ``q``."""
+    for j in range(q.shape[0]):
+        w = w - (w * q[j]).sum() * q[j]
+    return w
+
+
+@numba.njit(cache=True)
+def _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp):
+    """Update ``sharp`` on the ridges ``todo``: a ridge is sharp when one live simplex contains it,
+    or all of them lie in a wedge < π/2."""
+    angles = np.empty(64)
+    for e in todo:
+        sharp[e] = False
+        q = _complement_basis(pts, ridges[e])
+        a = pts[ridges[e, 0]]
+        ref = np.zeros(pts.shape[1])
+        y = np.zeros(pts.shape[1])
+        got_ref = False
+        got_y = False
+        cnt = 0
+        for s in range(start[e], start[e + 1]):
+            if not alive[tri_of[s]]:
+                continue
+            w = _project(pts[opp[s]] - a, q)
+            w = w / (np.sqrt((w * w).sum()) + 1e-300)
+            if not got_ref:
+                ref = w
+                got_ref = True
+            elif not got_y:
+                yy = w - (w * ref).sum() * ref
+                ny = np.sqrt((yy * yy).sum())
+                if ny > 1e-9:
+                    y = yy / ny
+                    got_y = True
+            cnt += 1
+        if cnt == 0:
+            continue
+        if cnt == 1:
+            sharp[e] = True
+            continue
+        m = 0
+        for s in range(start[e], start[e + 1]):
+            if not alive[tri_of[s]] or m >= 64:
+                continue
+            w = _project(pts[opp[s]] - a, q)
+            angles[m] = np.arctan2((w * y).sum(), (w * ref).sum()) % (2 * np.pi)
+            m += 1
+        srt = np.sort(angles[:m])
+        gap = 2 * np.pi - srt[m - 1] + srt[0]
+        for i in range(1, m):
+            gap = max(gap, srt[i] - srt[i - 1])
+        if gap > 1.5 * np.pi:
+            sharp[e] = True
+
+
+def _prune_sharp(pts, simplices, ridges, ridge_of, start, tri_of, opp, max_rounds: int = 10000) -> np.ndarray:
+    """Mask of the simplices left after removing those with a sharp ridge until none is left (each
+    round re-examines only the ridges of the simplices just removed)."""
+    alive = np.ones(len(simplices), dtype=bool)
+    sharp = np.zeros(len(ridges), dtype=bool)
+    todo = np.arange(len(ridges))
+    for _ in range(max_rounds):
+        _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp)
+        kill = alive & sharp[ridge_of].any(axis=1)
+        if not kill.any():
+            break
+        alive &= ~kill
+        todo = np.unique(ridge_of[kill])
+    return alive
+
+
+@numba.njit(cache=True)
+def _oriented_normal(pts, o):
+    """Normal of the oriented simplex o: cofactors of its edge vectors (the cross product for n = 2)."""
+    n = o.shape[0] - 1
+    d = pts.shape[1]
+    e = np.empty((n, d))
+    for i in range(n):
+        e[i] = pts[o[i + 1]] - pts[o[0]]
+    nrm = np.empty(d)
+    sub = np.empty((n, n))
+    for k in range(d):
+        for i in range(n):
+            c = 0
+            for j in range(d):
+                if j != k:
+                    sub[i, c] = e[i, j]
+                    c += 1
+        sign = 1.0 if k % 2 == 0 else -1.0
+        nrm[k] = sign * np.linalg.det(sub)
+    return nrm / (np.sqrt((nrm * nrm).sum()) + 1e-300)
+
+
+@numba.njit(cache=True)
+def _parity(a, b):
+    """+1 if the vertex list ``b`` is an even permutation of ``a``, -1 if odd (same vertex sets)."""
+    k = a.shape[0]
+    perm = np.empty(k, dtype=np.int64)
+    for i in range(k):
+        for j in range(k):
+            if b[i] == a[j]:
+                perm[i] = j
+    inv = 0
+    for i in range(k):
+        for j in range(i + 1, k):
+            if perm[i] > perm[j]:
+                inv += 1
+    return 1 if inv % 2 == 0 else -1
+
+
+@numba.njit(cache=True)
+def _walk_nd(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, seed, seed_flip, breadth_first,
+             max_fold):
+    """Coherently oriented walk from ``seed`` across every ridge to the next live simplex met when
+    turning about the ridge through the outside (the side the oriented normal points to).  Depth
+    first as in :mod:`.crust`, or ``breadth_first`` (a piece with boundary: the simplices near the
+    seed are claimed before the walk reaches the debris along the boundary)."""
+    m, k1 = simplices.shape
+    n = k1 - 1
+    orient = np.zeros((m, k1), dtype=np.int64)
+    seen = np.zeros(m, dtype=np.bool_)
+    stack = np.empty(m, dtype=np.int64)
+    visit = np.empty(m, dtype=np.int64)
+    nvisit = 0
+    for i in range(k1):
+        orient[seed, i] = simplices[seed, i]
+    if seed_flip:
+        orient[seed, 0], orient[seed, 1] = orient[seed, 1], orient[seed, 0]
+    seen[seed] = True
+    stack[0] = seed
+    top = 1
+    conflicts = 0
+    want = np.empty(k1, dtype=np.int64)
+    rot = np.empty(k1, dtype=np.int64)
+    head = 0
+    while top > head:
+        if breadth_first:
+            t = stack[head]
+            head += 1
+        else:
+            top -= 1
+            t = stack[top]
+        visit[nvisit] = t
+        nvisit += 1
+        o = orient[t].copy()
+        nrm = _oriented_normal(pts, o)
+        for j in range(k1):
+            pos_c = (j + n) % k1  # positions n, 0, 1, ..., n - 1
+            c = o[pos_c]
+            kc = 0
+            for i in range(k1):
+                if simplices[t, i] == c:
+                    kc = i
+            e = ridge_of[t, kc]
+            q = _complement_basis(pts, ridges[e])
+            a = pts[ridges[e, 0]]
+            wc = _project(pts[c] - a, q)
+            wc = wc / (np.sqrt((wc * wc).sum()) + 1e-300)
+            best = -1
+            best_ang = 1e300
+            best_d = -1
+            for s in range(start[e], start[e + 1]):
+                t2 = tri_of[s]
+                if t2 == t or not alive[t2]:
+                    continue
+                wd = _project(pts[opp[s]] - a, q)
+                ang = np.arctan2((wd * nrm).sum(), (wd * wc).sum()) % (2 * np.pi)
+                if ang < best_ang:
+                    best_ang = ang
+                    best = t2
+                    best_d = opp[s]
+            if best < 0 or abs(best_ang - np.pi) > max_fold:
+                continue
+            # the ridge in cyclic order after c, then d; it must induce the opposite orientation
+            for i in range(n):
+                rot[i] = o[(pos_c + 1 + i) % k1]
+            rot[n] = best_d
+            # [ridge, c] = sigma [o] with sigma the sign of a cyclic shift by pos_c + 1
+            sigma = -1 if (n * (pos_c + 1)) % 2 == 1 else 1
+            for i in range(k1):
+                want[i] = rot[i]
+            if sigma == 1:  # want -[ridge, d]: one transposition (for n = 2 the (b, a, d) of .crust)
+                want[0], want[1] = rot[1], rot[0]
+            if seen[best]:
+                if _parity(want, orient[best]) != 1:
+                    conflicts += 1
+                continue
+            seen[best] = True
+            for i in range(k1):
+                orient[best, i] = want[i]
+            stack[top] = best
+            top += 1
+    return orient, visit[:nvisit], conflicts
+
+
+@numba.njit(cache=True)
+def _greedy_manifold(ridge_of, order, n_ridges):
+    """Keep simplices in visiting order while each of their ridges has fewer than two kept ones."""
+    used = np.zeros(n_ridges, dtype=np.int64)
+    keep = np.zeros(len(order), dtype=np.bool_)
+    k1 = ridge_of.shape[1]
+    for i in range(len(order)):
+        t = order[i]
+        ok = True
+        for k in range(k1):
+            if used[ridge_of[t, k]] >= 2:
+                ok = False
+        if ok:
+            keep[i] = True
+            for k in range(k1):
+                used[ridge_of[t, k]] += 1
+    return keep
+
+
+@numba.njit(cache=True)
+def _openness(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, t, flip):
+    """Smallest turning angle, over the ridges of simplex ``t`` (oriented, flipped or not), to another
+    live simplex: about π on a sheet, small on the inner side of a pocket of candidates."""
+    o = simplices[t].copy()
+    if flip:
+        o[0], o[1] = o[1], o[0]
+    nrm = _oriented_normal(pts, o)
+    worst = 2 * np.pi
+    for kc in range(o.shape[0]):
+        e = ridge_of[t, kc]
+        q = _complement_basis(pts, ridges[e])
+        a = pts[ridges[e, 0]]
+        wc = _project(pts[simplices[t, kc]] - a, q)
+        wc = wc / (np.sqrt((wc * wc).sum()) + 1e-300)
+        for s in range(start[e], start[e + 1]):
+            if tri_of[s] == t or not alive[tri_of[s]]:
+                continue
+            wd = _project(pts[opp[s]] - a, q)
+            worst = min(worst, np.arctan2((wd * nrm).sum(), (wd * wc).sum()) % (2 * np.pi))
+    return worst
+
+
+#: an open piece is walked from the most open of this many simplices nearest the samples' centroid
+_OPEN_SEEDS = 300
+
+
+def _outer_seed(pts, s, alive) -> tuple[int, bool]:
+    """A live simplex at the extreme-x sample whose normal is closest to ±x, oriented to +x (as .crust)."""
+    live = np.flatnonzero(alive)
+    top = int(np.argmax(pts[:, 0]))
+    cand = live[(s[live] == top).any(axis=1)]
+    if len(cand) == 0:
+        cand = live[[int(np.argmax(pts[s[live]].max(axis=1)[:, 0]))]]
+    nrm = simplex_normals(pts[s[cand]])
+    nrm /= np.linalg.norm(nrm, axis=1, keepdims=True) + 1e-300
+    i = int(np.argmax(np.abs(nrm[:, 0])))
+    return int(cand[i]), bool(nrm[i, 0] < 0)
+
+
+def _open_seed(pts, s, structure) -> tuple[int, bool]:
+    """The most open (largest :func:`_openness`) simplex and orientation near the samples' centroid."""
+    alive = np.ones(len(s), dtype=bool)
+    dist = np.linalg.norm(pts[s].mean(axis=1) - pts.mean(axis=0), axis=1)
+    near = np.argsort(dist, kind="stable")[:_OPEN_SEEDS]
+    best = max((_openness(pts, s, alive, *structure, int(t), f), -i, int(t), f)
+               for i, t in enumerate(near) for f in (False, True))
+    return best[2], best[3]
+
+
+def extract_manifold_nd(points, simplices, *, closed: bool = True) -> tuple[np.ndarray, int]:
+    """Trimming step of the Crust in R^{n+1}: from candidate n-simplices to an oriented manifold.
+
+    ``closed`` (a closed hypersurface): remove simplices with sharp ridges until none is left, then
+    walk depth first from an outer simplex (at the extreme-x sample), as the 3-D Crust does.
+    Otherwise (a piece with boundary, which erosion would eat from its border and which has no
+    outside): walk breadth first from the most open simplex near the centroid, stop where the
+    next simplex folds by more than π/2 (the boundary).  The result may have defects along the
+    boundary and where slivers confused the walk: :func:`manifold_vertices` tells the vertices
+    whose star is a manifold ball.
+
+    Returns ``(simplices, conflicts)``: coherently oriented n-simplices (outward for a closed
+    hypersurface; every ridge in one or two of them) and the orientation conflicts met by the walk.
+    Thesis: Chapter 5 (higher-dimensional Crust; the trimming of [ABK98] used in §3.4).
+    """
+    pts = as_points(points, min_points=2)
+    s = np.asarray(simplices)
+    if s.ndim != 2 or s.shape[1] != pts.shape[1] or len(s) == 0 or not np.issubdtype(s.dtype, np.integer):
+        raise ValueError(f"simplices must be a non-empty (m, {pts.shape[1]}) integer array for points in "
+                         f"R^{pts.shape[1]}, got shape {s.shape}")
+    s = s.astype(np.int64)
+    if s.min() < 0 or s.max() >= len(pts):
+        raise ValueError("simplices refer to points that do not exist")
+    structure = _ridge_structure(s, len(pts))
+    ridges, ridge_of = structure[0], structure[1]
+    if closed:
+        alive = _prune_sharp(pts, s, *structure)
+        if not alive.any():
+            raise ValueError("trimming removed every simplex: the sample is too sparse for the Crust")
+        seed, flip = _outer_seed(pts, s, alive)
+        walk = _walk_nd(pts, s, alive, *structure, seed, flip, False, np.pi)
+    else:
+        alive = np.ones(len(s), dtype=bool)
+        seed, flip = _open_seed(pts, s, structure)
+        walk = _walk_nd(pts, s, alive, *structure, seed, flip, True, np.pi / 2)
+    orient, order, conflicts = walk
+    return orient[order[_greedy_manifold(ridge_of, order, len(ridges))]], int(conflicts)
+
+
+# ---------------------------------------------------------------------------- checks
+def _sorted_parity(rows: np.ndarray) -> np.ndarray:
+    """Sign (+1/-1) of the permutation sorting each row."""
+    inv = np.zeros(len(rows), dtype=np.int64)
+    for i in range(rows.shape[1]):
+        for j in range(i + 1, rows.shape[1]):
+            inv += rows[:, i] > rows[:, j]
+    return 1 - 2 * (inv % 2)
+
+
+def _components_per_group(group: np.ndarray, a: np.ndarray, b: np.ndarray, n_groups: int) -> np.ndarray:
+    """Number of connected components of the graph on nodes (group, vertex) with edges a–b, per group."""
+    node_key = np.concatenate([np.stack([group, a], 1), np.stack([group, b], 1)])
+    uniq, inv = _unique_rows(node_key)
+    k = len(group)
+    graph = coo_matrix((np.ones(k), (inv[:k], inv[k:])), shape=(len(uniq), len(uniq)))
+    _, label = connected_components(graph, directed=False)
+    comp_group = np.zeros(label.max() + 1, dtype=np.int64)
+    comp_group[label] = uniq[:, 0]
+    return np.bincount(comp_group, minlength=n_groups)
+
+
+def _faces_with_index(s: np.ndarray, k: int):
+    """Distinct k-faces of the rows of ``s`` and, for each (row, combination), the face's index."""
+    combos = list(combinations(range(s.shape[1]), k + 1))
+    f = np.concatenate([s[:, c] for c in combos])
+    uniq, inv = _unique_rows(f)
+    return uniq, inv.reshape(len(combos), len(s)).T, combos
+
+
+def _link_components(ss: np.ndarray, k: int, n_groups: int | None = None):
+    """For every k-face of the sorted n-simplices ``ss`` (k = n - 2 or, with three vertices left, a
+    vertex of a tetrahedron's link triangles): the faces and the number of connected components of
+    the graph whose edges are the remaining vertex pairs."""
+    faces, fidx, combos = _faces_with_index(ss, k)
+    group, a_, b_ = [], [], []
+    for c, comb in enumerate(combos):
+        rest = [i for i in range(ss.shape[1]) if i not in comb]
+        group.append(fidx[:, c])
+        a_.append(ss[:, rest[0]])
+        b_.append(ss[:, rest[1]])
+    n = len(faces) if n_groups is None else n_groups
+    return faces, _components_per_group(np.concatenate(group), np.concatenate(a_), np.concatenate(b_), n)
+
+
+def _defects(s: np.ndarray, npts: int) -> tuple[dict, np.ndarray, np.ndarray]:
+    """Counts for :class:`ManifoldReport`, the mask of vertices at a defect (a singular ridge, a
+    ridge with an orientation conflict, an (n-2)-face whose link is not one path or circle, a vertex
+    whose link is not a sphere or disc) and the mask of vertices on a boundary ridge."""
+    m, k1 = s.shape
+    n = k1 - 1
+    ss = np.sort(s, axis=1)
+    bad = np.zeros(npts, dtype=bool)
+    ridge_rows = np.concatenate([np.delete(s, k, axis=1) for k in range(k1)])
+    sign = np.repeat((-1) ** np.arange(k1), m) * _sorted_parity(ridge_rows)
+    ridges, rinv, rcount = _unique_rows(np.sort(ridge_rows, axis=1), return_counts=True)
+    boundary = rcount == 1
+    sign_sum = np.bincount(rinv, weights=sign, minlength=len(ridges))
+    conflict = (rcount == 2) & (sign_sum != 0)
+    bad[ridges[(rcount > 2) | conflict].ravel()] = True
+    b = ridges[boundary]
+    on_boundary = np.zeros(npts, dtype=bool)
+    on_boundary[b.ravel()] = True
+    holes = 0
+    if len(b):
+        if n == 1:
+            holes = max(len(b) // 2, 1)  # the ends of paths, two per path
+        else:
+            sub, sub_idx, _ = _faces_with_index(b, n - 2)
+            ridge_id = np.repeat(np.arange(len(b)), sub_idx.shape[1])
+            graph = coo_matrix((np.ones(ridge_id.size), (ridge_id, len(b) + sub_idx.ravel())),
+                               shape=(len(b) + len(sub), len(b) + len(sub)))
+            holes = len(np.unique(connected_components(graph, directed=False)[1][: len(b)]))
+    bad_ridge_links = 0
+    if n >= 2:
+        faces, comps = _link_components(ss, n - 2)
+        bad[faces[comps != 1].ravel()] = True
+        bad_ridge_links = int(np.count_nonzero(comps != 1))
+    bad_vertex_links = 0
+    if n == 3:  # link of v: connected, χ = #edges - #triangles + #tetrahedra through v, 2 or 1 (disc)
+        edges, _, _ = _faces_with_index(ss, 1)
+        tris, _, _ = _faces_with_index(ss, 2)
+        chi = (np.bincount(edges.ravel(), minlength=npts) - np.bincount(tris.ravel(), minlength=npts)
+               + np.bincount(ss.ravel(), minlength=npts))
+        _, comps = _link_components(tris, 0, npts)
+        used = np.zeros(npts, dtype=bool)
+        used[ss.ravel()] = True
+        wrong = used & ((comps != 1) | (chi != np.where(on_boundary, 1, 2)))
+        bad |= wrong
+        bad_vertex_links = int(np.count_nonzero(wrong))
+    counts = dict(boundary_ridges=int(boundary.sum()), singular_ridges=int(np.count_nonzero(rcount > 2)),
+                  boundary_components=int(holes), bad_ridge_links=bad_ridge_links,
+                  bad_vertex_links=bad_vertex_links, orientation_conflicts=int(conflict.sum()))
+    return counts, bad, on_boundary
+
+
+def manifold_vertices(simplices, n_points: int | None = None) -> np.ndarray:
+    """Mask of the vertices whose star is a manifold n-ball: interior (on no boundary ridge) and at
+    no defect (:func:`manifold_report`).  Curvature estimated there uses a complete, clean star.
+    Thesis: Definition 3.15 (the discrete mean curvature at p uses the simplices around p).
+    """
+    s = np.asarray(simplices, dtype=np.int64)
+    npts = int(s.max()) + 1 if n_points is None else max(int(n_points), int(s.max()) + 1)
+    _, bad, on_boundary = _defects(s, npts)
+    used = np.zeros(npts, dtype=bool)
+    used[s.ravel()] = True
+    return used & ~bad & ~on_boundary
+
+
+def manifold_report(simplices, n_points: int | None = None) -> ManifoldReport:
+    """Check that n-simplices form a (closed) coherently oriented combinatorial n-manifold.
+
+    Ridges ((n-1)-faces) in one simplex are boundary (holes), in three or more singular; the link of
+    every (n-2)-face must be one circle (or one path at the boundary); for n = 3 every vertex link
+    must be a 2-sphere (connected, χ = 2) or a disc (connected, χ = 1); two simplices sharing a ridge
+    must induce opposite orientations on it.
+    Thesis: §3.1.2 (every edge of a closed surface in two triangles), generalised (Chapter 5).
+
+    Parameters
+    ----------
+    simplices : ``(m, n + 1)`` oriented vertex rows.
+    n_points : number of samples (default: largest vertex index + 1), for ``vertex_fraction``.
+    """
+    s = np.asarray(simplices)
+    if s.ndim != 2 or s.shape[1] < 2 or not np.issubdtype(s.dtype, np.integer) or (len(s) and s.min() < 0):
+        raise ValueError(f"simplices must be an (m, n + 1) array of vertex indices with n >= 1, got shape {s.shape}")
+    s = s.astype(np.int64)
+    n = s.shape[1] - 1
+    if len(s) == 0:
+        return ManifoldReport(n, 0, 0, 0.0, 0, 0, 0, 0, 0, 0, 0)
+    npts = int(s.max()) + 1 if n_points is None else max(int(n_points), int(s.max()) + 1)
+    counts, _, _ = _defects(s, npts)
+    nverts = len(np.unique(s))
+    return ManifoldReport(n=n, n_simplices=len(s), n_vertices=nverts, vertex_fraction=nverts / npts,
+                          euler_characteristic=euler_characteristic(np.sort(s, axis=1)), **counts)
+
+
+def _pole_ratio(pts: np.ndarray, p_plus: np.ndarray, p_minus: np.ndarray) -> float:
+    """Median over samples of min(|p⁺ - s|, |p⁻ - s|) / (distance to the nearest other sample).
+
+    Large (≳ 3) for a sample of a hypersurface (long thin Voronoi cells), about 1 for points that
+    fill a volume (round cells)."""
+    near = cKDTree(pts).query(pts, k=2)[0][:, 1]
+    h = np.minimum(np.linalg.norm(p_plus - pts, axis=1), np.linalg.norm(p_minus - pts, axis=1))
+    return float(np.median(h / near))
+
+
+def crust_nd(points, *, theta: float = np.pi / 4, closed: bool = True, far: float | None = None) -> CrustResult:
+    """Reconstruct a hypersurface of R^{n+1} (n = 1, 2, 3) from samples with the Crust [ABK98].
+
+    Thesis: Chapter 5 ("a natural next step ... higher dimensional analogues of the Crust Algorithm");
+    the 3-D Crust is the one of §3.4.
+
+    Parameters
+    ----------
+    points : ``(N, n + 1)`` samples without duplicates, 2 <= n + 1 <= 4.
+    theta : normal-filter angle θ (θ at the vertex opposite the largest facet, 3θ/2 at the others).
+    closed : the samples come from a closed hypersurface (trimming by sharp ridges and the outer
+        walk, as in 3-D); refuse unless the result is a closed oriented combinatorial manifold.
+        ``False``: a piece with boundary (see :func:`extract_manifold_nd`); the report counts its
+        defects and :func:`manifold_vertices` tells the vertices with a clean manifold star.
+    far : distance of the poles at infinity (default half the bounding-box diagonal).
+
+    Returns
+    -------
+    CrustResult
+        ``simplices`` (m, n + 1) coherently oriented (outward when closed), the
+        :class:`ManifoldReport` and the pole ratio (median inner-pole distance over nearest-sample
+        distance: about 1 when the points fill a volume).
+
+    Raises
+    ------
+    ValueError
+        Points in R^d with d > 4 (refused with the size that would be built), too few samples,
+        points in a lower-dimensional subspace, θ outside (0, π/2).
+    ReconstructionError
+        (a ValueError) The result is not a closed manifold (``closed=True``), or nothing of it is a
+        manifold; the message says what failed and whether the points look like a sample of a
+        hypersurface at all.
+    """
+    theta = _check_theta(theta)
+    pts = _samples_nd(points)
+    faces, p_plus, p_minus = filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))
+    ratio = _pole_ratio(pts, p_plus, p_minus)
+    hint = (f"the median pole distance is {ratio:.2g} nearest-sample distances: the points fill a volume "
+            "rather than sample a hypersurface" if ratio < 2.5 else
+            f"the median pole distance is {ratio:.2g} nearest-sample distances (a hypersurface-like sample): "
+            "the sample may be too sparse or too noisy for its curvature")
+    if len(faces) == 0:
+        raise ReconstructionError(f"no {pts.shape[1] - 1}-simplex survived the Crust's filtering; {hint}",
+                                  None, ratio)
+    try:
+        out, _ = extract_manifold_nd(pts, faces, closed=closed)
+    except ValueError as err:
+        raise ReconstructionError(f"{err}; {hint}", None, ratio) from None
+    report = manifold_report(out, len(pts))
+    if not closed and not manifold_vertices(out, len(pts)).any():
+        raise ReconstructionError(f"no vertex of the reconstruction has a manifold star: {report.describe()}; {hint}",
+                                  report, ratio)
+    if closed and not report.is_closed_manifold:
+        raise ReconstructionError(f"the Crust did not produce a closed manifold: {report.describe()}; {hint}",
+                                  report, ratio)
+    return CrustResult(out, report, ratio)

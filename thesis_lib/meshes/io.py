@@ -1,0 +1,163 @@
+"""Triangle meshes in and out: files (VTK, VTP, PLY, STL, OBJ, ...) and pyvista ``PolyData``.
+
+So that users can bring their own surfaces to the curvature estimates of chapter 3 (and take ours
+to ParaView or any VTK tool), meshes convert to and from pyvista, whose readers and writers cover
+the common formats; the library's own form is the pair ``(vertices (nv, 3), faces (m, 3))``.
+pyvista is imported on first use (it is slow to import).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+
+from .._validate import InvalidTypeError, as_points, check_simplices
+
+__all__ = ["read_mesh", "write_mesh", "to_pyvista", "from_pyvista"]
+
+
+def _pyvista():
+    import warnings
+
+    with warnings.catch_warnings():  # pyvista's tqdm import warns with this machine's path
+        warnings.filterwarnings("ignore", message="IProgress not found")
+        import pyvista
+
+    return pyvista
+
+
+def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike):
+    """A pyvista ``PolyData`` of a triangle mesh.
+
+    Thesis: §3.4 (the triangulated surfaces of the experiments).
+
+    Parameters
+    ----------
+    vertices : (nv, 3) array of points (float64 is kept).
+    faces : (m, 3) vertex indices (the row order is the orientation, kept).
+
+    Returns
+    -------
+    pyvista.PolyData
+    """
+    v = as_points(vertices, name="vertices")
+    if v.shape[1] != 3:
+        raise ValueError(f"pyvista meshes live in R³; vertices have {v.shape[1]} coordinates")
+    f = check_simplices(faces, len(v), "faces", width=3)
+    pv = _pyvista()
+    cells = np.column_stack([np.full(len(f), 3, dtype=np.int64), f]).ravel()
+    return pv.PolyData(v.copy(), cells)
+
+
+def from_pyvista(mesh) -> tuple[np.ndarray, np.ndarray]:
+    """``(vertices, faces)`` of a pyvista mesh; polygons and other cells are triangulated first.
+
+    Thesis: §3.4 (the triangulated surfaces of the experiments).
+
+    Parameters
+    ----------
+    mesh : pyvista.DataSet (``PolyData``, ``UnstructuredGrid``, ...): its surface is used.
+
+    Returns
+    -------
+    vertices : (nv, 3) float64.
+    faces : (m, 3) int64, in the mesh's vertex order (lines and points are dropped).
+    """
+    pv = _pyvista()
+    if not isinstance(mesh, pv.DataSet):
+        raise InvalidTypeError(f"expected a pyvista mesh (PolyData, UnstructuredGrid, ...), got {type(mesh).__name__}")
+    if isinstance(mesh, pv.PolyData):
+        surface = mesh
+    else:
+        import warnings
+
+        with warnings.catch_warnings():  # pyvista announces a change of the default algorithm
+            warnings.simplefilter("ignore", FutureWarning)
+            surface = mesh.extract_surface()
+    if np.asarray(surface.faces).size == 0:
+        raise ValueError("the mesh has no faces (only points or lines)")
+    if not surface.is_all_triangles:
+        surface = surface.triangulate()
+    faces = np.asarray(surface.faces, dtype=np.int64).reshape(-1, 4)
+    if faces.size and not np.all(faces[:, 0] == 3):
+        raise ValueError("the mesh's faces could not be triangulated")
+    return np.asarray(surface.points, dtype=np.float64), np.ascontiguousarray(faces[:, 1:])
+
+
+def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
+    """Read a triangle mesh from any file pyvista reads (``.vtk``, ``.vtp``, ``.ply``, ``.stl``, ``.obj``, ...).
+
+    Thesis: §3.4 (surfaces to estimate curvature on).
+
+    Parameters
+    ----------
+    path : the file.
+
+    Returns
+    -------
+    vertices : (nv, 3) float64.
+    faces : (m, 3) int64 (polygons triangulated).
+
+    Raises
+    ------
+    FileNotFoundError
+        If there is no such file.
+    ValueError
+        If pyvista cannot read it or it holds no faces.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise FileNotFoundError(f"no mesh file {p}")
+    pv = _pyvista()
+    try:
+        mesh = pv.read(str(p))
+    except Exception as err:  # pyvista/VTK raise various errors for unknown or broken files
+        raise ValueError(f"cannot read {p.name} as a mesh: {err}") from None
+    if isinstance(mesh, pv.MultiBlock):
+        mesh = mesh.combine()
+    return from_pyvista(mesh)
+
+
+def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.ArrayLike, *, binary: bool = True) -> Path:
+    """Write a triangle mesh; the format follows the suffix (``.vtk``, ``.vtp``, ``.ply``, ``.stl``, ...).
+
+    Thesis: §3.4 (the reconstructed surfaces, for viewing in other tools).
+
+    Written to a temporary file beside ``path`` first and renamed on success, so an interrupted
+    write never leaves a half-written mesh.  ``.vtk``/``.vtp`` keep float64 coordinates; ``.ply``
+    and ``.stl`` store float32, and STL stores each face's corners (vertices shared by faces are
+    merged again when read).
+
+    Parameters
+    ----------
+    path : destination file (its folder must exist).
+    vertices, faces : the mesh, as in :func:`to_pyvista`.
+    binary : binary rather than ASCII where the format allows both.
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
+    p = Path(path)
+    if not p.suffix:
+        raise ValueError(f"give the file a suffix naming its format (.vtk, .vtp, .ply, .stl, ...): {p}")
+    if not p.parent.is_dir():
+        raise FileNotFoundError(f"no folder {p.parent} to write {p.name} into")
+    mesh = to_pyvista(vertices, faces)
+    fd, tmp = tempfile.mkstemp(prefix=f".{p.stem}-", suffix=p.suffix, dir=p.parent)
+    os.close(fd)
+    try:
+        try:
+            mesh.save(tmp, binary=binary)
+        except ValueError as err:
+            raise ValueError(f"cannot write {p.name}: {err}") from None
+        os.replace(tmp, p)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+    return p

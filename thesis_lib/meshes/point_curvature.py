@@ -1,0 +1,64 @@
+"""Curvature at every point of a point cloud, by one of the thesis's estimators (the estimator is a
+parameter): on a surface reconstructed by the Crust, Chapter 3's discrete mean or Gaussian
+curvature; with no surface, the least-squares shape operator of §3.3.4 on k nearest neighbours.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .._validate import as_points
+from ..curvature import gaussian_curvature, mean_curvature
+from ..curvature.pointcloud import knn_curvature
+from .crust import crust
+from .crust_nd import crust_nd
+
+__all__ = ["point_curvature", "CURVATURE_ESTIMATORS"]
+
+CURVATURE_ESTIMATORS = ("knn", "crust")
+
+
+def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: int = 16,
+                    area: str = "mixed") -> np.ndarray:
+    """Estimated curvature at every point: |H| (``kind="mean"``) or K (``"gaussian"``, surfaces in R³).
+
+    Thesis: §3.3.1–§3.3.3 (mean curvature, Theorem 3.18; Gaussian curvature, Definition 3.21) on a
+    Crust reconstruction (§3.4), or §3.3.4 (least-squares shape operator) on k-neighbourhoods.
+
+    Parameters
+    ----------
+    points : ``(N, n + 1)`` samples of a hypersurface (a curve in R², a surface in R³, a
+        3-manifold in R⁴).
+    estimator : ``"crust"``: reconstruct with the Crust (:func:`crust` in R³, :func:`crust_nd`
+        otherwise) and apply the discrete formulas of §3.3 at its vertices; ``"knn"``: the
+        least-squares shape operator on the ``k`` nearest neighbours (no surface needed).
+    kind : ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
+    k : neighbours of the ``"knn"`` estimator.
+    area : vertex area of the ``"crust"`` estimator (``"mixed"`` needs n = 2; use ``"voronoi"`` or
+        ``"barycentric"`` otherwise).
+
+    Returns
+    -------
+    ndarray, shape (N,)
+        NaN where the estimate is undefined (``"crust"``: samples that are not vertices of the
+        reconstruction, boundary vertices); :func:`thesis_lib.multiparameter.radius_curvature_bifiltration`
+        refuses NaN with a clear error.
+    """
+    pts = as_points(points, allow_duplicates=False)
+    if estimator not in CURVATURE_ESTIMATORS:
+        raise ValueError(f"estimator must be one of {CURVATURE_ESTIMATORS}, got {estimator!r}")
+    if kind not in ("mean", "gaussian"):
+        raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
+    if estimator == "knn":
+        return knn_curvature(pts, kind=kind, k=k)
+    if kind == "gaussian" and pts.shape[1] != 3:
+        raise ValueError(f"the Gaussian curvature (Definition 3.21) is for surfaces in R³, got points in R^{pts.shape[1]}")
+    if pts.shape[1] == 3:
+        faces = crust(pts)
+    else:
+        faces = crust_nd(pts).simplices
+        if area == "mixed":
+            raise ValueError("the mixed area is defined for surfaces in R³; use area='voronoi' or 'barycentric'")
+    if kind == "gaussian":
+        return gaussian_curvature(pts, faces, area=area)
+    return mean_curvature(pts, faces, area=area)

@@ -1,0 +1,204 @@
+"""A one-critical bifiltration: every simplex with its pair of grades (ε, κ).
+
+The thesis's Summary (Chapter 5): "a filtration varying with both the familiar radius ε and a
+curvature parameter κ.  With ordinary persistent homology we must fix either ε or κ".  Here K_{ε,κ}
+is the subcomplex of the simplices σ with ε(σ) ≤ ε and κ(σ) ≤ κ, where ε(σ) is the simplex's value
+in a Rips or alpha filtration (Definitions 2.11 and 2.14) and κ(σ) the largest value of a vertex
+function on its vertices (sublevel sets of |κ| or κ, the curvature estimated at each point).  Both
+grades are monotone on faces, so K_{ε,κ} ⊆ K_{ε',κ'} whenever ε ≤ ε' and κ ≤ κ'.
+
+Stored compactly, as :class:`~thesis_lib.filtration.Filtration`: one vertex array and one
+``(m_d, 2)`` grade array per dimension.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from .._validate import as_points, check_max_dim, check_radius
+from ..complexes import alpha, rips
+from ..filtration import Filtration, as_complex
+
+__all__ = ["Bifiltration", "function_bifiltration", "radius_curvature_bifiltration", "COMPLEX_KINDS"]
+
+COMPLEX_KINDS = ("rips", "alpha")
+
+
+class Bifiltration:
+    """A one-critical bifiltration K_{ε,κ}: simplices with two grades each.
+
+    Thesis: Chapter 5 (a filtration in the radius ε and a curvature parameter κ); each grade
+    alone is a filtration in the sense of Definition 2.22.
+
+    Parameters
+    ----------
+    simplices : sequence of ``(m_d, d + 1)`` int arrays, one per dimension (rows ascending).
+    grades : sequence of ``(m_d, 2)`` float arrays: column 0 the ε-grade, column 1 the κ-grade.
+    max_homology_dim : the largest homology dimension the complex determines (the top dimension
+        of a Rips complex truncated at ``max_dim`` is incomplete: ``max_dim - 1``); default the
+        complex's dimension.
+    validate : check shapes, NaN grades and that faces have grades no larger than their cofaces.
+    """
+
+    def __init__(self, simplices: Sequence[np.ndarray], grades: Sequence[np.ndarray], *,
+                 max_homology_dim: int | None = None, validate: bool = True):
+        if len(simplices) != len(grades) or len(simplices) == 0:
+            raise ValueError("simplices and grades must have one (non-empty list of) array per dimension each")
+        self.grades = [np.asarray(g, dtype=np.float64).reshape(-1, 2) for g in grades]
+        if validate and any(np.isnan(g).any() for g in self.grades):
+            d = next(d for d, g in enumerate(self.grades) if np.isnan(g).any())
+            raise ValueError(f"dimension {d} has a NaN grade")
+        # a Filtration on the ε-grade holds the simplices and checks faces (validated once)
+        self._eps = Filtration(simplices, [g[:, 0] for g in self.grades], validate=validate)
+        self.simplices = self._eps.simplices
+        if validate:
+            self._validate()
+        top = self._eps.dimension
+        self.max_homology_dim = top if max_homology_dim is None else min(int(max_homology_dim), top)
+
+    def _validate(self) -> None:
+        for d, (s, g) in enumerate(zip(self.simplices, self.grades)):
+            if s.shape[0] != g.shape[0]:
+                raise ValueError(f"dimension {d}: {s.shape[0]} simplices but {g.shape[0]} grade pairs")
+        for d in range(1, self.dimension + 1):
+            faces = self._eps.facet_indices(d)
+            if np.any(self.grades[d - 1][faces, 1] > self.grades[d][:, None, 1]):
+                raise ValueError(f"a face of a {d}-simplex has a larger κ-grade than the simplex")
+
+    # ------------------------------------------------------------------ queries
+    @property
+    def dimension(self) -> int:
+        """Largest simplex dimension."""
+        return self._eps.dimension
+
+    def __len__(self) -> int:
+        return len(self._eps)
+
+    def counts(self) -> list[int]:
+        """Number of simplices in each dimension."""
+        return self._eps.counts()
+
+    def bounds(self) -> np.ndarray:
+        """``[[ε_min, κ_min], [ε_max, κ_max]]`` over all simplices."""
+        allg = np.concatenate(self.grades)
+        return np.stack([allg.min(axis=0), allg.max(axis=0)])
+
+    def facet_indices(self, d: int) -> np.ndarray:
+        """As :meth:`Filtration.facet_indices`."""
+        return self._eps.facet_indices(d)
+
+    def filtration(self, values: Sequence[np.ndarray], keep: Sequence[np.ndarray] | None = None) -> Filtration:
+        """The one-parameter filtration of the simplices ``keep`` (masks) with ``values`` (per dimension).
+
+        ``values`` must be monotone on faces (as every line or path through the grades is).
+        """
+        if keep is None:
+            return Filtration(self.simplices, values, validate=False)
+        simp = [s[k] for s, k in zip(self.simplices, keep)]
+        vals = [v[k] for v, k in zip(values, keep)]
+        while simp and simp[-1].shape[0] == 0:
+            simp.pop()
+            vals.pop()
+        return Filtration(simp, vals, validate=False)
+
+    def subcomplex(self, eps: float, kappa: float) -> Filtration | None:
+        """K_{ε,κ} as a filtration by ε (None when empty).
+
+        Thesis: Chapter 5 (the complex at one value of both parameters).
+        """
+        keep = [(g[:, 0] <= eps) & (g[:, 1] <= kappa) for g in self.grades]
+        if not keep[0].any():
+            return None
+        return self.filtration([g[:, 0] for g in self.grades], keep)
+
+    def __repr__(self) -> str:
+        return f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, max_homology_dim={self.max_homology_dim})"
+
+
+def _vertex_values(values, labels: np.ndarray, name: str) -> np.ndarray:
+    try:
+        v = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"{name} must be an array of numbers, one per point: {err}") from None
+    if v.ndim != 1:
+        raise ValueError(f"{name} must be one number per point, got shape {v.shape}")
+    if labels.size and labels.max() >= v.shape[0]:
+        raise ValueError(f"{name} has {v.shape[0]} values but the complex has a vertex {int(labels.max())}")
+    bad = ~np.isfinite(v[labels])
+    if bad.any():
+        rows = labels[bad]
+        raise ValueError(
+            f"{name} is NaN or infinite at {rows.size} of {labels.size} points (rows {rows[:5].tolist()}"
+            f"{', ...' if rows.size > 5 else ''}): a curvature estimate can be undefined at a boundary "
+            "vertex or a degenerate neighbourhood; drop those points or give them a value")
+    return v
+
+
+def function_bifiltration(filtration, vertex_values, *, max_homology_dim: int | None = None,
+                          name: str = "vertex_values") -> Bifiltration:
+    """The bifiltration (filtration value, largest vertex value): σ ∈ K_{ε,κ} iff its value is ≤ ε
+    and f(v) ≤ κ at each of its vertices (the sublevel sets of f on the filtered complex).
+
+    Thesis: Chapter 5 (ε and a second parameter κ on the same complex).
+
+    Parameters
+    ----------
+    filtration : a :class:`Filtration` (its values are the ε-grades).
+    vertex_values : one finite number per point (indexed by vertex label).
+    max_homology_dim : see :class:`Bifiltration`.
+    name : what the values are called in error messages.
+    """
+    K = as_complex(filtration)
+    labels = K.simplices[0][:, 0]
+    f = _vertex_values(vertex_values, labels, name)
+    grades = [np.column_stack([K.values[d], f[s].max(axis=1)]) for d, s in enumerate(K.simplices)]
+    return Bifiltration(K.simplices, grades, max_homology_dim=max_homology_dim, validate=False)
+
+
+def radius_curvature_bifiltration(points, curvature, *, complex: str = "rips", max_radius: float = np.inf,
+                                  max_dim: int = 2, absolute: bool = True) -> Bifiltration:
+    """The radius × curvature bifiltration of a point cloud: Rips or alpha in ε, sublevel sets of
+    |κ| (or κ) in the second parameter.
+
+    Thesis: Chapter 5 ("a filtration varying with both the familiar radius ε and a curvature
+    parameter κ"), with the complexes of Definitions 2.11 and 2.14.
+
+    Parameters
+    ----------
+    points : ``(n, d)`` points.
+    curvature : ``(n,)`` curvature estimate at each point (e.g. :func:`thesis_lib.meshes.point_curvature`).
+    complex : ``"rips"`` (ε with diameter ≤ 2ε; truncated at ``max_dim``) or ``"alpha"`` (the alpha
+        complex; its values ε² are square-rooted so that both complexes are graded by ε).
+    max_radius : largest ε kept (Rips only).
+    max_dim : largest simplex dimension (Rips only; homology up to ``max_dim - 1`` is determined).
+    absolute : grade by |κ| (curvature magnitude) rather than by signed κ.
+
+    Returns
+    -------
+    Bifiltration
+
+    Raises
+    ------
+    ValueError
+        Bad points, a curvature array of the wrong length or with NaN/inf entries (named), an
+        unknown complex.
+    """
+    pts = as_points(points)
+    if complex not in COMPLEX_KINDS:
+        raise ValueError(f"complex must be one of {COMPLEX_KINDS}, got {complex!r}")
+    k = np.asarray(curvature, dtype=np.float64) if not isinstance(curvature, str) else curvature
+    if np.ndim(k) != 1 or np.shape(k)[0] != pts.shape[0]:
+        raise ValueError(f"curvature must have one value per point ({pts.shape[0]}), got shape {np.shape(k)}")
+    _vertex_values(k, np.arange(pts.shape[0]), "curvature")
+    if absolute:
+        k = np.abs(k)
+    if complex == "rips":
+        K = rips(pts, check_radius(max_radius), check_max_dim(max_dim))
+        top = K.dimension - 1 if K.dimension == max_dim else K.dimension
+    else:
+        K = alpha(pts)
+        K = Filtration(K.simplices, [np.sqrt(np.maximum(v, 0.0)) for v in K.values], validate=False)
+        top = K.dimension
+    return function_bifiltration(K, k, max_homology_dim=max(top, 0), name="curvature")

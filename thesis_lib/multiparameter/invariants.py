@@ -1,0 +1,198 @@
+"""Invariants of a bifiltration on a grid: the Hilbert function, the rank invariant, fibered barcodes.
+
+Every invariant is computed from one-parameter filtrations of the bifiltration, each by the
+library's persistence engine (Algorithm 2 / Theorem 2.39):
+
+* Hilbert function: HF_k(ε_i, κ_j) = dim H_k(K_{ε_i,κ_j}).  For each κ_j the complex K_{·,κ_j} is a
+  filtration in ε, and its barcode gives dim H_k at every ε_i (bars with birth ≤ ε_i < death).
+* Rank invariant: rk(a, b) = rank H_k(K_a) → H_k(K_b) for grid points a ≤ b.  Any monotone path from
+  a to b gives the same map (the grid commutes), so for a = (ε_i, κ_j) and every κ_{j'} ≥ κ_j one
+  staircase — along κ_j up to ε_i, up to κ_{j'}, then along κ_{j'} — is a one-parameter filtration
+  through a and through every b = (ε_{i'}, κ_{j'}) with i' ≥ i; rk(a, b) is the number of its bars
+  alive at both (Definition 2.23: the persistent Betti number).
+* Fibered barcode: the filtration along a line ℓ(t) = base + t·direction of positive slope, where σ
+  enters at t(σ) = max_c (grade_c(σ) − base_c) / direction_c.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .._validate import check_int, check_size, resolve_coefficients
+from ..persistence import persistence
+from ..persistence.barcode import Barcode
+from .bifiltration import Bifiltration
+
+__all__ = ["hilbert_function", "rank_invariant", "fibered_barcode", "line_filtration", "check_grid",
+           "MAX_GRID_ENTRIES"]
+
+#: largest number of entries an invariant array may have (8 bytes each: 0.8 GB)
+MAX_GRID_ENTRIES = 10**8
+
+
+def check_grid(values, name: str) -> np.ndarray:
+    """A grid axis: a non-empty, finite, strictly increasing 1-D array."""
+    try:
+        g = np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise ValueError(f"{name} must be an array of numbers: {err}") from None
+    if g.ndim != 1 or g.size == 0:
+        raise ValueError(f"{name} must be a non-empty 1-D array, got shape {g.shape}")
+    if not np.all(np.isfinite(g)):
+        raise ValueError(f"{name} has a NaN or infinite value")
+    if np.any(np.diff(g) <= 0):
+        raise ValueError(f"{name} must be strictly increasing")
+    return g
+
+
+def _check_memory(n_entries: int, what: str) -> None:
+    check_size(n_entries, f"{what} entries ({8 * n_entries / 2**30:.3g} GiB)", limit=MAX_GRID_ENTRIES)
+
+
+def _dims(bif: Bifiltration, dims) -> list[int]:
+    top = bif.max_homology_dim
+    if dims is None:
+        return list(range(top + 1))
+    out = [check_int(d, "dims", minimum=0) for d in np.atleast_1d(dims).tolist()]
+    for d in out:
+        if d > top:
+            raise ValueError(f"H_{d} is not determined by this bifiltration (its homology is known up to "
+                             f"dimension {top}: build the complex with a larger max_dim)")
+    return out
+
+
+def _betti_at(arr: np.ndarray, at: np.ndarray) -> np.ndarray:
+    """Number of bars [b, d) with b ≤ x < d, for each x in ``at``."""
+    born = np.searchsorted(np.sort(arr[:, 0]), at, side="right")
+    dead = np.searchsorted(np.sort(arr[:, 1]), at, side="right")
+    return born - dead
+
+
+def hilbert_function(bifiltration: Bifiltration, eps, kappa, *, dims=None,
+                     coefficients: int | None = None) -> np.ndarray:
+    """dim H_k(K_{ε,κ}) at every point of the grid ``eps`` × ``kappa``.
+
+    Thesis: Chapter 5 (the homology at each pair (ε, κ)); Definition 2.23 along each row.
+
+    Parameters
+    ----------
+    bifiltration : a :class:`Bifiltration`.
+    eps, kappa : strictly increasing grid axes.
+    dims : homology dimensions (default all the bifiltration determines).
+    coefficients : a prime p, the field Z/p (default 2).
+
+    Returns
+    -------
+    ndarray of int64, shape ``(len(dims), len(eps), len(kappa))``.
+
+    Raises
+    ------
+    ValueError
+        A bad grid, a grid too large for memory (refused with its size), or a dimension the
+        bifiltration does not determine.
+    """
+    eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
+    dims = _dims(bifiltration, dims)
+    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    _check_memory(len(dims) * eps.size * kappa.size, "Hilbert-function")
+    out = np.zeros((len(dims), eps.size, kappa.size), dtype=np.int64)
+    eps_grades = [g[:, 0] for g in bifiltration.grades]
+    for j, k in enumerate(kappa):
+        keep = [g[:, 1] <= k for g in bifiltration.grades]
+        if not keep[0].any():
+            continue
+        bc = persistence(bifiltration.filtration(eps_grades, keep), p)
+        for a, d in enumerate(dims):
+            out[a, :, j] = _betti_at(bc.intervals(d), eps)
+    return out
+
+
+def _staircase_values(bif: Bifiltration, te: list[np.ndarray], tk: list[np.ndarray], i: int, j: int, j2: int,
+                      n_eps: int):
+    """Entry positions along the staircase (ε_0..ε_i at κ_j, then ε_i..ε_last at κ_j2): a grid
+    point (ε_i', κ_j2), i' ≥ i, sits at position i' + 1 and (ε_i, κ_j) at position i."""
+    values, keep = [], []
+    for e, k in zip(te, tk):
+        first = (k <= j) & (e <= i)
+        second = ~first & (k <= j2) & (e < n_eps)
+        v = np.where(first, e, i + 1 + np.maximum(e - i, 0)).astype(np.float64)
+        values.append(v)
+        keep.append(first | second)
+    return values, keep
+
+
+def rank_invariant(bifiltration: Bifiltration, eps, kappa, *, dim: int, coefficients: int | None = None) -> np.ndarray:
+    """rank H_dim(K_a) → H_dim(K_b) for all grid points a ≤ b of ``eps`` × ``kappa``.
+
+    Thesis: Definition 2.23 (the persistent Betti numbers), for two parameters (Chapter 5).
+
+    Returns
+    -------
+    ndarray of int64, shape ``(len(eps), len(kappa), len(eps), len(kappa))``: entry ``[i, j, i2, j2]``
+    is the rank from (ε_i, κ_j) to (ε_i2, κ_j2) when i ≤ i2 and j ≤ j2, else 0.  The diagonal
+    ``[i, j, i, j]`` is the Hilbert function.
+
+    Raises
+    ------
+    ValueError
+        A bad grid, a grid too large for memory (refused with its size), or a dimension the
+        bifiltration does not determine.
+    """
+    eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
+    dim = _dims(bifiltration, [dim])[0]
+    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    ne, nk = eps.size, kappa.size
+    _check_memory(ne * nk * ne * nk, "rank-invariant")
+    out = np.zeros((ne, nk, ne, nk), dtype=np.int64)
+    # grid index of each grade: the first grid value at or above it (len(grid) when above all)
+    te = [np.searchsorted(eps, g[:, 0], side="left") for g in bifiltration.grades]
+    tk = [np.searchsorted(kappa, g[:, 1], side="left") for g in bifiltration.grades]
+    later = np.arange(ne)
+    for j in range(nk):
+        for j2 in range(j, nk):
+            for i in range(ne):
+                values, keep = _staircase_values(bifiltration, te, tk, i, j, j2, ne)
+                if not keep[0].any():
+                    continue
+                arr = persistence(bifiltration.filtration(values, keep), p).intervals(dim)
+                alive = arr[arr[:, 0] <= i]
+                # bars alive at position i (a) and at position i2 + 1 (b = (ε_i2, κ_j2)), i2 >= i
+                deaths = np.sort(alive[:, 1])
+                count = alive.shape[0] - np.searchsorted(deaths, later[i:] + 1, side="right")
+                out[i, j, i:, j2] = count
+    return out
+
+
+def _check_line(base, direction) -> tuple[np.ndarray, np.ndarray]:
+    b = np.asarray(base, dtype=np.float64)
+    d = np.asarray(direction, dtype=np.float64)
+    if b.shape != (2,) or d.shape != (2,):
+        raise ValueError(f"base and direction must be pairs (ε, κ), got shapes {b.shape} and {d.shape}")
+    if not (np.all(np.isfinite(b)) and np.all(np.isfinite(d))):
+        raise ValueError("base and direction must be finite")
+    if np.any(d <= 0):
+        raise ValueError(f"the line must have positive slope: both direction components > 0, got {d.tolist()}")
+    return b, d
+
+
+def line_filtration(bifiltration: Bifiltration, base, direction):
+    """The bifiltration restricted to the line ℓ(t) = base + t·direction (positive slope): σ
+    enters at t(σ) = max((ε(σ) − base_ε)/direction_ε, (κ(σ) − base_κ)/direction_κ).
+
+    Thesis: Definition 2.22 (a one-parameter filtration), along a line of the (ε, κ) plane (Chapter 5).
+    """
+    b, d = _check_line(base, direction)
+    values = [np.max((g - b) / d, axis=1) for g in bifiltration.grades]
+    return bifiltration.filtration(values)
+
+
+def fibered_barcode(bifiltration: Bifiltration, base, direction, *, coefficients: int | None = None) -> Barcode:
+    """Barcode of the bifiltration along the line base + t·direction (positive slope), in t.
+
+    Thesis: Theorem 2.39 / Algorithm 2 on the filtration of :func:`line_filtration` (Chapter 5: one
+    line of the (ε, κ) plane is an ordinary persistence problem).
+
+    A bar [t0, t1) is the segment from base + t0·direction to base + t1·direction of the plane.
+    """
+    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    return persistence(line_filtration(bifiltration, base, direction), p)

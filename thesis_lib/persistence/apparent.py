@@ -1,0 +1,91 @@
+"""Apparent pairs of a filtration: the discrete gradient that the implicit Rips engine exploits.
+
+A pair σ < τ (σ a facet of τ) is *apparent* when σ is the latest facet of τ and τ the earliest
+coface of σ in the filtration order.  Every apparent pair is a persistence pair (the column of τ
+reduces to σ at once in homology, the column of σ to τ in cohomology), the pairs are disjoint, and
+along a V-path the filtration order strictly decreases, so they form an acyclic matching: a
+discrete gradient vector field (thesis Definitions 4.30–4.33, Theorem 4.36).  Its critical cells
+are what a reduction must look at; the barcode is that of the Morse complex on them (Theorem 4.42's
+idea), which is how :func:`~thesis_lib.persistence.rips_persistence` skips most of a Rips complex.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..filtration import as_complex
+
+__all__ = ["apparent_pairs", "apparent_summary"]
+
+
+def _pairs_by_index(K) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """Per dimension d ≥ 1: (d, σ indices in dimension d − 1, τ indices in dimension d) of the apparent pairs."""
+    out = []
+    for d in range(1, K.dimension + 1):
+        F = K.facet_indices(d)
+        pos_lo, pos_up = K.positions[d - 1], K.positions[d]
+        latest = F[np.arange(F.shape[0]), np.argmax(pos_lo[F], axis=1)]  # latest facet of each τ
+        first = np.full(K.simplices[d - 1].shape[0], np.iinfo(np.int64).max, dtype=np.int64)
+        np.minimum.at(first, F.ravel(), np.repeat(pos_up, d + 1))  # earliest coface position of each σ
+        tau = np.arange(F.shape[0])
+        ok = first[latest] == pos_up[tau]  # τ is also the earliest coface of its latest facet
+        out.append((d, latest[ok], tau[ok]))
+    return out
+
+
+def apparent_pairs(filtration, *, zero: bool = False) -> list[tuple[tuple[int, ...], tuple[int, ...]]]:
+    """The apparent pairs ``(σ, τ)`` of a filtration, in the order of its :attr:`~Filtration.order`.
+
+    Thesis: Definitions 4.30–4.33 (the pairs are a discrete vector field, and an acyclic one:
+    Theorem 4.36), used as in the Summary, "to reduce the size of simplicial complexes".
+
+    Parameters
+    ----------
+    filtration : a :class:`~thesis_lib.filtration.Filtration` (or anything :func:`as_complex` takes).
+    zero : only the pairs whose two simplices have the same value (zero persistence: the ones the
+        implicit engine never makes columns).
+
+    Returns
+    -------
+    list of ``(sigma, tau)`` vertex tuples, σ a facet of τ.
+    """
+    K = as_complex(filtration)
+    pairs = []
+    for d, lo, up in _pairs_by_index(K):
+        if zero:
+            keep = K.values[d - 1][lo] == K.values[d][up]
+            lo, up = lo[keep], up[keep]
+        S, T = K.simplices[d - 1], K.simplices[d]
+        pairs += [(tuple(S[a].tolist()), tuple(T[b].tolist())) for a, b in zip(lo.tolist(), up.tolist())]
+    return pairs
+
+
+def apparent_summary(filtration) -> dict:
+    """How much of a filtration its apparent pairs leave critical, per dimension and in all.
+
+    Thesis: Definition 4.21 (critical cells) and Theorem 4.27 (Crit_k ≥ β_k), for the gradient of
+    :func:`apparent_pairs`.
+
+    Returns
+    -------
+    dict with ``simplices``, ``critical`` and ``zero_critical`` (lists per dimension: all cells,
+    those in no apparent pair, those in no zero-persistence apparent pair), the fractions
+    ``critical_fraction`` and ``zero_critical_fraction`` of all cells, and the same fractions of the
+    cells below the top dimension (``*_below_top``): those are the columns a cohomology reduction
+    works on (a truncated complex's top simplices are only rows: their cofaces were never built).
+    """
+    K = as_complex(filtration)
+    counts = K.counts()
+    paired = [np.zeros(c, dtype=bool) for c in counts]
+    zpaired = [np.zeros(c, dtype=bool) for c in counts]
+    for d, lo, up in _pairs_by_index(K):
+        zero = K.values[d - 1][lo] == K.values[d][up]
+        paired[d - 1][lo] = paired[d][up] = True
+        zpaired[d - 1][lo[zero]] = zpaired[d][up[zero]] = True
+    critical = [int((~p).sum()) for p in paired]
+    zcritical = [int((~p).sum()) for p in zpaired]
+    total, below = sum(counts), max(sum(counts[:-1]), 1)
+    return {"simplices": counts, "critical": critical, "zero_critical": zcritical,
+            "critical_fraction": sum(critical) / total, "zero_critical_fraction": sum(zcritical) / total,
+            "critical_fraction_below_top": sum(critical[:-1]) / below,
+            "zero_critical_fraction_below_top": sum(zcritical[:-1]) / below}
