@@ -85,7 +85,7 @@ def _pop(heap, size):
 
 
 @numba.njit(cache=True)
-def _inverse(v, p):
+def mod_inverse(v, p):
     """v^-1 mod p (p prime, v not divisible by p), by the extended Euclidean algorithm."""
     a, b = v % p, p
     x0, x1 = 1, 0
@@ -327,7 +327,7 @@ def _markowitz_kernel(indptr, indices, data, n_rows, skip, p, lim, search, densi
             kbuf[nk] = k
             a = pool_v[rs[k] + off]
             if p != 0:
-                fbuf[nk] = (a * _inverse(v, p)) % p
+                fbuf[nk] = (a * mod_inverse(v, p)) % p
             else:
                 fbuf[nk] = a * v  # v = ±1 is its own inverse
             nk += 1
@@ -530,7 +530,7 @@ def dense_kernel(a, p, lim):
                     continue
                 inv = v
             else:
-                inv = _inverse(v, p)
+                inv = mod_inverse(v, p)
             nk = 0
             for c in range(n_c):
                 if a[k, c] != 0:

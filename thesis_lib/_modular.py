@@ -36,7 +36,7 @@ import random
 import numba
 import numpy as np
 
-from ._elimination import dense_kernel
+from ._elimination import dense_kernel, mod_inverse
 from ._validate import is_prime
 
 __all__ = ["dense_invariants", "crt_primes"]
@@ -75,43 +75,29 @@ def _prime_stream():
 # --------------------------------------------------------------------------------------------
 
 
-@numba.njit(cache=True)
-def _inverse(v, p):
-    """v⁻¹ mod p (integers)."""
-    a, b = v % p, p
-    x0, x1 = 1, 0
-    while b != 0:
-        q = a // b
-        a, b = b, a - q * b
-        x0, x1 = x1, x0 - q * x1
-    return x0 % p
+@numba.njit(cache=True, inline="always")
+def _sub_mod(d, s, f, p, inv_p):
+    """(d - f s) mod p for float64 residues below 2²⁶: f·s < 2⁵² is exact, and x - p·floor(x/p)
+    reduces without an integer division (which would keep the loops of :func:`_axpy` from vectorising)."""
+    x = d - f * s
+    x -= p * np.floor(x * inv_p)
+    if x < 0:
+        x += p
+    elif x >= p:
+        x -= p
+    return x
 
 
 @numba.njit(cache=True)
 def _axpy(dst, src, f, p, inv_p, idx, n_idx, lo, hi):
-    """dst[c] = (dst[c] - f src[c]) mod p over ``idx[:n_idx]`` (if n_idx >= 0) or ``lo:hi``.
-
-    Residues are float64 below 2²⁶: f·src < 2⁵² is exact, and x - p·floor(x/p) reduces without
-    an integer division (which would keep the loop from vectorising)."""
+    """dst[c] = (dst[c] - f src[c]) mod p over ``idx[:n_idx]`` (if n_idx >= 0) or ``lo:hi``."""
     if n_idx >= 0:
         for t in range(n_idx):
             c = idx[t]
-            x = dst[c] - f * src[c]
-            x -= p * np.floor(x * inv_p)
-            if x < 0:
-                x += p
-            elif x >= p:
-                x -= p
-            dst[c] = x
+            dst[c] = _sub_mod(dst[c], src[c], f, p, inv_p)
     else:
         for c in range(lo, hi):
-            x = dst[c] - f * src[c]
-            x -= p * np.floor(x * inv_p)
-            if x < 0:
-                x += p
-            elif x >= p:
-                x -= p
-            dst[c] = x
+            dst[c] = _sub_mod(dst[c], src[c], f, p, inv_p)
 
 
 @numba.njit(cache=True)
@@ -139,7 +125,7 @@ def _rank_profile(a, p):
             for c in range(j, n):
                 a[k, c], a[sel, c] = a[sel, c], a[k, c]
             order[k], order[sel] = order[sel], order[k]
-        inv = float(_inverse(np.int64(a[k, j]), p))
+        inv = float(mod_inverse(np.int64(a[k, j]), p))
         nnz = 0
         for c in range(j, n):
             if a[k, c] != 0:
@@ -158,6 +144,15 @@ def _rank_profile(a, p):
 
 
 @numba.njit(cache=True)
+def _pivot_row(a, k, r):
+    """The first row i in k..r-1 with a[i, k] != 0, or -1."""
+    for i in range(k, r):
+        if a[i, k] != 0:
+            return i
+    return -1
+
+
+@numba.njit(cache=True)
 def _det_adjugate(b, y, p):
     """(det b mod p, adj(b) y mod p, ok) by LU mod p (float64 residues, p < 2²⁶); ok is False if
     p divides det b."""
@@ -169,11 +164,7 @@ def _det_adjugate(b, y, p):
     det = 1
     idx = np.empty(0, dtype=np.int64)
     for k in range(r):
-        sel = -1
-        for i in range(k, r):
-            if a[i, k] != 0:
-                sel = i
-                break
+        sel = _pivot_row(a, k, r)
         if sel < 0:
             return 0, np.zeros((r, t), dtype=np.int64), False
         if sel != k:
@@ -181,7 +172,7 @@ def _det_adjugate(b, y, p):
                 a[k, c], a[sel, c] = a[sel, c], a[k, c]
             det = p - det
         det = det * np.int64(a[k, k]) % p
-        inv = float(_inverse(np.int64(a[k, k]), p))
+        inv = float(mod_inverse(np.int64(a[k, k]), p))
         for i in range(k + 1, r):
             if a[i, k] != 0:
                 f = a[i, k] * inv
@@ -189,7 +180,7 @@ def _det_adjugate(b, y, p):
                 _axpy(a[i], a[k], f, fp, inv_p, idx, -1, k + 1, r + t)
     z = np.empty((r, t), dtype=np.int64)
     for k in range(r - 1, -1, -1):  # back substitution, then scale by det: adj(b) y = det · b⁻¹ y
-        inv = _inverse(np.int64(a[k, k]), p)
+        inv = mod_inverse(np.int64(a[k, k]), p)
         for c in range(t):
             s = np.int64(a[k, r + c])
             for u in range(k + 1, r):
@@ -268,18 +259,14 @@ def _inverse_matrix(b, p):
     for i in range(r):
         inv[i, i] = 1
     for k in range(r):
-        sel = -1
-        for i in range(k, r):
-            if a[i, k] != 0:
-                sel = i
-                break
+        sel = _pivot_row(a, k, r)
         if sel < 0:
             return inv, False
         if sel != k:
             for c in range(r):
                 a[k, c], a[sel, c] = a[sel, c], a[k, c]
                 inv[k, c], inv[sel, c] = inv[sel, c], inv[k, c]
-        f = _inverse(a[k, k], p)
+        f = mod_inverse(a[k, k], p)
         for c in range(r):
             a[k, c] = a[k, c] * f % p
             inv[k, c] = inv[k, c] * f % p
