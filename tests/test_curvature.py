@@ -20,6 +20,7 @@ from thesis_lib.curvature import (
     mean_curvature,
     mean_curvature_vector,
     normal_curvatures,
+    pinched_vertices,
     principal_curvatures,
     shape_operator,
     simplex_hyperareas,
@@ -556,10 +557,31 @@ def test_non_manifold_input_is_refused(fn):
     x, f = tetrahedron()
     with pytest.raises(ValueError, match=r"simplices 0 and 1 have the same vertices"):
         fn(x, np.array([[0, 1, 2], [0, 1, 2]]))
-    # a pinched vertex (principal_curvatures failed inside the SVD)
+
+
+@pytest.mark.parametrize(
+    "fn",
+    [
+        lambda v, f: mean_curvature(v, f),
+        lambda v, f: gaussian_curvature(v, f),
+        lambda v, f: angle_defects(v, f),
+        lambda v, f: principal_curvatures(v, f).k1,
+        lambda v, f: shape_operator(v, f).tensor,
+    ],
+)
+def test_pinched_vertices_get_no_estimate(fn):
+    # a pinched vertex (principal_curvatures failed inside the SVD): no single fan, so NaN there, as
+    # on a boundary vertex; every other vertex keeps the value of its own tetrahedron
     v, g = _pinched()
+    assert pinched_vertices(g, len(v)).tolist() == [False] * 3 + [True] + [False] * 3
     with pytest.raises(ValueError, match="vertex 3 is pinched"):
-        fn(v, g)
+        check_pseudomanifold(g, len(v))
+    out = np.asarray(fn(v, g))
+    assert np.all(np.isnan(out[3]))
+    x, f = tetrahedron()
+    alone = np.asarray(fn(x, f))
+    np.testing.assert_allclose(out[:3], alone[:3], rtol=1e-12)
+    assert np.all(np.isfinite(out[[0, 1, 2, 4, 5, 6]]))
 
 
 def test_check_pseudomanifold_accepts_manifolds_and_boundaries():

@@ -96,3 +96,23 @@ def test_order_lists_faces_first(seed, n, eps):
     perm = np.lexsort((index, dims, np.concatenate(f.values)))
     np.testing.assert_array_equal(f.order[0], dims[perm])
     np.testing.assert_array_equal(f.order[1], index[perm])
+
+
+def test_constructions_cut_at_max_dim_are_truncated():
+    # Theorem 2.39: H_p is known only once the (p+1)-simplices are in; a complex cut at max_dim
+    # reports its top dimension as incomplete, a complex that stops below the cut does not
+    from thesis_lib import datasets
+    from thesis_lib.complexes import cech, lazy_witness, rips, witness
+    from thesis_lib.persistence import persistence
+
+    pts = datasets.two_circles(12, seed=3)
+    for f in (rips(pts, 2.0, 2), cech(pts, 1.0, 2), witness(pts, np.arange(0, 24, 3), 2.0, 2), lazy_witness(pts, np.arange(0, 24, 3), 2.0, 2)):
+        assert f.truncated and f.dimension == 2
+        assert persistence(f, coefficients=2).complete_dimensions == (0, 1)
+    sparse = rips(pts, 0.01, 2)  # no edges at this scale: nothing was cut
+    assert sparse.dimension == 0 and sparse.truncated is False
+    full = rips(pts[:4], 10.0, 3)  # the whole 3-simplex: reaches the cut, so still marked
+    assert full.truncated
+    plain = Filtration.from_simplices([[0, 1, 2]])
+    assert not plain.truncated and plain.skeleton(1).truncated and not plain.skeleton(2).truncated
+    assert rips(pts, 2.0, 2).threshold(0.5).truncated

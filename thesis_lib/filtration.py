@@ -34,10 +34,14 @@ class Filtration:
     values : sequence of ``(m_d,)`` float arrays, one per dimension, or None for a plain complex.
     validate : check shapes, NaN, duplicates, missing faces and face values (default True).
         Constructions that are valid by design may pass ``False``.
+    truncated_at : the dimension at which a construction stopped (Rips, Čech and witness complexes
+        at ``max_dim``): when the complex reaches it, ``truncated`` is True, since its top simplices
+        may have cofaces that were never built, and persistence reports that dimension as incomplete
+        (Theorem 2.39).
     """
 
     def __init__(self, simplices: Sequence[np.ndarray], values: Sequence[np.ndarray] | None = None, *,
-                 validate: bool = True):
+                 validate: bool = True, truncated_at: int | None = None):
         self.has_values = values is not None
         if values is None:
             values = [np.zeros(len(s)) for s in simplices]
@@ -51,6 +55,8 @@ class Filtration:
         while self.simplices and self.simplices[-1].shape[0] == 0:
             self.simplices.pop()
             self.values.pop()
+        #: True when the top dimension was cut (see ``truncated_at``): its cofaces are missing
+        self.truncated = truncated_at is not None and len(self.simplices) - 1 >= int(truncated_at)
         if validate:
             self._validate()
 
@@ -224,7 +230,8 @@ class Filtration:
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
             raise ValueError(f"skeleton dimension must be an integer >= 0, got {k!r}")
         k = min(int(k), self.dimension)
-        return Filtration(self.simplices[: k + 1], self.values[: k + 1], validate=False)
+        return Filtration(self.simplices[: k + 1], self.values[: k + 1], validate=False,
+                          truncated_at=k if self.truncated or k < self.dimension else None)
 
     def threshold(self, value: float) -> Filtration:
         """The sub-complex K^value of simplices with filtration value <= ``value``.
@@ -238,7 +245,7 @@ class Filtration:
         if not keep or not keep[0].any():
             raise ValueError(f"no simplex has a value <= {value}")
         return Filtration([s[m] for s, m in zip(self.simplices, keep)], [v[m] for v, m in zip(self.values, keep)],
-                          validate=False)
+                          validate=False, truncated_at=self.dimension if self.truncated else None)
 
     def __iter__(self) -> Iterator[tuple[tuple[int, ...], float]]:
         dims, index = self.order

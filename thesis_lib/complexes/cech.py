@@ -79,4 +79,4 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
             simplices.append(cand)
             values.append(radii)
     values = [unscale_values(v, -e, "radii") for v in values]
-    return Filtration(simplices, values, validate=False)
+    return Filtration(simplices, values, validate=False, truncated_at=max_dim)

@@ -66,4 +66,4 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
         edges, lengths = edges_within(pts, threshold) if max_dim >= 1 else none
         lengths = unscale_values(lengths, -e, "edge lengths")
     simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
-    return Filtration(simplices, values, validate=False)
+    return Filtration(simplices, values, validate=False, truncated_at=max_dim)

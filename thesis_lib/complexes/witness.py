@@ -308,7 +308,7 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
                                   64 * load_numba().get_num_threads())
             simplices.append(s)
             values.append(v)
-    return Filtration(simplices, values, validate=False)
+    return Filtration(simplices, values, validate=False, truncated_at=max_dim)
 
 
 def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
@@ -335,4 +335,4 @@ def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: fl
     ev, _ = _edge_values(D)
     edges, vals = matrix_edges(np.maximum(ev, 0.0), eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
     simplices, values = flag_levels(D.shape[0], edges, vals, max_dim)
-    return Filtration(simplices, values, validate=False)
+    return Filtration(simplices, values, validate=False, truncated_at=max_dim)

@@ -7,7 +7,7 @@ through :func:`validate_mesh` (one module, :mod:`.validate`).
 
 from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas
 from .gaussian import angle_defects, gaussian_curvature
-from .manifold import check_pseudomanifold
+from .manifold import check_pseudomanifold, pinched_vertices
 from .mean import mean_curvature, mean_curvature_vector, total_hyperarea
 from .shape import (
     PrincipalCurvatures,
@@ -32,6 +32,7 @@ __all__ = [
     "mean_curvature",
     "mean_curvature_vector",
     "normal_curvatures",
+    "pinched_vertices",
     "principal_curvatures",
     "shape_operator",
     "simplex_hyperareas",

@@ -18,7 +18,7 @@ def _angle_defects(mesh: Mesh) -> np.ndarray:
     v, s, tri = mesh.vertices, mesh.simplices, mesh.tri
     angles = np.arctan2(np.broadcast_to(tri.twice_area, tri.dot.shape), tri.dot)  # (3 corners, m)
     defect = 2.0 * np.pi - np.bincount(s.T.ravel(), weights=angles.ravel(), minlength=len(v))
-    defect[mesh.boundary | mesh.isolated] = np.nan
+    defect[mesh.no_estimate] = np.nan
     return defect
 
 
@@ -36,7 +36,7 @@ def angle_defects(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> np.ndarray:
     Returns
     -------
     ndarray, shape (nv,)
-        NaN on boundary vertices (there the defect would be π − Σ θ_j plus the boundary's turning)
+        NaN on boundary and pinched vertices (there the defect would be π − Σ θ_j plus the boundary's turning)
         and on isolated vertices.  On a closed mesh the sum is 2πχ (Theorem 3.8).
     """
     return _angle_defects(checked_mesh(vertices, faces))
@@ -57,7 +57,7 @@ def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str 
     Returns
     -------
     ndarray, shape (nv,)
-        NaN on boundary and isolated vertices and where the vertex area is not positive (possible
+        NaN on boundary, pinched and isolated vertices and where the vertex area is not positive (possible
         with the signed ``"voronoi"`` area).  Independent of the faces' orientation.
 
     Raises

@@ -14,13 +14,14 @@ on meshes of 10⁵ vertices, and names the simplex or vertex that breaks it.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
+from ..jit import njit
+
 from .validate import Mesh, validate_mesh
 
-__all__ = ["check_pseudomanifold", "checked_mesh"]
+__all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]
 
 
 @njit(cache=True)
@@ -48,8 +49,8 @@ def _edge_codes(s):
 
 @njit(cache=True)
 def _pseudomanifold_kernel(s, lo, key, nv, check_links):
-    """(code, a, b, c): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+ simplices;
-    3 vertex a pinched between simplices b and c.
+    """(code, a, b, c, pinched): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+
+    simplices; 3 vertex a pinched between simplices b and c (the first of the ``pinched`` mask).
 
     Ridge r = (simplex r // k without its local vertex r % k) has smallest vertex ``lo[r]`` and the
     others encoded injectively in ``key[r]``.
@@ -89,12 +90,12 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
                 y += 1
             run = y - x
             if run > 2:
-                return 2, bucket[x] // k, bucket[x] % k, 0
+                return 2, bucket[x] // k, bucket[x] % k, 0, np.zeros(nv, dtype=np.bool_)
             if run == 2:
                 t1, i1 = bucket[x] // k, bucket[x] % k
                 t2, i2 = bucket[x + 1] // k, bucket[x + 1] % k
                 if s[t1, i1] == s[t2, i2]:
-                    return 1, min(t1, t2), max(t1, t2), 0
+                    return 1, min(t1, t2), max(t1, t2), 0, np.zeros(nv, dtype=np.bool_)
                 # glue the corners of the two simplices at each vertex of the common ridge
                 for j1 in range(k):
                     if j1 == i1:
@@ -106,10 +107,12 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
                             if ra != rb:
                                 parent[ra] = rb
             x = y
+    pinched = np.zeros(nv, dtype=np.bool_)
     if not check_links:
-        return 0, 0, 0, 0
+        return 0, 0, 0, 0, pinched
     first = np.full(nv, -1, dtype=np.int64)
     where = np.full(nv, -1, dtype=np.int64)
+    code, a, b, c = 0, 0, 0, 0
     for t in range(m):
         for j in range(k):
             v = s[t, j]
@@ -117,9 +120,11 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
             if first[v] < 0:
                 first[v] = r
                 where[v] = t
-            elif first[v] != r:
-                return 3, v, where[v], t
-    return 0, 0, 0, 0
+            elif first[v] != r and not pinched[v]:
+                pinched[v] = True
+                if code == 0:
+                    code, a, b, c = 3, v, where[v], t
+    return code, a, b, c, pinched
 
 
 def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
@@ -141,6 +146,20 @@ def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
     return ridges[:, 0], code.ravel().astype(np.int64)
 
 
+def _pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> tuple[int, int, int, int, np.ndarray]:
+    s = np.ascontiguousarray(simplices, dtype=np.int64)
+    lo, key = _ridge_codes(s, int(n_vertices))
+    code, a, b, c, pinched = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
+    if code == 1:
+        raise ValueError(f"simplices {a} and {b} have the same vertices {sorted(s[a].tolist())}: a doubled "
+                         "simplex is not a pseudo-manifold")
+    if code == 2:
+        ridge = sorted(np.delete(s[a], b).tolist())
+        raise ValueError(f"the ridge {tuple(ridge)} of simplex {a} lies in three or more top simplices: "
+                         "not a pseudo-manifold")
+    return code, a, b, c, pinched
+
+
 def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> None:
     """Raise ``ValueError`` unless the top simplices form a simplicial pseudo-manifold.
 
@@ -158,23 +177,29 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
         Naming a repeated simplex, a ridge in three or more simplices, or a pinched vertex (for
         n >= 2: a vertex whose link is disconnected, its star two fans meeting only there).
     """
-    s = np.ascontiguousarray(simplices, dtype=np.int64)
-    lo, key = _ridge_codes(s, int(n_vertices))
-    code, a, b, c = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
-    if code == 1:
-        raise ValueError(f"simplices {a} and {b} have the same vertices {sorted(s[a].tolist())}: a doubled "
-                         "simplex is not a pseudo-manifold")
-    if code == 2:
-        ridge = sorted(np.delete(s[a], b).tolist())
-        raise ValueError(f"the ridge {tuple(ridge)} of simplex {a} lies in three or more top simplices: "
-                         "not a pseudo-manifold")
+    code, a, b, c, _ = _pseudomanifold(simplices, n_vertices)
     if code == 3:
         raise ValueError(f"vertex {a} is pinched: its link is disconnected (simplices {b} and {c} meet "
                          "only through it), so it has no single fan; not a pseudo-manifold")
 
 
+def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.ndarray:
+    """Mask of the pinched vertices (link disconnected: the star is two or more fans meeting there).
+
+    Thesis: §3.3 (the estimates sum over the star of a vertex, one fan).  Reconstructions such as
+    the Crust of random samples (§3.4.1) have a few; the curvature functions give no estimate (NaN)
+    there, as on boundary vertices.
+
+    Raises
+    ------
+    ValueError
+        On a repeated simplex or a ridge in three or more simplices (no formula applies there).
+    """
+    return _pseudomanifold(simplices, n_vertices)[4]
+
+
 def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
-    """:func:`~.validate.validate_mesh` followed by :func:`check_pseudomanifold`.
+    """:func:`~.validate.validate_mesh`, then the pseudo-manifold check with pinched vertices marked.
 
     Thesis: Definition 3.13 (a triangulated hypersurface) and §3.3.
 
@@ -186,8 +211,12 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
     Returns
     -------
     Mesh
-        The validated mesh.
+        The validated mesh; ``mesh.pinched`` marks the vertices whose star is not one fan.
+
+    Raises
+    ------
+    ValueError
+        On an invalid mesh, a repeated simplex or a ridge in three or more simplices.
     """
     mesh = validate_mesh(vertices, simplices)
-    check_pseudomanifold(mesh.simplices, len(mesh.vertices))
-    return mesh
+    return mesh._replace(pinched=pinched_vertices(mesh.simplices, len(mesh.vertices)))

@@ -196,7 +196,7 @@ def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str 
     Returns
     -------
     ndarray, shape (nv,)
-        |H| ≥ 0 (orientation-independent).  NaN on boundary vertices (the area gradient there also
+        |H| ≥ 0 (orientation-independent).  NaN on boundary and pinched vertices (the area gradient there also
         measures the boundary's length variation, Theorem 3.9), on isolated vertices, and where the
         vertex area is not positive (possible with the signed ``"voronoi"`` area on badly shaped
         meshes).
@@ -208,5 +208,5 @@ def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str 
     a = vertex_areas_of_mesh(mesh, area)
     with np.errstate(divide="ignore", invalid="ignore"):
         h = np.sqrt(np.einsum("ia,ia->i", vec, vec)) / (mesh.n * a)
-    h[mesh.boundary | mesh.isolated | ~(a > 0)] = np.nan
+    h[mesh.no_estimate | ~(a > 0)] = np.nan
     return h

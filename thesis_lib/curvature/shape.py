@@ -208,7 +208,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     -------
     ShapeOperator
         ``tensor`` (nv, 2, 2) in the tangent ``basis`` (nv, 2, 3), with the ``normal`` (nv, 3).  NaN at
-        boundary and isolated vertices.
+        boundary, pinched and isolated vertices.
 
     Raises
     ------
@@ -242,7 +242,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
         rhs[:, r] = np.bincount(i, weights=ww * kappa * phi[:, r], minlength=nv)
         for c in range(r, 3):
             mat[:, r, c] = mat[:, c, r] = np.bincount(i, weights=ww * phi[:, r] * phi[:, c], minlength=nv)
-    ok = ~(mesh.boundary | mesh.isolated)
+    ok = ~mesh.no_estimate
     sol = np.full((nv, 3), np.nan)
     if ok.any():
         sol[ok] = np.einsum("vij,vj->vi", np.linalg.pinv(mat[ok], rcond=1e-10), rhs[ok])

@@ -20,8 +20,9 @@ from __future__ import annotations
 from math import factorial
 from typing import NamedTuple
 
-import numba
 import numpy as np
+
+from ..jit import njit
 
 __all__ = [
     "Mesh",
@@ -53,7 +54,7 @@ class TriangleGeometry(NamedTuple):
     coords: np.ndarray  #: (3 corners, 3 coordinates, m) vertex coordinates
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _triangle_kernel(v, s, dot, sq, twice, pts, keys, nv):  # pragma: no cover - compiled
     m = s.shape[0]
     for t in range(m):
@@ -116,11 +117,18 @@ class Mesh(NamedTuple):
     boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
     tri: "TriangleGeometry | None" = None  #: per-corner data when n = 2, else None
+    pinched: "np.ndarray | None" = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
 
     @property
     def n(self) -> int:
         """Dimension of the hypersurface."""
         return self.simplices.shape[1] - 1
+
+    @property
+    def no_estimate(self) -> np.ndarray:
+        """``(nv,)`` bool: boundary, isolated or pinched vertices, where curvature is not estimated."""
+        out = self.boundary | self.isolated
+        return out if self.pinched is None else out | self.pinched
 
 
 def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarray:

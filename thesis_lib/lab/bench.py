@@ -14,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from .paths import repo_root
+from .tables import markdown_table
 
 __all__ = ["topics", "load", "meta", "markdown", "ratios", "fit_exponent", "ratio_figure", "scaling_figure",
            "provenance"]
@@ -66,12 +67,6 @@ def provenance(topic: str) -> str:
             f"load average {load_avg} at the start and {end} at the end of the run.")
 
 
-def _cell(value) -> str:
-    if isinstance(value, float):
-        return f"{value:.3g}"
-    return "" if value is None else str(value)
-
-
 def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
              where=None) -> str:
     """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order; only the
@@ -89,9 +84,7 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
         missing = [c for c in columns if all(c not in r for r in rows)]
         if missing:
             raise ValueError(f"benchmark {topic!r} has no columns {missing}")
-    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
-    lines += ["| " + " | ".join(_cell(r.get(c)) for c in columns) + " |" for r in rows]
-    return "\n".join(lines) + "\n"
+    return markdown_table(columns, ([r.get(c) for c in columns] for r in rows), digits=3)
 
 
 def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:

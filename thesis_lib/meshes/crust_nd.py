@@ -41,13 +41,13 @@ import math
 from itertools import combinations
 from typing import NamedTuple
 
-import numba
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import Delaunay, QhullError, cKDTree
 
 from .._validate import as_points
+from ..jit import njit
 from .topology import euler_characteristic
 from .crust_geometry import filtered_faces, simplex_normals
 
@@ -218,7 +218,7 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
     return ridges, ridge_of, start, tri_of, opp
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _complement_basis(pts, ridge):
     """Orthonormal basis (rows) of the directions of the ridge's affine span (Gram–Schmidt)."""
     k = ridge.shape[0] - 1
@@ -232,7 +232,7 @@ def _complement_basis(pts, ridge):
     return q
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _project(w, q):
     """``w`` minus its projection on the span of the rows of ``q``."""
     for j in range(q.shape[0]):
@@ -240,7 +240,7 @@ def _project(w, q):
     return w
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp):
     """Update ``sharp`` on the ridges ``todo``: a ridge is sharp when one live simplex contains it,
     or all of them lie in a wedge < π/2."""
@@ -305,7 +305,7 @@ def _prune_sharp(pts, simplices, ridges, ridge_of, start, tri_of, opp, max_round
     return alive
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _oriented_normal(pts, o):
     """Normal of the oriented simplex o: cofactors of its edge vectors (the cross product for n = 2)."""
     n = o.shape[0] - 1
@@ -327,7 +327,7 @@ def _oriented_normal(pts, o):
     return nrm / (np.sqrt((nrm * nrm).sum()) + 1e-300)
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _parity(a, b):
     """+1 if the vertex list ``b`` is an even permutation of ``a``, -1 if odd (same vertex sets)."""
     k = a.shape[0]
@@ -344,7 +344,7 @@ def _parity(a, b):
     return 1 if inv % 2 == 0 else -1
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _walk_nd(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, seed, seed_flip, breadth_first,
              max_fold):
     """Coherently oriented walk from ``seed`` across every ridge to the next live simplex met when
@@ -429,7 +429,7 @@ def _walk_nd(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, seed, 
     return orient, visit[:nvisit], conflicts
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _greedy_manifold(ridge_of, order, n_ridges):
     """Keep simplices in visiting order while each of their ridges has fewer than two kept ones."""
     used = np.zeros(n_ridges, dtype=np.int64)
@@ -448,7 +448,7 @@ def _greedy_manifold(ridge_of, order, n_ridges):
     return keep
 
 
-@numba.njit(cache=True)
+@njit(cache=True)
 def _openness(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, t, flip):
     """Smallest turning angle, over the ridges of simplex ``t`` (oriented, flipped or not), to another
     live simplex: about π on a sheet, small on the inner side of a pocket of candidates."""

@@ -10,9 +10,9 @@ from ..curvature.exact import catenoid_point, torus_point
 __all__ = ["sample_torus", "sample_catenoid", "sample_sphere", "sample_n_catenoid"]
 
 
-def _count(n, dim: int) -> int:
+def _count(n, dim: int, name: str = "n") -> int:
     """A number of samples n >= 1, refused up front if the (n, dim) output would be too large."""
-    n = check_int(n, "n", minimum=1)
+    n = check_int(n, name, minimum=1)
     check_size(n * dim, f"coordinates ({n:,} points in R^{dim})")
     return n
 
@@ -126,10 +126,8 @@ def sample_n_catenoid(n_points: int, *, dimension: int = 3, v_range=(-1.0, 1.0),
 
     Thesis: §3.4.3 (the 3-catenoid on u ∈ [−π, π], v, r ∈ [−1, 1]), sampled at random (Chapter 5).
     """
-    n_points = _count("n_points", n_points)
-    dimension = _count("dimension", dimension)
-    if dimension < 2:
-        raise ValueError(f"dimension must be >= 2, got {dimension}")
+    dimension = check_int(dimension, "dimension", minimum=2)
+    n_points = _count(n_points, dimension + 1, "n_points")
     ranges = []
     for name, rng_ in (("v_range", v_range), ("w_range", w_range)):
         lo, hi = map(float, rng_)
