@@ -36,6 +36,25 @@ def sympy_invariants(a) -> list[int]:
     return [abs(int(x)) for x in invariant_factors(Matrix(a.tolist())) if x != 0]
 
 
+_PARI = []
+
+
+def pari_invariants(a) -> list[int]:
+    """Reference: the nonzero invariant factors (ascending) from PARI's ``matsnf`` (cypari2)."""
+    if not _PARI:
+        import cypari2
+
+        pari = cypari2.Pari()
+        pari.allocatemem(10**8, 2 * 10**9, silent=True)
+        _PARI.append(pari)
+    pari = _PARI[0]
+    rows = np.asarray(a, dtype=object)
+    if rows.size == 0:
+        return []
+    text = "[" + ";".join(",".join(str(int(x)) for x in row) for row in rows) + "]"
+    return sorted(abs(int(x)) for x in pari.matsnf(pari(text)) if x != 0)
+
+
 # ---------------------------------------------------------------------------- fuzz tests (issue 11.3)
 import collections as _collections
 import contextlib as _contextlib

@@ -12,24 +12,10 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ._cells import CellComplex, Simplex, as_complex, pairs_from_partner, partner_array
-from ._kernels import greedy_matching
+from ._cells import CellComplex, Simplex, cell_complex, pairs_from_partner, partner_array
+from ._kernels import greedy_partner
 
 __all__ = ["morse_matching", "critical_counts"]
-
-
-def _greedy_partner(cx: CellComplex, method: str, vals: np.ndarray | None = None, seed: int | None = None) -> np.ndarray:
-    faces = cx.D  # CSC: column g lists the faces of g
-    cofaces = cx.cofaces  # CSR: row g lists the cofaces of g
-    fptr, fidx = faces.indptr.astype(np.int64), faces.indices.astype(np.int64)
-    cptr, cidx = cofaces.indptr.astype(np.int64), cofaces.indices.astype(np.int64)
-    tie = np.arange(cx.n) if seed is None else np.random.default_rng(seed).permutation(cx.n)
-    v = np.zeros(cx.n) if vals is None else np.asarray(vals, dtype=np.float64)
-    if method == "coreduction":
-        order = np.lexsort((tie, cx.dim_of)).astype(np.int64)  # lowest dimension first
-        return greedy_matching(cx.n, fptr, fidx, cptr, cidx, v, order)
-    order = np.lexsort((tie, -cx.dim_of)).astype(np.int64)  # top dimension first
-    return greedy_matching(cx.n, cptr, cidx, fptr, fidx, v, order)
 
 
 def _vertex_ranks(cx: CellComplex, values) -> np.ndarray:
@@ -144,7 +130,7 @@ def morse_matching(
     """
     if method not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     if method == "lower-star":
         if values is None:
             raise ValueError("method 'lower-star' needs vertex values")
@@ -152,7 +138,7 @@ def morse_matching(
     else:
         if values is not None:
             raise ValueError(f"method {method!r} takes no values")
-        partner = _greedy_partner(cx, method, seed=seed)
+        partner = greedy_partner(cx, method, seed=seed)
     return pairs_from_partner(cx, partner)
 
 
@@ -161,6 +147,6 @@ def critical_counts(simplices, pairs) -> list[int]:
 
     Thesis: Theorem 4.27 (weak discrete Morse inequalities β_k ≤ Crit_k^d).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
     return np.bincount(cx.dim_of[partner < 0], minlength=cx.dimension + 1).astype(int).tolist()
