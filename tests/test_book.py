@@ -139,6 +139,19 @@ def test_api_reference_documents_the_public_functions(built_book):
     assert {f"thesis_lib.complexes.{n}" for n in functions} <= set(documented)
 
 
+def test_api_docstrings_read_bars_as_norms_outside_literals():
+    """|H| in a plain-text docstring is an absolute value, not a reST substitution; literals keep theirs."""
+    sys.path.insert(0, str(BOOK / "_ext"))
+    try:
+        from api_docstrings import escape_bars
+    finally:
+        sys.path.remove(str(BOOK / "_ext"))
+    lines = ["|H| = |u − x|², ``a|b`` and :math:`|x|`", "Example::", "", "    a | b", "after |y|", ">>> 1 | 2"]
+    escape_bars(lines)
+    assert lines == [r"\|H\| = \|u − x\|², ``a|b`` and :math:`|x|`", "Example::", "", "    a | b", r"after \|y\|",
+                     ">>> 1 | 2"]
+
+
 def test_citations_link_to_the_references_page(built_book):
     intro = (built_book / "intro.html").read_text()
     assert re.search(r'<a class="reference internal" href="references.html#[^"]+"[^>]*>Bot11</a>', intro)
