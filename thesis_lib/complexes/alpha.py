@@ -137,7 +137,7 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
 
     Notes
     -----
-    Exact where it matters (:mod:`.predicates`): the triangulation is certified with exact
+    Exact where it matters (``complexes.predicates``): the triangulation is certified with exact
     predicates, d + 2 co-spherical points are triangulated by CGAL's symbolic perturbation, values
     are exactly rounded where floating point could lose digits and attachment is decided exactly,
     so simplices and values equal GUDHI's ``AlphaComplex(..., precision="exact")`` (values to

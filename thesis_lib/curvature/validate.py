@@ -222,7 +222,7 @@ def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
 
 
 def validate_mesh(vertices, simplices) -> Mesh:
-    """Check a triangulated hypersurface and return it as a :class:`Mesh`.
+    """Check a triangulated hypersurface and return it as a ``Mesh``.
 
     Thesis: Definition 3.13 (a triangulated hypersurface M of dimension n in R^{n+1}).
 

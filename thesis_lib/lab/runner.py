@@ -3,7 +3,7 @@
 A run with parameters P goes to ``runs/<name>/<hash(P)>/``: the executed notebook, ``params.json``,
 the experiment's ``results.json`` and figures, and ``complete.json`` once it succeeded (a sweep
 skips such runs; a failed run has ``error.txt`` and ``failed.json`` instead).  The run executes in a
-scratch folder (:mod:`thesis_lib.lab.execute`) and its folder appears in one step when it is done:
+scratch folder (``thesis_lib.lab.execute``) and its folder appears in one step when it is done:
 an interrupted run leaves nothing, and nothing is ever marked complete without its results.
 ``store`` re-executes a notebook in place and replaces its committed results folder only on success.
 Sweeps over grids of parameters are in :mod:`thesis_lib.lab.sweep`.

@@ -1,7 +1,7 @@
 """Triangulations for chapter 3: parameter grids (torus, Freudenthal subdivisions of the 3-sphere
 and the n-catenoid), convex hulls of spheres, random surface samples, the Crust algorithm [ABK98]
 and ball pivoting; plus the thesis's neighbour-grid stencil, topological checks, and mesh files and
-pyvista meshes in and out (:mod:`.io`).
+pyvista meshes in and out (``meshes.io``).
 """
 
 from .crust import crust, crust_candidates, extract_manifold, poles

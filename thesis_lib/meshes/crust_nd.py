@@ -1,6 +1,6 @@
 """The Crust for hypersurfaces of R^{n+1}, n = 1, 2, 3: the thesis's "natural next step" (Chapter 5).
 
-The steps of :mod:`.crust` (ABK98) carry over to any dimension d = n + 1 word for word, because a
+The steps of :func:`~thesis_lib.meshes.crust` (ABK98) carry over to any dimension d = n + 1 word for word, because a
 hypersurface has codimension one:
 
 1. Delaunay triangulation of the samples S (Qhull; in R⁴ with the joggle option ``QJ``: samples of
@@ -12,7 +12,7 @@ hypersurface has codimension one:
    dimension, so p⁺ - s estimates the normal line.
 3. Voronoi filtering: the n-simplices of Del(S ∪ P) with sample vertices.  An n-simplex of R^{n+1}
    is dual to a Voronoi *edge* (codimension one), so the one-dimensional linear program of
-   :mod:`.crust` decides it without triangulating S ∪ P, in any dimension.
+   :func:`~thesis_lib.meshes.crust` decides it without triangulating S ∪ P, in any dimension.
 4. Normal filter: the simplex's normal within θ of the pole vector at the vertex opposite its
    largest facet (for a triangle: the largest-angle vertex), within 3θ/2 at the others.
 5. Trimming.  An (n - 1)-face (a ridge) of an n-simplex in R^{n+1} has a two-dimensional normal
@@ -200,7 +200,7 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
     """Ridges of the n-simplices: ``ridges`` (R, n) sorted rows, ``ridge_of`` (m, n + 1) the ridge
     opposite each local vertex, and per ridge the incident simplices ``tri_of[start[r]:start[r+1]]``
     with their opposite vertices ``opp``.  Slots are listed in the order n, 0, 1, …, n - 1 (for
-    n = 2 the edge order of :mod:`.crust`)."""
+    n = 2 the edge order of :func:`~thesis_lib.meshes.crust`)."""
     m, k1 = simplices.shape
     slots = [k1 - 1] + list(range(k1 - 1))
     r = np.concatenate([np.delete(simplices, k, axis=1) for k in slots])
@@ -349,7 +349,7 @@ def _walk_nd(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, seed, 
              max_fold):
     """Coherently oriented walk from ``seed`` across every ridge to the next live simplex met when
     turning about the ridge through the outside (the side the oriented normal points to).  Depth
-    first as in :mod:`.crust`, or ``breadth_first`` (a piece with boundary: the simplices near the
+    first as in :func:`~thesis_lib.meshes.crust`, or ``breadth_first`` (a piece with boundary: the simplices near the
     seed are claimed before the walk reaches the debris along the boundary)."""
     m, k1 = simplices.shape
     n = k1 - 1

@@ -29,9 +29,10 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
     ----------
     points : ``(N, n + 1)`` samples of a hypersurface (a curve in R², a surface in R³, a
         3-manifold in R⁴).
-    estimator : ``"crust"``: reconstruct with the Crust (:func:`crust` in R³, :func:`crust_nd`
-        otherwise) and apply the discrete formulas of §3.3 at its vertices; ``"knn"``: the
-        least-squares shape operator on the ``k`` nearest neighbours (no surface needed).
+    estimator : ``"crust"``: reconstruct with the Crust (:func:`~thesis_lib.meshes.crust` in R³,
+        :func:`~thesis_lib.meshes.crust_nd.crust_nd` otherwise) and apply the discrete formulas of
+        §3.3 at its vertices; ``"knn"``: the least-squares shape operator on the ``k`` nearest
+        neighbours (no surface needed).
     kind : ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
     k : neighbours of the ``"knn"`` estimator.
     area : vertex area of the ``"crust"`` estimator (``"mixed"`` needs n = 2; use ``"voronoi"`` or

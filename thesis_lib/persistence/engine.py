@@ -315,8 +315,9 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
 
     Notes
     -----
-    A filtration cut at ``max_dim`` (``filtration.truncated``, set by :func:`rips`) has an incomplete
-    top dimension: the barcode marks it (``complete_dimensions``) and shows it only when asked.
+    A filtration cut at ``max_dim`` (``filtration.truncated``, set by
+    :func:`~thesis_lib.complexes.rips`) has an incomplete top dimension: the barcode marks it
+    (``complete_dimensions``) and shows it only when asked.
     The top dimension's essential classes (a truncated Rips complex has millions) are listed lazily:
     they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.

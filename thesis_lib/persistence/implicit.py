@@ -910,10 +910,11 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     Parameters
     ----------
     points : (n, d) array of points, or give ``distance_matrix``.
-    max_radius : ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as :func:`rips`).
-    max_dim : the largest simplex dimension of the complex (as :func:`rips`); homology of dimensions
-        0 .. max_dim − 1 is computed, and it is complete (the top dimension of a truncated complex is
-        not: its classes could only die in dimensions that are not built).
+    max_radius : ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as
+        :func:`~thesis_lib.complexes.rips`).
+    max_dim : the largest simplex dimension of the complex (as :func:`~thesis_lib.complexes.rips`);
+        homology of dimensions 0 .. max_dim − 1 is computed, and it is complete (the top dimension
+        of a truncated complex is not: its classes could only die in dimensions that are not built).
     coefficients : a prime p, the field Z/p.
     distance_matrix : a dense symmetric (n, n) array, or a scipy.sparse matrix whose stored entries
         are the only edges (entries above 2ε dropped); keyword only, instead of ``points``.
