@@ -40,6 +40,8 @@ class Reduction(NamedTuple):
 
     Thesis: §2.2.1 (k_p = number of nonzero SNF entries; entries ≥ 2 give torsion).
 
+    Attributes
+    ----------
     rank : rank over Z (or over Z/p).
     invariants : invariant factors ``>= 2`` of the Smith normal form over Z (empty over Z/p),
         ascending, each dividing the next (Python ints).
