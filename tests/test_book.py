@@ -207,7 +207,7 @@ class _Links(HTMLParser):
                 self.links.append(html.unescape(attrs[key]))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _parse(path: Path) -> _Links:
     parser = _Links()
     parser.feed(path.read_text(errors="replace"))

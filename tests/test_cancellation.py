@@ -14,9 +14,9 @@ import uuid
 import pytest
 from lab_helpers import (
     TOY_RESULTS,
-    commit_fake_results,
     cli,
     cli_env,
+    commit_fake_results,
     complete_runs_are_whole,
     make_project,
     popen_args,

@@ -13,8 +13,8 @@ from scipy.spatial import ConvexHull
 from thesis_lib.curvature import (
     angle_defects,
     boundary_vertices,
-    check_pseudomanifold,
     check_orientation,
+    check_pseudomanifold,
     circumcentric_fractions,
     gaussian_curvature,
     mean_curvature,

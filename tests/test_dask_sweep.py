@@ -13,8 +13,16 @@ import uuid
 from pathlib import Path
 
 import pytest
-from lab_helpers import cli, cli_env, complete_runs_are_whole, popen_args, table_rows, tagged_processes, wait_until
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    cli,
+    cli_env,
+    complete_runs_are_whole,
+    popen_args,
+    root,  # noqa: F401 (the project fixture)
+    table_rows,
+    tagged_processes,
+    wait_until,
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab.paths import project_root

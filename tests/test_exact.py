@@ -140,8 +140,8 @@ from thesis_lib.curvature.exact import (  # noqa: E402
     hypersphere_quadrature,
     hypersphere_volume,
     normal_curvature_circle,
-    total_gauss_kronecker_curvature,
     torus_outer_inner_ratio,
+    total_gauss_kronecker_curvature,
 )
 
 

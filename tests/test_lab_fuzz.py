@@ -16,8 +16,10 @@ import pytest
 from helpers import fuzz_call, fuzz_settings
 from hypothesis import given
 from hypothesis import strategies as st
-from lab_helpers import PAYLOAD
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    PAYLOAD,
+    root,  # noqa: F401 (the project fixture)
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import data, execute, runner

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 import sympy
-from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 
 from thesis_lib.complexes.rips import rips
 from thesis_lib.datasets import dunce_hat, klein_bottle, rp2, sphere, torus
@@ -18,8 +18,8 @@ from thesis_lib.filtration import Filtration
 from thesis_lib.homology import homology
 from thesis_lib.morse import (
     RP2_FACETS,
-    cells,
     boundary_operator,
+    cells,
     chain_complex_homology,
     check_discrete_morse_function,
     check_vector_field,

@@ -10,8 +10,9 @@ enough and no Python object is made per simplex.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
+
+from ..jit import njit
 
 
 @njit(cache=True)

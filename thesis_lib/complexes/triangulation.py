@@ -26,14 +26,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import comb
 
-from ..jit import njit
 import numpy as np
-import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from .._validate import as_points, check_size, check_weights
+from ..jit import njit
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation

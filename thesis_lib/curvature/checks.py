@@ -10,8 +10,6 @@ calls them; the tests pin them to closed forms.
 
 from __future__ import annotations
 
-from math import factorial
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial import ConvexHull, HalfspaceIntersection

@@ -24,8 +24,8 @@ import io
 import itertools
 import logging
 import types
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Callable, Iterator
 
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker

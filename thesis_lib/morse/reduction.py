@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from ..filtration import Filtration, as_complex
 from .._validate import InvalidTypeError, resolve_coefficients
+from ..filtration import Filtration, as_complex
 from ..persistence.chains import chain_persistence
 from ._cells import CellComplex, partner_array
 from ._gradient import morse_boundary_ids

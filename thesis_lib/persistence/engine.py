@@ -22,10 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..jit import njit
-
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
+from ..jit import njit
 from .barcode import Barcode
 from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
 

@@ -51,9 +51,8 @@ import math
 
 import numpy as np
 
-from ..jit import load_numba, njit
-
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
+from ..jit import load_numba, njit
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
 
