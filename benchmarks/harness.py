@@ -328,7 +328,8 @@ def arguments(
         ap.add_argument("--worker", nargs=len(worker), metavar=tuple(worker), help=argparse.SUPPRESS)
     if memory:
         ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
-        ap.add_argument("--rounds", type=int, default=None, help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
+        ap.add_argument("--rounds", type=int, default=None,
+                        help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
     if cases:
         ap.add_argument("--cases", nargs="+", choices=list(cases), default=None, metavar="CASE",
                         help="run only these cases: " + ", ".join(cases))

@@ -42,7 +42,8 @@ def test_book_workflow_runs_the_readme_book_command_and_publishes_the_site():
 
 def test_licence_is_an_spdx_expression():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
-    assert isinstance(project["license"], str) and project["license"] == yaml.safe_load((ROOT / "CITATION.cff").read_text())["license"]
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    assert isinstance(project["license"], str) and project["license"] == cff["license"]
     assert all((ROOT / f).is_file() for f in project.get("license-files", []))
 
 

@@ -1,4 +1,5 @@
-"""Tests of thesis_lib.applications.proteins: PDB parsing traps (SOURCES.md), radii and weights (thesis §2.2.2, §2.4.2)."""
+"""Tests of thesis_lib.applications.proteins: PDB parsing traps (SOURCES.md), radii and weights
+(thesis §2.2.2, §2.4.2)."""
 
 from __future__ import annotations
 

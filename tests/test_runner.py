@@ -143,7 +143,8 @@ def test_cli_reports_bad_input_with_exit_code_2(root, capsys, argv, message):
     assert err.startswith("error: ") and message in err
 
 
-@pytest.mark.parametrize("argv", [["sweep", "toy", "-p", "n", "1", "-j", "0"], ["sweep", "toy", "-p", "n", "1", "-j", "x"],
+@pytest.mark.parametrize("argv", [["sweep", "toy", "-p", "n", "1", "-j", "0"],
+                                  ["sweep", "toy", "-p", "n", "1", "-j", "x"],
                                   ["sweep", "toy", "-p", "n", "1", "--retries", "-1"]])
 def test_cli_refuses_bad_counts(root, argv, capsys):
     """Regression (issue 11): `-j 0` was accepted."""

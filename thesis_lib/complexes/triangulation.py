@@ -212,7 +212,7 @@ def _hint_pairs(tri, hint):
                     good = True
                     a = 0
                     b = 0
-                    for q in range(w - 1):
+                    for _ in range(w - 1):
                         if a == i:
                             a += 1
                         if b == j:
@@ -349,7 +349,8 @@ def _same_volume(geo: Geometry, sub: np.ndarray, old: np.ndarray) -> bool:
     return abs(v_sub - v_old) <= 1e-9 * max(v_sub, v_old)
 
 
-def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray, walls: list[tuple[tuple[int, ...], int]]) -> np.ndarray | None:
+def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray,
+          walls: list[tuple[tuple[int, ...], int]]) -> np.ndarray | None:
     """Simplices of ``sub`` on the inner side of the wall facets, by flood fill; None if a wall is missing."""
     d = geo.d
     where: dict[tuple[int, ...], list[tuple[int, int]]] = {}

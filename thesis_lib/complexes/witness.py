@@ -23,7 +23,7 @@ import numpy.typing as npt
 
 from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
 from ..filtration import Filtration
-from ..jit import load_numba, njit
+from ..jit import load_numba, njit, prange
 from ._flag import flag_levels, lower_bound, matrix_edges
 from .scaling import scaled, unscale_values
 
@@ -222,7 +222,7 @@ def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chun
     out_v = np.empty(total, dtype=np.float64)
     valid = np.zeros(total, dtype=np.bool_)
     n_chunks = max(1, min(m, n_chunks))
-    for c in numba.prange(n_chunks):
+    for c in prange(n_chunks):
         cur = np.empty(n_x)
         ccur = np.empty(n_x)
         idx = np.empty(n_x, dtype=np.int64)

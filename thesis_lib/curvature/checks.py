@@ -132,7 +132,8 @@ def hyperarea_gradient_fd(points: ArrayLike, h: float = 1e-6) -> NDArray[np.floa
         plus, minus = p.copy(), p.copy()
         plus[:, 0, a] += h
         minus[:, 0, a] -= h
-        out[:, a] = (simplex_hyperareas(plus.reshape(-1, d), flat) - simplex_hyperareas(minus.reshape(-1, d), flat)) / (2 * h)
+        out[:, a] = (simplex_hyperareas(plus.reshape(-1, d), flat)
+                     - simplex_hyperareas(minus.reshape(-1, d), flat)) / (2 * h)
     return out
 
 
