@@ -118,8 +118,8 @@ def _parse(item: object, source: str) -> Claim:
         raise ClaimError(f"{where}: 'between' needs low and high")
     if "correct" in item and item["compare"] in ("between", "none"):
         raise ClaimError(f"{where}: 'correct' needs a comparison with a value (not {item['compare']!r})")
-    if item.get("provenance") is not None and item["provenance"] not in PROVENANCES:
-        raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item['provenance']!r}")
+    if item.get("provenance") not in PROVENANCES:
+        raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item.get('provenance')!r} (required)")
     if item.get("section", "thesis") not in SECTIONS:
         raise ClaimError(f"{where}: section must be one of {SECTIONS}, got {item['section']!r}")
     link = item.get("link")
@@ -315,7 +315,7 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
         "total": len(rows),
         "by_status": {s: sum(r["status"] == s for r in rows) for s in STATUSES},
         "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (not kv[0].isdigit(), kv[0].zfill(3)))),
-        "by_provenance": dict(Counter(r.get("provenance") or "unstated" for r in rows)),
+        "by_provenance": dict(Counter(r["provenance"] for r in rows)),
         "beyond": len(rows) - len(thesis),
     }
 
