@@ -171,7 +171,8 @@ def test_rows_carry_provenance_section_link_and_correct(registry):
 
 
 def test_summary_counts_by_status_chapter_and_provenance(registry):
-    text = (_claim(id="a", rtol=0.1, provenance="computed") + _claim(id="b", where="Figure 3.5", rtol=0, note="x", provenance="reconstructed input")
+    text = (_claim(id="a", rtol=0.1, provenance="computed")
+            + _claim(id="b", where="Figure 3.5", rtol=0, note="x", provenance="reconstructed input")
             + _claim(id="c", where="Example 4.43", compare="none", note="fig", provenance="transcribed")
             + _claim(id="d", section="beyond", rtol=0.1, note="new", provenance="reconstructed input"))
     s = report.summary(registry(text))
@@ -181,7 +182,8 @@ def test_summary_counts_by_status_chapter_and_provenance(registry):
     assert s["by_chapter"] == {"2": {"reproduced": 1}, "3": {"differs": 1}, "4": {"figure-only": 1}}
     assert s["by_provenance"] == {"computed": 1, "reconstructed input": 2, "transcribed": 1}
     assert report.summary_markdown(registry(text)).startswith(
-        "4 claims: 1 reproduced, 1 differs, 1 figure-only, 1 new. Provenance: 1 computed, 2 reconstructed input, 1 transcribed.")
+        "4 claims: 1 reproduced, 1 differs, 1 figure-only, 1 new. "
+        "Provenance: 1 computed, 2 reconstructed input, 1 transcribed.")
 
 
 def test_corrupt_results_and_claims_give_clear_errors(registry, tmp_path, capsys):
