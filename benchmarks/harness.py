@@ -480,6 +480,33 @@ def stream_table(columns: Sequence, names: Sequence[str], make_row: Callable[[st
     return rows
 
 
+def run_cases(topic: str, doc: str, argv: list[str] | None, *, cases: Sequence[str], quick: Sequence[str],
+              full: Sequence[str], columns: Sequence, run_case: Callable[[str, int | None], dict],
+              memory_child: Callable[..., object], memory: Sequence[str] = ("TOOL", "CASE"),
+              quick_help: str = "small cases only (make bench-check)") -> list[dict]:
+    """The ``main`` of a case-by-case benchmark: parse the common options (:func:`arguments`); in a
+    ``--memory`` child call ``memory_child(*args)``; else run ``run_case(name, rounds)`` for the
+    chosen cases (``--cases``, else ``quick`` or ``full``), printing each row as it is made and
+    storing the rows after each case (an interrupted long run keeps the finished ones; a partial
+    run goes to ``--output`` or ``<topic>_partial.json``)."""
+    args = arguments(doc, argv, quick_help=quick_help, output=True, memory=memory, cases=list(cases))
+    if args.memory:
+        memory_child(*args.memory)
+        return []
+    meta = environment()
+    names = args.cases or list(quick if args.quick else full)
+    output = args.output or (str(RESULTS / f"{topic}_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name: str) -> dict:
+        rows.append(run_case(name, args.rounds))
+        write_results(topic, rows, args.quick, output, meta)
+        return rows[-1]
+
+    stream_table(columns, names, row)
+    return rows
+
+
 def write_rows(topic: str, rows: list[dict], quick: bool, output: str | None = None, indent: int = 1) -> Path:
     """Older name of :func:`write_results` (the rows are stored with the run's :func:`environment`)."""
     return write_results(topic, rows, quick, output)
