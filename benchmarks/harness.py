@@ -53,9 +53,9 @@ import subprocess
 import sys
 import time
 import tracemalloc
+from collections.abc import Callable, Mapping, Sequence
 from importlib import metadata
 from pathlib import Path
-from typing import Callable, Mapping, Sequence
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "results"
@@ -212,7 +212,7 @@ def environment() -> dict:
         usable = os.cpu_count()
     return {
         "commit": commit,
-        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "load_average": [round(x, 2) for x in os.getloadavg()],
         "cores": os.cpu_count(),
         "usable_cores": usable,
@@ -328,7 +328,8 @@ def arguments(
         ap.add_argument("--worker", nargs=len(worker), metavar=tuple(worker), help=argparse.SUPPRESS)
     if memory:
         ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
-        ap.add_argument("--rounds", type=int, default=None, help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
+        ap.add_argument("--rounds", type=int, default=None,
+                        help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
     if cases:
         ap.add_argument("--cases", nargs="+", choices=list(cases), default=None, metavar="CASE",
                         help="run only these cases: " + ", ".join(cases))

@@ -1,5 +1,10 @@
 """Helpers shared by the tests (imported as ``from helpers import ...``; pytest puts tests/ on sys.path)."""
 
+import collections as _collections
+import contextlib as _contextlib
+import os as _os
+import signal as _signal
+
 import numpy as np
 from sympy import Matrix
 from sympy.matrices.normalforms import invariant_factors
@@ -36,11 +41,26 @@ def sympy_invariants(a) -> list[int]:
     return [abs(int(x)) for x in invariant_factors(Matrix(a.tolist())) if x != 0]
 
 
+_PARI = []
+
+
+def pari_invariants(a) -> list[int]:
+    """Reference: the nonzero invariant factors (ascending) from PARI's ``matsnf`` (cypari2)."""
+    if not _PARI:
+        import cypari2
+
+        pari = cypari2.Pari()
+        pari.allocatemem(10**8, 2 * 10**9, silent=True)
+        _PARI.append(pari)
+    pari = _PARI[0]
+    rows = np.asarray(a, dtype=object)
+    if rows.size == 0:
+        return []
+    text = "[" + ";".join(",".join(str(int(x)) for x in row) for row in rows) + "]"
+    return sorted(abs(int(x)) for x in pari.matsnf(pari(text)) if x != 0)
+
+
 # ---------------------------------------------------------------------------- fuzz tests (issue 11.3)
-import collections as _collections
-import contextlib as _contextlib
-import os as _os
-import signal as _signal
 
 #: outcomes of fuzzed calls per module, printed at the end of the run (conftest.py)
 FUZZ_TALLY: dict = _collections.defaultdict(_collections.Counter)

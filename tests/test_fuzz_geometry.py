@@ -16,10 +16,9 @@ import textwrap
 
 import numpy as np
 import pytest
+from helpers import fuzz_call, fuzz_settings
 from hypothesis import given
 from hypothesis import strategies as st
-
-from helpers import fuzz_call, fuzz_settings
 
 from thesis_lib import complexes as cx
 from thesis_lib import curvature as cv
@@ -303,3 +302,19 @@ def test_qhull_never_sees_huge_coordinates():
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr[-2000:]
     assert proc.stdout.strip().endswith("ok")
+
+
+def test_absurd_grid_dimensions_and_complex_corners_are_refused():
+    """Regression (--fuzz-long): n = 2**70 overflowed a tuple before the size check; complex corner
+    coordinates were cast to real with a warning."""
+    import numpy as np
+
+    from thesis_lib.curvature import circumcentric_fractions
+    from thesis_lib.meshes.grids import MAX_GRID_DIM, catenoid_freudenthal, hypersphere_freudenthal
+
+    with pytest.raises(ValueError, match=f"n must be <= {MAX_GRID_DIM}"):
+        catenoid_freudenthal(1, 2**70)
+    with pytest.raises(ValueError, match=f"n must be <= {MAX_GRID_DIM}"):
+        hypersphere_freudenthal(np.pi / 4, 2.0, 2**70)
+    with pytest.raises(ValueError, match="complex numbers are not coordinates"):
+        circumcentric_fractions(np.zeros((1, 3, 2)) + 1j)

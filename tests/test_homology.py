@@ -6,10 +6,12 @@ import itertools
 import gudhi
 import numpy as np
 import pytest
+from helpers import THESIS_M2, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from helpers import THESIS_M2, sympy_invariants
+from thesis_lib._elimination import markowitz_eliminate
+from thesis_lib._modular import dense_invariants
 from thesis_lib.datasets import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
 from thesis_lib.homology import (
     betti_numbers,
@@ -19,7 +21,7 @@ from thesis_lib.homology import (
     simplex_counts,
 )
 from thesis_lib.simplicial import closure
-from thesis_lib.smith import reduce_matrix
+from thesis_lib.smith import dense_smith_diagonal, reduce_matrix
 
 # ------------------------------------------------------------------ random complexes
 
@@ -190,17 +192,19 @@ def test_torsion_of_disjoint_moore_spaces():
     assert reduce_matrix(d2).invariants == [2, 2, 12]
 
 
-def test_exact_fallback_matches_int64_engine():
+def test_sparse_and_dense_stages_agree_on_boundary_matrices():
+    # the whole engine against each stage alone: the modular dense stage on the whole matrix, and
+    # the sparse elimination switching to the dense kernel at once or never
     rng = np.random.default_rng(5)
     tris = [t for t in itertools.combinations(range(14), 3) if rng.random() < 0.25]
-    mats = boundary_matrices(closure(tris), 0)
-    used = []
-    for d in mats[1:]:
-        fast, slow = reduce_matrix(d), reduce_matrix(d, int64_limit=1)
-        assert not fast.exact_fallback
-        used.append(slow.exact_fallback)
-        assert (fast.rank, fast.invariants) == (slow.rank, slow.invariants)
-    assert any(used)
+    for d in boundary_matrices(closure(tris), 0)[1:]:
+        red = reduce_matrix(d)
+        full = [1] * (red.rank - len(red.invariants)) + red.invariants
+        assert dense_smith_diagonal(d.toarray()) == full
+        for density in (0.0, 2.0):
+            rank, _, (core, _, _) = markowitz_eliminate(d.indptr, d.indices, d.data, d.shape[0],
+                                                        np.zeros(d.shape[1], bool), 0, density=density)
+            assert sorted([1] * rank + dense_invariants(core)) == full
 
 
 # ------------------------------------------------------------------ invariants

@@ -8,16 +8,18 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 import sympy
-from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 
+from thesis_lib.complexes.rips import rips
 from thesis_lib.datasets import dunce_hat, klein_bottle, rp2, sphere, torus
+from thesis_lib.filtration import Filtration
 from thesis_lib.homology import homology
 from thesis_lib.morse import (
     RP2_FACETS,
-    cells,
     boundary_operator,
+    cells,
     chain_complex_homology,
     check_discrete_morse_function,
     check_vector_field,
@@ -240,7 +242,8 @@ def test_theorems_4_25_4_26_crossing_critical_values(seed):
             if s in crit:
                 k = crit[s]
                 diff = np.array(b_now[:5]) - np.array(b_prev[:5])
-                up = np.zeros(5, int); up[k] = 1
+                up = np.zeros(5, int)
+                up[k] = 1
                 down = np.zeros(5, int)
                 if k > 0:
                     down[k - 1] = -1
@@ -341,7 +344,8 @@ def test_closed_vpath_detected_and_reported():
     for i in range(0, len(path) - 2, 2):
         s, t, s2 = path[i], path[i + 1], path[i + 2]
         assert (s, t) in CYCLIC and set(s2) < set(t) and s2 != s  # Definition 4.34
-    with pytest.raises(ValueError, match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\) > \(1, 2\) > \(2,\) > \(0, 2\) > \(0,\)"):
+    with pytest.raises(ValueError,
+                       match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\) > \(1, 2\) > \(2,\) > \(0, 2\) > \(0,\)"):
         morse_homology(CIRCLE, CYCLIC)
     with pytest.raises(ValueError, match="closed V-path"):
         morse_boundary(CIRCLE, CYCLIC)
@@ -514,7 +518,8 @@ def test_lower_star_pairs_stay_in_lower_stars(seed):
     values = np.round(np.random.default_rng(seed).random(nv), 1)  # ties on purpose
     pairs = morse_matching(cx, "lower-star", values=values)
     rank = np.lexsort((np.arange(nv), values))
-    order = np.empty(nv, int); order[rank] = np.arange(nv)
+    order = np.empty(nv, int)
+    order[rank] = np.arange(nv)
     for s, t in pairs:
         assert max(s, key=lambda v: order[v]) == max(t, key=lambda v: order[v])
     assert is_acyclic(cx, pairs)
@@ -570,3 +575,129 @@ def test_public_contract_of_design_md():
     assert inspect.signature(m.morse_homology).parameters["coefficients"].default == 0
     pairs = m.morse_matching(rp2())
     assert m.is_acyclic(rp2(), pairs) and m.morse_homology(rp2(), pairs) == homology(rp2())
+
+
+# ---------------------------------------------------------------------------- any complex: Filtration in, same answers
+def _as_mapping(filt: Filtration) -> dict[tuple[int, ...], float]:
+    return {tuple(int(x) for x in row): float(v) for s, vs in zip(filt.simplices, filt.values) for row, v in zip(s, vs)}
+
+
+def test_filled_triangle_filtration_is_a_morse_function():
+    # vertices at 0, edges at 1, 2, 3 and the triangle at 3: the triangle pairs with its last edge
+    filt = Filtration.from_pairs([((0,), 0), ((1,), 0), ((2,), 0), ((0, 1), 1), ((0, 2), 2), ((1, 2), 3),
+                                  ((0, 1, 2), 3)])
+    assert is_discrete_morse_function(filt)
+    assert critical_simplices(filt) == [(0,), (1,), (2,), (0, 1), (0, 2)]
+    assert gradient_pairs(filt) == [((1, 2), (0, 1, 2))]
+    assert sublevel_complex(filt, 1.5) == [(0,), (1,), (2,), (0, 1)]
+    assert sublevel_complex(filt, -1) == []
+
+
+def _random_filtration(seed: int) -> Filtration:
+    """A random complex with monotone values that often tie (so Definition 4.20 holds or fails)."""
+    rng = np.random.default_rng(seed)
+    simplices = all_simplices(random_complex(seed, 6))
+    vals: dict[tuple[int, ...], float] = {}
+    for s in simplices:  # by dimension: faces first
+        below = max((vals[f] for f in itertools.combinations(s, len(s) - 1)), default=0.0) if len(s) > 1 else 0.0
+        vals[s] = below + float(rng.integers(1, 4)) * (rng.random() < 0.85)
+    return Filtration.from_pairs(sorted(vals.items(), key=lambda kv: (kv[1], len(kv[0]), kv[0])))
+
+
+@settings(deadline=None, max_examples=40)
+@given(seeds)
+def test_morse_function_given_a_filtration_equals_its_mapping(seed):
+    filt = _random_filtration(seed)
+    f = _as_mapping(filt)
+    morse = is_discrete_morse_function(f)
+    assert is_discrete_morse_function(filt) == morse
+    if not morse:
+        with pytest.raises(ValueError, match="Definition 4.20") as from_map:
+            check_discrete_morse_function(f)
+        with pytest.raises(ValueError, match="Definition 4.20") as from_filt:
+            check_discrete_morse_function(filt)
+        assert str(from_filt.value) == str(from_map.value)
+        with pytest.raises(ValueError, match="Definition 4.20"):
+            gradient_pairs(filt)
+        return
+    assert critical_simplices(filt) == critical_simplices(f)
+    assert gradient_pairs(filt) == gradient_pairs(f)
+    level = sorted(f.values())[len(f) // 2]
+    assert sublevel_complex(filt, level) == sublevel_complex(f, level)
+    # the gradient of a filtration pairs only simplices of equal value (faces never exceed cofaces)
+    assert all(f[s] == f[t] for s, t in gradient_pairs(filt))
+
+
+@SETTINGS
+@given(seeds)
+def test_vector_field_functions_given_a_filtration_equal_the_simplex_list(seed):
+    simplices = random_complex(seed)
+    filt = Filtration.from_simplices(simplices)
+    pairs = random_field(seed, simplices)
+    assert morse_matching(filt, "coreduction", seed=seed) == morse_matching(simplices, "coreduction", seed=seed)
+    assert critical_cells(filt, pairs) == critical_cells(simplices, pairs)
+    assert morse_homology(filt, pairs) == morse_homology(simplices, pairs) == homology(simplices)
+    assert discrete_morse_function(filt, pairs) == discrete_morse_function(simplices, pairs)
+    assert cells(filt) == cells(simplices) == all_simplices(simplices)
+    assert (boundary_operator(filt) != boundary_operator(simplices)).nnz == 0
+
+
+def test_morse_homology_of_a_rips_filtration():
+    points = np.random.default_rng(3).random((40, 2))
+    filt = rips(points, max_radius=0.2, max_dim=2)
+    pairs = morse_matching(filt)
+    assert is_acyclic(filt, pairs)
+    assert morse_homology(filt, pairs) == homology(filt) == homology(cells(filt))
+    assert sum(critical_counts(filt, pairs)) < len(cells(filt))
+
+
+def test_filtration_errors_for_morse_functions_and_fields():
+    plain = Filtration.from_simplices([(0, 1, 2)])
+    with pytest.raises(ValueError, match="needs values"):
+        is_discrete_morse_function(plain)
+    flat = Filtration(plain.simplices, [np.zeros(len(s)) for s in plain.simplices])  # every vertex ties two edges
+    assert not is_discrete_morse_function(flat)
+    with pytest.raises(ValueError, match=r"simplex \(0,\) breaks condition 1 of Definition 4.20: 2 cofaces"):
+        critical_simplices(flat)
+    circle = Filtration.from_simplices(CIRCLE)
+    with pytest.raises(ValueError, match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\)"):
+        morse_homology(circle, CYCLIC)
+    with pytest.raises(ValueError, match="closed V-path"):
+        discrete_morse_function(circle, CYCLIC)
+    with pytest.raises(ValueError, match="closed V-path"):
+        gradient_paths(circle, CYCLIC, (0, 1), (0,))
+    assert find_closed_vpath(circle, CYCLIC)[0] == (0,)
+    with pytest.raises(ValueError, match="stabilise"):
+        stabilised_flow(circle, CYCLIC)
+
+
+@pytest.mark.parametrize(
+    "values, message",
+    [
+        ({(0.5,): 0.0}, "vertex labels must be integers"),
+        ({("a",): 0.0}, "vertex labels must be integers"),
+        ({(-1,): 0.0}, "not a simplex"),
+        ({5: 0.0}, "not a simplex"),
+        ([((0,), 0.0)], "non-empty mapping"),
+    ],
+)
+def test_bad_vertex_labels_in_a_morse_function(values, message):
+    with pytest.raises(ValueError, match=message):
+        is_discrete_morse_function(values)
+
+
+@pytest.mark.parametrize(
+    "pairs, message",
+    [
+        ("ab", "iterable of pairs"),
+        (5, "iterable of pairs"),
+        (["ab"], "two simplices"),
+        ([((0,), "01")], "holds two simplices"),
+        ([((0,), 1)], "holds two simplices"),
+    ],
+)
+def test_malformed_vector_fields(pairs, message):
+    with pytest.raises(ValueError, match=message):
+        check_vector_field(TRIANGLE, pairs)
+    with pytest.raises(ValueError, match=message):
+        morse_boundary(Filtration.from_simplices(TRIANGLE), pairs)

@@ -1,18 +1,33 @@
 """Tests for thesis_lib.smith: Smith normal form over Z and ranks over Z/p."""
 
+import itertools
+
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from helpers import THESIS_M2, pari_invariants, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from helpers import THESIS_M2, sympy_invariants
+from thesis_lib._elimination import markowitz_eliminate
+from thesis_lib._modular import dense_invariants
+from thesis_lib.simplicial import boundary_matrix, closure
 from thesis_lib.smith import (
     dense_smith_diagonal,
     rank_mod_p,
     reduce_matrix,
     smith_normal_form,
 )
+
+
+def staged_invariants(a, density: float) -> list[int]:
+    """Sparse elimination switching to the dense kernel at ``density`` (0: at once; 2: never), then
+    the modular stage on the core: the invariant factors, sorted."""
+    m = sp.csc_matrix(np.asarray(a, dtype=np.int64))
+    m.sort_indices()
+    rank, _, (core, _, _) = markowitz_eliminate(m.indptr, m.indices, m.data, m.shape[0],
+                                                np.zeros(m.shape[1], bool), 0, density=density)
+    return sorted([1] * rank + dense_invariants(core))
 
 
 def test_example_2_21_m2():
@@ -48,9 +63,11 @@ def test_matches_sympy_on_random_matrices(m, n, seed, bound, density):
     ref = sympy_invariants(a)
     assert smith_normal_form(a).tolist() == ref
     assert smith_normal_form(sp.csr_matrix(a)).tolist() == ref
-    # the exact Python-integer engine (used on int64 overflow) agrees
-    red = reduce_matrix(a, int64_limit=2)
-    assert [1] * (red.rank - len(red.invariants)) + red.invariants == ref
+    # each stage alone agrees: the dense modular stage, and sparse elimination switching to the
+    # dense kernel at once, halfway or never
+    assert dense_smith_diagonal(a) == ref
+    for density in (0.0, 0.3, 2.0):
+        assert staged_invariants(a, density) == ref
     # rank over Z/p = number of invariant factors prime to p
     for p in (2, 3, 5):
         assert rank_mod_p(a, p) == sum(1 for x in ref if x % p)
@@ -91,8 +108,8 @@ def test_large_sparse_unit_matrix_and_skip():
     assert reduce_matrix(a, 7, skip_columns=skip).rank == (n - 1) // 2
 
 
-def test_large_prime_uses_exact_engine():
-    p = 2147483659  # the first prime above 2**31: too big for the int64 kernel
+def test_large_prime_reads_the_rank_off_the_integer_smith_form():
+    p = 2147483659  # the first prime above 2**31: too big for the word-size kernels
     assert rank_mod_p(THESIS_M2, p) == 10
     assert rank_mod_p([[p, 0], [0, 1]], p) == 1
     assert rank_mod_p([[p, 0], [0, 1]], 2**31 - 1) == 2
@@ -113,6 +130,74 @@ def test_large_prime_uses_exact_engine():
 def test_bad_matrices(bad, message):
     with pytest.raises(ValueError, match=message):
         smith_normal_form(bad)
+
+
+def test_uint64_entries_beyond_int64_are_exact():
+    # issue 11: uint64 entries >= 2**63 used to wrap around to negative int64 values
+    big = 2**63 + 1  # divisible by 3
+    a = np.array([[big, 0], [0, 3]], dtype=np.uint64)
+    assert [int(x) for x in smith_normal_form(a)] == [3, big] == sympy_invariants(a.astype(object))
+    b = np.array([[2**64 - 1, 2**63], [5, 7]], dtype=np.uint64)
+    assert [int(x) for x in smith_normal_form(b)] == sympy_invariants(b.astype(object))
+    c = np.array([[-(2**63), 0], [0, 2]], dtype=np.int64)  # |int64 min| does not fit in int64
+    assert [int(x) for x in smith_normal_form(c)] == [2, 2**63]
+    assert rank_mod_p(a, 3) == 0 and rank_mod_p(a, 5) == 2
+    with pytest.raises(ValueError, match="int64"):
+        smith_normal_form(sp.csc_matrix(np.array([[2**63]], dtype=np.uint64)))
+
+
+@settings(deadline=None, max_examples=25)
+@given(st.integers(1, 6), st.integers(1, 6), st.integers(0, 2**32 - 1), st.sampled_from([40, 70, 200]))
+def test_huge_entries_match_sympy(m, n, seed, bits):
+    rng = np.random.default_rng(seed)
+    a = np.array([[int(x) * (1 << int(s)) + int(y) for x, s, y in zip(r1, r2, r3)]
+                  for r1, r2, r3 in zip(rng.integers(-3, 4, (m, n)), rng.integers(0, bits, (m, n)),
+                                        rng.integers(-9, 10, (m, n)))], dtype=object)
+    a[rng.random((m, n)) < 0.3] = 0
+    assert [int(x) for x in smith_normal_form(a)] == sympy_invariants(a)
+
+
+def known_smith_form(seed: int, m: int, n: int, diagonal: list[int]) -> np.ndarray:
+    """U · diag · V with random unimodular U, V (products of elementary matrices): the Smith form is known."""
+    rng = np.random.default_rng(seed)
+    a = np.zeros((m, n), dtype=object)
+    for i, d in enumerate(diagonal):
+        a[i, i] = d
+    for _ in range(3 * (m + n)):  # row and column additions with small multipliers
+        i, j = rng.choice(m, 2, replace=False)
+        a[i] += int(rng.integers(-3, 4)) * a[j]
+        k, l = rng.choice(n, 2, replace=False)
+        a[:, k] += int(rng.integers(-3, 4)) * a[:, l]
+    return a[rng.permutation(m)][:, rng.permutation(n)]
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_large_matrices_with_large_elementary_divisors_match_pari(seed):
+    # elementary divisors up to ~10^60, with shared prime factors, on 40 x 55 matrices of rank 30
+    rng = np.random.default_rng(seed)
+    q = [int(x) for x in rng.integers(2, 10**6, 4)]
+    diagonal = [1] * 22 + [2, 2, 6, q[0], q[0] * q[1], q[0] * q[1] * 2**40, 10**30 * q[2], 10**60 * q[2] * q[3]]
+    a = known_smith_form(seed, 40, 55, diagonal)
+    expected = [int(x) for x in sympy_invariants(np.diag(np.array(diagonal, dtype=object)))]
+    ours = [int(x) for x in smith_normal_form(a)]
+    assert ours == expected == pari_invariants(a)
+    assert dense_smith_diagonal(a) == expected
+
+
+@pytest.mark.parametrize("density", [0.02, 0.05])
+def test_dense_core_of_a_random_2_complex_matches_pari(density):
+    # the dense part the sparse stage hands over on a Linial–Meshulam complex (n = 60)
+    rng = np.random.default_rng(3)
+    n = 60
+    tris = np.array([t for t in itertools.combinations(range(n), 3) if rng.random() < 4 / n])
+    cx = closure(tris)
+    d2 = boundary_matrix(cx[1], cx[2], 0)
+    rank, _, (core, _, _) = markowitz_eliminate(d2.indptr, d2.indices, d2.data, d2.shape[0],
+                                                np.zeros(d2.shape[1], bool), 0, density=density, finish=False)
+    assert core.shape[0] > 100
+    ours = dense_invariants(core)
+    assert ours == pari_invariants(core)
+    assert reduce_matrix(d2).rank == rank + len(ours)
 
 
 def test_bad_coefficients_and_masks():

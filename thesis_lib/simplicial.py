@@ -1,7 +1,7 @@
 """Simplices as integer arrays: validation, closure, facet lookup and signed boundary matrices.
 
 A set of ``k``-simplices is stored as an ``(m, k + 1)`` array of vertex indices, each row in
-ascending order (the convention of DESIGN.md).  Everything in :mod:`thesis_lib` that needs faces,
+ascending order (the convention of DESIGN.md).  Everything in ``thesis_lib`` that needs faces,
 boundaries or orientations goes through this module.
 """
 
@@ -12,7 +12,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ._validate import check_coefficients, vertex_label
+from ._validate import vertex_label
 
 __all__ = [
     "as_simplex_array",

@@ -294,7 +294,7 @@ def vdw_radii(
     atoms : an :class:`Atoms` record from :func:`read_pdb`.
     set : the radius table.  ``"protor"``: the ProtOr united-atom radii of Tsai et al. (1999)
         (heavy atom plus its bonded hydrogens, from the residue's entry in the Chemical Component
-        Dictionary, :func:`biotite.structure.info.vdw_radius_protor`), the table ESBTL loads by
+        Dictionary, ``biotite.structure.info.vdw_radius_protor``), the table ESBTL loads by
         default.  ``"bondi"``: Bondi's (1964) element radii, :data:`BONDI_RADII`.  ``"single"``:
         biotite's single-element radii (Mantina et al. 2009).
     return_fallback : also return the boolean mask of the atoms whose radius came from the

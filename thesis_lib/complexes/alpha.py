@@ -15,11 +15,11 @@ linear solves.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
 from ..filtration import Filtration
+from ..jit import njit
 from ..simplicial import facets, find_rows, row_keys
 from .orthoballs import attached, orthoballs
 from .scaling import unscale_values
@@ -137,7 +137,7 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
 
     Notes
     -----
-    Exact where it matters (:mod:`.predicates`): the triangulation is certified with exact
+    Exact where it matters (``complexes.predicates``): the triangulation is certified with exact
     predicates, d + 2 co-spherical points are triangulated by CGAL's symbolic perturbation, values
     are exactly rounded where floating point could lose digits and attachment is decided exactly,
     so simplices and values equal GUDHI's ``AlphaComplex(..., precision="exact")`` (values to

@@ -31,7 +31,7 @@ def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[i
     Raises
     ------
     ValueError
-        If the nerve grows beyond :data:`MAX_NERVE_SIMPLICES` simplices (it can have 2^|I| − 1).
+        If the nerve grows beyond ``MAX_NERVE_SIMPLICES`` (10⁶) simplices (it can have 2^|I| − 1).
     """
     if isinstance(cover, (str, bytes)) or not hasattr(cover, "__len__"):
         raise ValueError("cover must be a sequence of sets")

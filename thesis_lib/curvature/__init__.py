@@ -2,7 +2,7 @@
 
 Vertices are ``(nv, n + 1)`` points of R^{n+1}; top simplices ``(m, n + 1)`` vertex indices of the
 n-simplices of the hypersurface (n = 2 is a triangle mesh).  Every function validates its input
-through :func:`validate_mesh` (one module, :mod:`.validate`).
+through :func:`validate_mesh` (one module, ``curvature.validate``).
 """
 
 from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas

@@ -18,11 +18,11 @@
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import resolve_alias
+from .._validate import InvalidTypeError, resolve_alias
+from ..jit import njit
 from .manifold import checked_mesh
 from .validate import Mesh
 
@@ -60,6 +60,8 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
     ValueError
         If ``p`` is not an (m, n + 1, d) array of finite numbers with d >= n.
     """
+    if np.iscomplexobj(p):
+        raise InvalidTypeError("complex numbers are not coordinates")
     try:
         p = np.asarray(p, dtype=np.float64)
     except (TypeError, ValueError) as err:

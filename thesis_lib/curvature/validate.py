@@ -116,8 +116,8 @@ class Mesh(NamedTuple):
     areas: np.ndarray  #: ``(m,)`` hyperarea of each top simplex
     boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
-    tri: "TriangleGeometry | None" = None  #: per-corner data when n = 2, else None
-    pinched: "np.ndarray | None" = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
+    tri: TriangleGeometry | None = None  #: per-corner data when n = 2, else None
+    pinched: np.ndarray | None = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
 
     @property
     def n(self) -> int:
@@ -222,7 +222,7 @@ def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
 
 
 def validate_mesh(vertices, simplices) -> Mesh:
-    """Check a triangulated hypersurface and return it as a :class:`Mesh`.
+    """Check a triangulated hypersurface and return it as a ``Mesh``.
 
     Thesis: Definition 3.13 (a triangulated hypersurface M of dimension n in R^{n+1}).
 

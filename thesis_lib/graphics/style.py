@@ -6,7 +6,7 @@ import matplotlib as mpl
 
 __all__ = ["apply", "COLORS"]
 
-#: colours by role: data points, first method, second method, highlights, per homology dimension
+#: colours by role (data points, first method, second method, highlights, per homology dimension)
 COLORS = {
     "points": "#9a9a9a",
     "first": "#c0392b",

@@ -68,7 +68,8 @@ def _print_table(runs, table, what: str) -> int:
         detail = f"{r.error} (see {r.path / 'error.txt'})" if r.status == "failed" else f"no run folder {r.path}"
         _err(f"{r.status}: {r.params} -> {detail}")
     if bad:
-        _err(f"{what}: {sum(r.status == 'failed' for r in bad)} failed, {sum(r.status == 'missing' for r in bad)} missing")
+        failed, missing = sum(r.status == "failed" for r in bad), sum(r.status == "missing" for r in bad)
+        _err(f"{what}: {failed} failed, {missing} missing")
     return 1 if bad else 0
 
 
@@ -173,9 +174,20 @@ def _grid_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
 
 
+class UsageError(Exception):
+    """A command line that argparse cannot read (reported as ``error: ...``, exit status 2)."""
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that raises :class:`UsageError` instead of printing the usage and exiting."""
+
+    def error(self, message: str):
+        raise UsageError(f"{message} (see `{self.prog} --help`)")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The argument parser of ``thesis-lab``."""
-    parser = argparse.ArgumentParser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
+    parser = _Parser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
     parser.add_argument("--project", metavar="DIR",
                         help="the project folder (default: $THESIS_LAB_PROJECT, else the current folder or above)")
     sub = parser.add_subparsers(dest="command", required=True)
@@ -195,7 +207,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--executor", choices=["local", "dask"], default="local")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler (tcp://host:8786)")
     p.add_argument("--shard", metavar="I/N", help="run only the I-th of N slices of the grid (job arrays)")
-    p.add_argument("--retries", type=_int_from(0), default=2, help="Dask: retries of a run whose worker died (default 2)")
+    p.add_argument("--retries", type=_int_from(0), default=2,
+                   help="Dask: retries of a run whose worker died (default 2)")
     p.add_argument("--max-output-mb", type=_positive_float, default=64.0,
                    help="largest total size of one run's outputs sent back from a worker (default 64)")
     p.set_defaults(func=_cmd_sweep)
@@ -256,7 +269,13 @@ def _main(argv: list[str] | None) -> int:
     from .results import ResultsError
     from .sweep import ClusterError
 
-    args = build_parser().parse_args(argv)
+    try:
+        args = build_parser().parse_args(argv)
+    except UsageError as exc:
+        _err(f"error: {exc}")
+        return 2
+    except SystemExit as exc:  # --help printed the usage
+        return exc.code if isinstance(exc.code, int) else 0
     if args.project:
         os.environ[PROJECT_ENV] = os.path.abspath(args.project)
     try:

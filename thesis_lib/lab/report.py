@@ -118,12 +118,13 @@ def _parse(item: object, source: str) -> Claim:
         raise ClaimError(f"{where}: 'between' needs low and high")
     if "correct" in item and item["compare"] in ("between", "none"):
         raise ClaimError(f"{where}: 'correct' needs a comparison with a value (not {item['compare']!r})")
-    if item.get("provenance") is not None and item["provenance"] not in PROVENANCES:
-        raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item['provenance']!r}")
+    if item.get("provenance") not in PROVENANCES:
+        raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item.get('provenance')!r} (required)")
     if item.get("section", "thesis") not in SECTIONS:
         raise ClaimError(f"{where}: section must be one of {SECTIONS}, got {item['section']!r}")
-    if "link" in item and (not isinstance(item["link"], str) or not _LINK.fullmatch(item["link"]) or ".." in item["link"]):
-        raise ClaimError(f"{where}: link must be '<book page>#<label>' (like 'ch3-curvature#fig-3-5'), got {item['link']!r}")
+    link = item.get("link")
+    if "link" in item and (not isinstance(link, str) or not _LINK.fullmatch(link) or ".." in link):
+        raise ClaimError(f"{where}: link must be '<book page>#<label>' (like 'ch3-curvature#fig-3-5'), got {link!r}")
     for key in ("rtol", "atol", "low", "high"):
         if key in item and (isinstance(item[key], bool) or not isinstance(item[key], (int, float))):
             raise ClaimError(f"{where}: {key} must be a number, got {item[key]!r}")
@@ -314,7 +315,7 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
         "total": len(rows),
         "by_status": {s: sum(r["status"] == s for r in rows) for s in STATUSES},
         "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (not kv[0].isdigit(), kv[0].zfill(3)))),
-        "by_provenance": dict(Counter(r.get("provenance") or "unstated" for r in rows)),
+        "by_provenance": dict(Counter(r["provenance"] for r in rows)),
         "beyond": len(rows) - len(thesis),
     }
 
@@ -349,7 +350,8 @@ def _place(row: dict[str, object], link_suffix: str) -> str:
     return f"[{row['where']}]({page}{link_suffix}#{label})"
 
 
-def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False, link_suffix: str = ".html") -> str:
+def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False,
+             link_suffix: str = ".html") -> str:
     """The report as Markdown: the thesis's claims in its order, then new work beyond the thesis.
 
     ``with_summary`` puts :func:`summary_markdown` first; a claim's thesis place links to

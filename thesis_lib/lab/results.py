@@ -29,14 +29,14 @@ __all__ = [
 ]
 
 RESULTS_FILE = "results.json"
-#: wall-clock times vary from run to run: kept apart from the results, and not committed
+#: wall-clock times vary from run to run, so they are kept apart from the results and not committed
 TIMINGS_FILE = "timings.json"
 #: when set, a Recorder's stored default run is written under this folder instead (the test suite
 #: sets it, so that re-executing the notebooks never rewrites committed results that others read)
 DEFAULT_RUN_ENV = "THESIS_LAB_DEFAULT_RUN_DIR"
 
 
-#: significant digits kept for every real number written to results.json: enough for any claim,
+#: significant digits kept for every real number written to results.json, enough for any claim and
 #: few enough that a re-run on another CPU, BLAS or thread count writes the same bytes
 RESULT_DIGITS = 10
 

@@ -16,9 +16,10 @@ Steps (ABK98, §4–5):
    when turning about the edge through the outside.
 
 Steps 1–5 are those of every dimension (:mod:`.crust_geometry` and :mod:`.crust_trimming`, shared
-with the Crust of Chapter 5, :mod:`.crust_nd`); step 3 is decided without triangulating S ∪ P, by a one-dimensional linear program
-along each triangle's dual Voronoi edge.  The samples are scaled by a power of two to coordinates
-about 1 first (the Crust is scale-equivariant; Qhull crashes on coordinates near 1e150).
+with the Crust of Chapter 5, :mod:`.crust_nd`); step 3 is decided without triangulating S ∪ P, by a
+one-dimensional linear program along each triangle's dual Voronoi edge.  The samples are scaled by a
+power of two to coordinates about 1 first (the Crust is scale-equivariant; Qhull crashes on
+coordinates near 1e150).
 
 Degenerate samples.  Four co-circular samples (the isosceles-trapezoid quads of a parameter grid,
 such as the thesis's chosen points on the torus) make a flat Delaunay tetrahedron with no

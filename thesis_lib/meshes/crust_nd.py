@@ -1,6 +1,6 @@
 """The Crust for hypersurfaces of R^{n+1}, n = 1, 2, 3: the thesis's "natural next step" (Chapter 5).
 
-The steps of :mod:`.crust` (ABK98) carry over to any dimension d = n + 1 word for word, because a
+The steps of :func:`~thesis_lib.meshes.crust` (ABK98) carry over to any dimension d = n + 1 word for word, because a
 hypersurface has codimension one:
 
 1. Delaunay triangulation of the samples S (Qhull; in R⁴ with the joggle option ``QJ``: samples of
@@ -12,7 +12,7 @@ hypersurface has codimension one:
    dimension, so p⁺ - s estimates the normal line.
 3. Voronoi filtering: the n-simplices of Del(S ∪ P) with sample vertices.  An n-simplex of R^{n+1}
    is dual to a Voronoi *edge* (codimension one), so the one-dimensional linear program of
-   :mod:`.crust` decides it without triangulating S ∪ P, in any dimension.
+   :func:`~thesis_lib.meshes.crust` decides it without triangulating S ∪ P, in any dimension.
 4. Normal filter: the simplex's normal within θ of the pole vector at the vertex opposite its
    largest facet (for a triangle: the largest-angle vertex), within 3θ/2 at the others.
 5. Trimming.  An (n - 1)-face (a ridge) of an n-simplex in R^{n+1} has a two-dimensional normal
@@ -23,14 +23,15 @@ hypersurface has codimension one:
    through the outside, orienting coherently; a simplex that would put a third simplex on a ridge
    is left out.
 
-Steps 1–4 are :mod:`.crust_geometry`, step 5 :mod:`.crust_trimming`: the code the 3-D Crust runs.
+Steps 1–4 are ``thesis_lib.meshes.crust_geometry``, step 5 ``thesis_lib.meshes.crust_trimming``: the code the
+3-D Crust runs.
 The result is checked (:func:`manifold_report`): every ridge in two simplices, every link of an
 (n - 2)-face a single circle, every vertex link a sphere (n = 3: connected with Euler
 characteristic 2), coherent orientation.  :func:`crust_nd` refuses (``ReconstructionError``, with
 the report) rather than return something that is not a closed manifold when ``closed=True``.
 
-For n = 2 this is the computation of :func:`thesis_lib.meshes.crust` but for the joggled triangulation and
-the 3-D Crust's resolution of flat tetrahedra (a test compares them).
+For n = 2 this is the computation of :func:`~thesis_lib.meshes.crust` but for the joggled triangulation
+and the 3-D Crust's resolution of flat tetrahedra (a test compares them).
 Cocone (Amenta, Choi, Dey, Leekha 2002) would replace step 3 by a test of the Voronoi edge against
 each vertex's cocone; the Voronoi filter of the Crust already runs without triangulating S ∪ P, and
 on the 3-sphere and 3-catenoid it closes the surface (see ``experiments/hypersurface-crust``), so
@@ -182,7 +183,7 @@ def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None =
     return filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))[0]
 
 
-# ---------------------------------------------------------------------------- trimming kernels
+# ---------------------------------------------------------------------------- trimming
 def extract_manifold_nd(points, simplices, *, closed: bool = True) -> tuple[np.ndarray, int]:
     """Trimming step of the Crust in R^{n+1}: from candidate n-simplices to an oriented manifold.
 

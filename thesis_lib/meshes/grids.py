@@ -32,6 +32,10 @@ __all__ = [
     "catenoid_freudenthal",
 ]
 
+#: largest hypersurface dimension of the Freudenthal grids (each cube splits into n! simplices: the
+#: size check refuses far smaller grids; the bound keeps absurd n from overflowing before it)
+MAX_GRID_DIM = 32
+
 
 def _check_grid(shape, periodic) -> tuple[tuple[int, ...], tuple[bool, ...]]:
     """Validated grid shape and periodicity; refuses up front a triangulation too large to build."""
@@ -279,7 +283,7 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     radius = check_real(radius, "radius", positive=True)
-    n = check_int(n, "n", minimum=1)
+    n = check_int(n, "n", minimum=1, maximum=MAX_GRID_DIM)
     m = _steps(np.pi, epsilon, "ψ")
     if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
         raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
@@ -314,7 +318,7 @@ def catenoid_freudenthal(
         The boundary is v = v_low, v_high (and w = w_low, w_high).
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
-    n = check_int(n, "n", minimum=2)
+    n = check_int(n, "n", minimum=2, maximum=MAX_GRID_DIM)
     n_u = int(round(_steps(2 * np.pi, epsilon, "u"))) if n_u is None else check_int(n_u, "n_u", minimum=3)
     if n_u < 3:
         raise ValueError(f"the u axis needs at least 3 steps (epsilon <= 2π/3), got epsilon = {epsilon}")

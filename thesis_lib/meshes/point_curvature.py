@@ -29,9 +29,10 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
     ----------
     points : ``(N, n + 1)`` samples of a hypersurface (a curve in R², a surface in R³, a
         3-manifold in R⁴).
-    estimator : ``"crust"``: reconstruct with the Crust (:func:`crust` in R³, :func:`crust_nd`
-        otherwise) and apply the discrete formulas of §3.3 at its vertices; ``"knn"``: the
-        least-squares shape operator on the ``k`` nearest neighbours (no surface needed).
+    estimator : ``"crust"``: reconstruct with the Crust (:func:`~thesis_lib.meshes.crust` in R³,
+        :func:`~thesis_lib.meshes.crust_nd.crust_nd` otherwise) and apply the discrete formulas of
+        §3.3 at its vertices; ``"knn"``: the least-squares shape operator on the ``k`` nearest
+        neighbours (no surface needed).
     kind : ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
     k : neighbours of the ``"knn"`` estimator.
     area : vertex area of the ``"crust"`` estimator (``"mixed"`` needs n = 2; use ``"voronoi"`` or
@@ -52,7 +53,8 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
     if estimator == "knn":
         return knn_curvature(pts, kind=kind, k=k)
     if kind == "gaussian" and pts.shape[1] != 3:
-        raise ValueError(f"the Gaussian curvature (Definition 3.21) is for surfaces in R³, got points in R^{pts.shape[1]}")
+        raise ValueError("the Gaussian curvature (Definition 3.21) is for surfaces in R³, "
+                         f"got points in R^{pts.shape[1]}")
     if pts.shape[1] == 3:
         faces = crust(pts)
     else:

@@ -1,9 +1,9 @@
 """Smooth and discrete Morse theory (thesis chapter 4).
 
-Modules: :mod:`functions` (discrete Morse functions, §4.2.1–4.2.2), :mod:`vector_field` (discrete
-vector fields, V-paths, acyclicity, §4.2.3 and §4.2.6), :mod:`flow` (V, Φ, Φ^∞, §4.2.3–4.2.4),
-:mod:`morse_complex` (Morse boundary and homology, §4.2.5), :mod:`matching` (heuristic gradients,
-§4.2.6), :mod:`reduction` (Morse reduction of filtrations for persistence) and :mod:`smooth`
+Modules: ``functions`` (discrete Morse functions, §4.2.1–4.2.2), ``vector_field`` (discrete
+vector fields, V-paths, acyclicity, §4.2.3 and §4.2.6), ``flow`` (V, Φ, Φ^∞, §4.2.3–4.2.4),
+``morse_complex`` (Morse boundary and homology, §4.2.5), ``matching`` (heuristic gradients,
+§4.2.6), ``reduction`` (Morse reduction of filtrations for persistence) and ``smooth``
 (the smooth examples of §4.1).
 """
 

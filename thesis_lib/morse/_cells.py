@@ -1,8 +1,10 @@
-"""Internal: a simplicial complex with one global numbering of its cells, plus matchings on it.
+"""Internal: one global numbering of the cells of a complex, as a view of a :class:`Filtration`.
 
-Cells are numbered dimension by dimension (0-simplices first), each dimension in the lexicographic
-order of :func:`thesis_lib.simplicial.closure`.  Every algorithm of :mod:`thesis_lib.morse` works
-on these integer ids; tuples are only used at the public boundary.
+Every function of :mod:`thesis_lib.morse` takes a complex in any form the library accepts (a
+``Filtration``, with or without values, an iterable of simplices, per-dimension arrays) and turns it
+into a :class:`CellComplex` with :func:`cell_complex`.  Cells are numbered dimension by dimension
+(0-simplices first), each dimension in lexicographic order; the algorithms work on these integer
+ids, and tuples appear only at the public boundary.
 """
 
 from __future__ import annotations
@@ -12,23 +14,27 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ..simplicial import as_simplex_array, closure, facets, find_rows
+from ..filtration import Filtration, as_complex
+from ..simplicial import as_simplex_array, facets, find_rows
 
 Simplex = tuple[int, ...]
 
 
 class CellComplex:
-    """Closure of some simplices with global ids, facet lists and the signed boundary (Definition 2.18)."""
+    """A complex with global cell ids, facet lists and the signed boundary (Definition 2.18).
 
-    def __init__(self, simplices: Iterable[Sequence[int]] | list[np.ndarray], closed: bool = False):
-        if isinstance(simplices, CellComplex):  # pragma: no cover - defensive
-            simplices = simplices.arrays
-        if not isinstance(simplices, list) or not all(isinstance(a, np.ndarray) for a in simplices):
-            simplices = [tuple(s) for s in simplices]
-        if closed:  # per-dimension arrays of a complex, rows sorted, no duplicates: only reorder
-            self.arrays = [a[np.lexsort(a.T[::-1])] if a.shape[0] else a for a in simplices]
-        else:
-            self.arrays: list[np.ndarray] = closure(simplices)
+    Built from a :class:`~thesis_lib.filtration.Filtration` (closed and validated); ``values`` holds
+    the filtration value of every cell (global ids), or None for a complex without values.
+    """
+
+    def __init__(self, filtration: Filtration):
+        self.arrays: list[np.ndarray] = []
+        values = []
+        for s, v in zip(filtration.simplices, filtration.values):
+            order = np.lexsort(s.T[::-1]) if s.shape[0] else np.empty(0, dtype=np.int64)
+            self.arrays.append(np.asarray(s, dtype=np.int64)[order])
+            values.append(np.asarray(v, dtype=np.float64)[order])
+        self.values: np.ndarray | None = np.concatenate(values) if filtration.has_values else None
         self.counts = np.array([a.shape[0] for a in self.arrays], dtype=np.int64)
         self.offsets = np.concatenate([[0], np.cumsum(self.counts)]).astype(np.int64)
         self.n = int(self.offsets[-1])
@@ -40,13 +46,14 @@ class CellComplex:
             a = self.arrays[d]
             idx = find_rows(self.arrays[d - 1], facets(a).reshape(-1, d)).reshape(a.shape[0], d + 1)
             self.facet_ids.append(idx + self.offsets[d - 1])
-        rows = np.concatenate([f.ravel() for f in self.facet_ids[1:]]) if self.dimension else np.empty(0, np.int64)
-        cols = np.concatenate(
-            [np.repeat(np.arange(self.offsets[d], self.offsets[d + 1]), d + 1) for d in range(1, len(self.arrays))]
-        ) if self.dimension else np.empty(0, np.int64)
-        signs = np.concatenate(
-            [np.tile((-1) ** np.arange(d + 1, dtype=np.int64), self.counts[d]) for d in range(1, len(self.arrays))]
-        ) if self.dimension else np.empty(0, np.int64)
+        if self.dimension:
+            rows = np.concatenate([f.ravel() for f in self.facet_ids[1:]])
+            cols = np.concatenate(
+                [np.repeat(np.arange(self.offsets[d], self.offsets[d + 1]), d + 1) for d in range(1, len(self.arrays))])
+            signs = np.concatenate(
+                [np.tile((-1) ** np.arange(d + 1, dtype=np.int64), self.counts[d]) for d in range(1, len(self.arrays))])
+        else:
+            rows = cols = signs = np.empty(0, np.int64)
         #: global signed boundary matrix D (n x n), D[face, cell] = <∂ cell, face>
         self.D = sp.csc_matrix((signs, (rows, cols)), shape=(self.n, self.n), dtype=np.int64)
         self.D.sort_indices()
@@ -96,8 +103,9 @@ class CellComplex:
         return int(self.D[face, cell])
 
 
-def as_complex(simplices) -> CellComplex:
-    return simplices if isinstance(simplices, CellComplex) else CellComplex(simplices)
+def cell_complex(obj) -> CellComplex:
+    """Any complex the library accepts (:func:`thesis_lib.filtration.as_complex`) as a :class:`CellComplex`."""
+    return obj if isinstance(obj, CellComplex) else CellComplex(as_complex(obj))
 
 
 def partner_array(cx: CellComplex, pairs: Iterable[tuple[Sequence[int], Sequence[int]]]) -> np.ndarray:
@@ -105,13 +113,18 @@ def partner_array(cx: CellComplex, pairs: Iterable[tuple[Sequence[int], Sequence
 
     Raises ValueError when a pair is not (face, coface of codimension one) or a simplex is in two pairs.
     """
+    if isinstance(pairs, (str, bytes)) or not isinstance(pairs, Iterable):
+        raise ValueError(f"a discrete vector field is an iterable of pairs (sigma, tau), got {pairs!r}")
     pairs = list(pairs)
     partner = np.full(cx.n, -1, dtype=np.int64)
     if not pairs:
         return partner
     for p in pairs:
-        if len(p) != 2:
+        if isinstance(p, (str, bytes)) or not isinstance(p, Sequence) or len(p) != 2:
             raise ValueError(f"a pair of a discrete vector field has two simplices, got {p!r}")
+        for s in p:
+            if isinstance(s, (str, bytes)) or not isinstance(s, (Sequence, np.ndarray)):
+                raise ValueError(f"a pair of a discrete vector field holds two simplices, got {p!r}")
     lows = cx.ids([tuple(p[0]) for p in pairs], "paired simplex")
     highs = cx.ids([tuple(p[1]) for p in pairs], "paired simplex")
     for (s, t), a, b in zip(pairs, lows, highs):

@@ -1,4 +1,4 @@
-"""Internal numba kernels: topological order, greedy matchings and gradient-path propagation."""
+"""Internal numba kernels: topological order, greedy matchings (and their driver) and gradient-path propagation."""
 
 from __future__ import annotations
 
@@ -167,3 +167,19 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
     return (
         np.array(out_r, dtype=np.int64), np.array(out_c, dtype=np.int64), np.array(out_v, dtype=np.int64), overflow
     )
+
+
+def greedy_partner(cx, method: str, vals: np.ndarray | None = None, seed: int | None = None) -> np.ndarray:
+    """Partners of the greedy ``"coreduction"`` or ``"collapse"`` matching on a CellComplex (see
+    :func:`greedy_matching`), restricted to equal ``vals``; ``seed`` breaks ties at random."""
+    faces = cx.D  # CSC: column g lists the faces of g
+    cofaces = cx.cofaces  # CSR: row g lists the cofaces of g
+    fptr, fidx = faces.indptr.astype(np.int64), faces.indices.astype(np.int64)
+    cptr, cidx = cofaces.indptr.astype(np.int64), cofaces.indices.astype(np.int64)
+    tie = np.arange(cx.n) if seed is None else np.random.default_rng(seed).permutation(cx.n)
+    v = np.zeros(cx.n) if vals is None else np.asarray(vals, dtype=np.float64)
+    if method == "coreduction":
+        order = np.lexsort((tie, cx.dim_of)).astype(np.int64)  # lowest dimension first
+        return greedy_matching(cx.n, fptr, fidx, cptr, cidx, v, order)
+    order = np.lexsort((tie, -cx.dim_of)).astype(np.int64)  # top dimension first
+    return greedy_matching(cx.n, cptr, cidx, fptr, fidx, v, order)

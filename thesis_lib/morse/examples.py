@@ -15,7 +15,7 @@ RP2_FACETS: list[Simplex] = [
 
 
 def rp2_gradient_field() -> list[tuple[Simplex, Simplex]]:
-    """An acyclic gradient field on :data:`RP2_FACETS` with the critical cells of Example 4.43.
+    """An acyclic gradient field on ``RP2_FACETS`` with the critical cells of Example 4.43.
 
     Thesis: Example 4.43 / Figure 4.6 (critical a, σ = ac and one triangle τ; two gradient paths
     σ → a of multiplicities ±1, two paths τ → σ of multiplicity +1, so ∂̃τ = 2σ and ∂̃σ = 0).
@@ -32,7 +32,7 @@ def rp2_gradient_field() -> list[tuple[Simplex, Simplex]]:
 
 
 def rp2_chart() -> dict[Simplex, list[tuple[float, float]]]:
-    """Plane coordinates of the corners of every triangle of :data:`RP2_FACETS` in the disc picture
+    """Plane coordinates of the corners of every triangle of ``RP2_FACETS`` in the disc picture
     of RP² (Figure 2.7): inner triangle d, e, f; outer hexagon a, b, c, a, b, c with antipodal
     points identified.  Maps each triangle (sorted vertices) to the positions of its vertices.
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.sparse as sp
 
-from ._cells import Simplex, as_complex, partner_array
+from ._cells import Simplex, cell_complex, partner_array
 from .vector_field import Pairs
 
 __all__ = ["cells", "boundary_operator", "gradient_matrix", "gradient_flow", "stabilised_flow", "is_flow_invariant"]
@@ -21,7 +21,7 @@ def cells(simplices) -> list[Simplex]:
 
     Thesis: §4.2.3 (C_k is the free Abelian group on the k-simplices, cells orthonormal).
     """
-    return as_complex(simplices).simplices()
+    return cell_complex(simplices).simplices()
 
 
 def boundary_operator(simplices) -> sp.csc_matrix:
@@ -29,7 +29,7 @@ def boundary_operator(simplices) -> sp.csc_matrix:
 
     Thesis: Definition 2.18 (∂σ = Σ <∂σ, γ> γ, §4.2.3).
     """
-    return as_complex(simplices).D.copy()
+    return cell_complex(simplices).D.copy()
 
 
 def gradient_matrix(simplices, pairs: Pairs) -> sp.csc_matrix:
@@ -37,7 +37,7 @@ def gradient_matrix(simplices, pairs: Pairs) -> sp.csc_matrix:
 
     Thesis: Definition 4.30 (and Definition 4.33 for the pairs).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
     low = np.flatnonzero(partner > np.arange(cx.n))
     high = partner[low]
@@ -52,7 +52,7 @@ def gradient_flow(simplices, pairs: Pairs) -> sp.csc_matrix:
 
     Thesis: Definition 4.31.
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     v = gradient_matrix(cx, pairs)
     phi = sp.identity(cx.n, dtype=np.int64, format="csc") + cx.D @ v + v @ cx.D
     phi = sp.csc_matrix(phi, dtype=np.int64)
@@ -73,7 +73,7 @@ def stabilised_flow(simplices, pairs: Pairs, max_iter: int | None = None) -> tup
     Raises ValueError if Φ has not stabilised after ``max_iter`` (default: number of cells + 1)
     steps, which happens for a vector field with a closed V-path.
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     phi = gradient_flow(cx, pairs)
     limit = cx.n + 1 if max_iter is None else int(max_iter)
     power = sp.identity(cx.n, dtype=np.int64, format="csc")
@@ -92,7 +92,7 @@ def is_flow_invariant(simplices, pairs: Pairs, chain) -> bool:
 
     Thesis: §4.2.4 (Φ-invariant chains form the Morse complex C^Φ).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     c = np.asarray(chain)
     if c.shape != (cx.n,):
         raise ValueError(f"a chain needs {cx.n} coefficients, got shape {c.shape}")

@@ -7,9 +7,14 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from ._cells import CellComplex, Simplex, as_complex, partner_array
+from .._validate import vertex_label
+from ..filtration import Filtration
+from ._cells import CellComplex, Simplex, cell_complex, partner_array
+from ._gradient import acyclic_ranks, hasse_edges
 from ._kernels import topological_rank
-from .vector_field import _cyclic_field_error, _hasse_edges, _ranks
+
+#: a discrete Morse function: simplex -> value over a whole complex, or a Filtration with values
+Values = Mapping[Sequence[int], float] | Filtration
 
 __all__ = [
     "is_discrete_morse_function",
@@ -21,15 +26,25 @@ __all__ = [
 ]
 
 
-def _prepare(values: Mapping[Sequence[int], float]) -> tuple[CellComplex, np.ndarray]:
+def _prepare(values) -> tuple[CellComplex, np.ndarray]:
+    """The complex and the function f on its cells (global ids) from ``values``: a mapping
+    simplex -> value over every simplex of a complex, or a :class:`Filtration` with values."""
+    if isinstance(values, Filtration):
+        if not values.has_values:
+            raise ValueError("a discrete Morse function needs values: this Filtration has none")
+        cx = CellComplex(values)
+        return cx, cx.values
     if not isinstance(values, Mapping) or not values:
-        raise ValueError("values must be a non-empty mapping simplex -> float")
+        raise ValueError("values must be a non-empty mapping simplex -> float, or a Filtration with values")
     keys: list[Simplex] = []
     seen: set[Simplex] = set()
     vals: list[float] = []
     for s, v in values.items():
-        t = tuple(sorted(int(x) for x in s))
-        if len(set(t)) != len(t) or not t:
+        try:
+            t = tuple(sorted(vertex_label(x) for x in s))
+        except TypeError:
+            raise ValueError(f"{s!r} is not a simplex (a tuple of vertex labels)") from None
+        if len(set(t)) != len(t) or not t or t[0] < 0:
             raise ValueError(f"{s!r} is not a simplex")
         if t in seen:
             raise ValueError(f"simplex {t} is given twice")
@@ -42,7 +57,7 @@ def _prepare(values: Mapping[Sequence[int], float]) -> tuple[CellComplex, np.nda
             raise ValueError(f"simplex {t} has a non-finite value {v!r}")
         keys.append(t)
         vals.append(fv)
-    cx = CellComplex(keys)
+    cx = cell_complex(keys)
     if cx.n != len(keys):
         missing = next(s for s in cx.simplices() if s not in seen)
         raise ValueError(f"face {missing} has no value: values must cover every simplex of the complex")
@@ -60,65 +75,74 @@ def _violations(cx: CellComplex, f: np.ndarray):
     return face[bad], cell[bad], n_up, n_down
 
 
-def check_discrete_morse_function(values: Mapping[Sequence[int], float]) -> None:
+def _checked(values) -> tuple[CellComplex, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(complex, f, the violating (face, coface) pairs, counts per cell); ValueError naming the
+    simplex and the condition of Definition 4.20 that fails."""
+    cx, f = _prepare(values)
+    face, cell, n_up, n_down = _violations(cx, f)
+    for counts, which, what in ((n_up, 1, "cofaces have a value <="), (n_down, 2, "faces have a value >=")):
+        if (counts > 1).any():
+            g = int(np.argmax(counts > 1))
+            raise ValueError(f"simplex {cx.simplex(g)} breaks condition {which} of Definition 4.20: "
+                             f"{int(counts[g])} {what} f{cx.simplex(g)} = {f[g]}")
+    return cx, face, cell, n_up, n_down
+
+
+def check_discrete_morse_function(values: Values) -> None:
     """Raise ValueError naming the simplex and the condition of Definition 4.20 that fails.
 
     Thesis: Definition 4.20 (#{τ > σ : f(τ) ≤ f(σ)} ≤ 1 and #{γ < σ : f(γ) ≥ f(σ)} ≤ 1).
 
     Also raises when ``values`` is not a finite value for every simplex of a complex.
     """
-    cx, f = _prepare(values)
-    _, _, n_up, n_down = _violations(cx, f)
-    for g in range(cx.n):
-        if n_up[g] > 1:
-            raise ValueError(
-                f"simplex {cx.simplex(g)} breaks condition 1 of Definition 4.20: "
-                f"{int(n_up[g])} cofaces have a value <= f{cx.simplex(g)} = {f[g]}"
-            )
-        if n_down[g] > 1:
-            raise ValueError(
-                f"simplex {cx.simplex(g)} breaks condition 2 of Definition 4.20: "
-                f"{int(n_down[g])} faces have a value >= f{cx.simplex(g)} = {f[g]}"
-            )
+    _checked(values)
 
 
-def is_discrete_morse_function(values: Mapping[Sequence[int], float]) -> bool:
-    """True when ``values`` (simplex → float over every simplex of a complex) is a discrete Morse function.
+def is_discrete_morse_function(values: Values) -> bool:
+    """True when ``values`` is a discrete Morse function.
 
     Thesis: Definition 4.20.
 
-    Malformed input (missing faces, NaN, non-simplices) raises ValueError rather than returning False.
+    Parameters
+    ----------
+    values : a mapping simplex -> value over every simplex of a complex, or a
+        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
+
+    Returns
+    -------
+    bool.  Malformed input (missing faces, NaN, non-simplices, non-integer vertex labels) raises
+    ValueError rather than returning False.
     """
     cx, f = _prepare(values)
     _, _, n_up, n_down = _violations(cx, f)
     return bool((n_up <= 1).all() and (n_down <= 1).all())
 
 
-def critical_simplices(values: Mapping[Sequence[int], float]) -> list[Simplex]:
+def critical_simplices(values: Values) -> list[Simplex]:
     """The critical simplices of a discrete Morse function, by dimension then lexicographically.
 
     Thesis: Definition 4.21 (no coface with f(τ) ≤ f(σ) and no face with f(γ) ≥ f(σ)).
+
+    ``values`` as in :func:`is_discrete_morse_function`; ValueError if it is not a discrete Morse function.
     """
-    check_discrete_morse_function(values)
-    cx, f = _prepare(values)
-    _, _, n_up, n_down = _violations(cx, f)
+    cx, _, _, n_up, n_down = _checked(values)
     return [cx.simplex(int(g)) for g in np.flatnonzero((n_up == 0) & (n_down == 0))]
 
 
-def gradient_pairs(values: Mapping[Sequence[int], float]) -> list[tuple[Simplex, Simplex]]:
+def gradient_pairs(values: Values) -> list[tuple[Simplex, Simplex]]:
     """The pairs σ < τ of the gradient vector field V: τ > σ of codimension one with f(τ) ≤ f(σ).
 
     Thesis: Definition 4.30 (V(σ) = -<∂τ, σ>τ when f(τ) ≤ f(σ)); each simplex is in at most one
     pair by Lemma 4.22, so the pairs form a discrete vector field (Definition 4.33).
+
+    ``values`` as in :func:`is_discrete_morse_function`; ValueError if it is not a discrete Morse function.
     """
-    check_discrete_morse_function(values)
-    cx, f = _prepare(values)
-    face, cell, _, _ = _violations(cx, f)
+    cx, face, cell, _, _ = _checked(values)
     order = np.lexsort((cell, face))
     return [(cx.simplex(int(a)), cx.simplex(int(b))) for a, b in zip(face[order], cell[order])]
 
 
-def sublevel_complex(values: Mapping[Sequence[int], float], a: float) -> list[Simplex]:
+def sublevel_complex(values: Values, a: float) -> list[Simplex]:
     """K^a: the simplices with value ≤ a together with all their faces.
 
     Thesis: §4.2.2, K^a = ∪_{f(σ) ≤ a} ∪_{τ ≤ σ} τ (Theorems 4.25–4.26).
@@ -147,14 +171,12 @@ def discrete_morse_function(simplices, pairs) -> dict[Simplex, float]:
 
     Values are the integers 1..n.  Raises ValueError if the field has a closed V-path.
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
-    src, dst = _hasse_edges(cx, partner)
+    acyclic_ranks(cx, partner)  # names a closed V-path if there is one
+    src, dst = hasse_edges(cx, partner)
     order = np.argsort(src, kind="stable")
     ptr = np.concatenate([[0], np.cumsum(np.bincount(src, minlength=cx.n))]).astype(np.int64)
     rank = topological_rank(cx.n, ptr, dst[order])
-    if (rank < 0).any():
-        vrank, g = _ranks(cx, partner)
-        raise _cyclic_field_error(cx, partner, vrank, g)
     f = cx.n - rank
     return {cx.simplex(g): float(f[g]) for g in range(cx.n)}

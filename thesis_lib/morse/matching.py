@@ -12,24 +12,10 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ._cells import CellComplex, Simplex, as_complex, pairs_from_partner, partner_array
-from ._kernels import greedy_matching
+from ._cells import CellComplex, Simplex, cell_complex, pairs_from_partner, partner_array
+from ._kernels import greedy_partner
 
 __all__ = ["morse_matching", "critical_counts"]
-
-
-def _greedy_partner(cx: CellComplex, method: str, vals: np.ndarray | None = None, seed: int | None = None) -> np.ndarray:
-    faces = cx.D  # CSC: column g lists the faces of g
-    cofaces = cx.cofaces  # CSR: row g lists the cofaces of g
-    fptr, fidx = faces.indptr.astype(np.int64), faces.indices.astype(np.int64)
-    cptr, cidx = cofaces.indptr.astype(np.int64), cofaces.indices.astype(np.int64)
-    tie = np.arange(cx.n) if seed is None else np.random.default_rng(seed).permutation(cx.n)
-    v = np.zeros(cx.n) if vals is None else np.asarray(vals, dtype=np.float64)
-    if method == "coreduction":
-        order = np.lexsort((tie, cx.dim_of)).astype(np.int64)  # lowest dimension first
-        return greedy_matching(cx.n, fptr, fidx, cptr, cidx, v, order)
-    order = np.lexsort((tie, -cx.dim_of)).astype(np.int64)  # top dimension first
-    return greedy_matching(cx.n, cptr, cidx, fptr, fidx, v, order)
 
 
 def _vertex_ranks(cx: CellComplex, values) -> np.ndarray:
@@ -76,6 +62,12 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
     def unpaired_faces(g: int, v: int) -> list[int]:
         return [h for h in lower_faces(g, v) if not done[h]]
 
+    def push_ones(cells: Sequence[int], v: int, pq_one: list[tuple[tuple[int, ...], int]]) -> None:
+        for a in cells:
+            for b in lower_cofaces(a, v):
+                if not done[b] and len(unpaired_faces(b, v)) == 1:
+                    heapq.heappush(pq_one, (keys[b], b))
+
     for v in range(cx.counts[0]):
         star = members[v]
         if len(star) == 1:
@@ -88,14 +80,7 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
         pq_zero = [(keys[g], g) for g in edges if g != delta]
         heapq.heapify(pq_zero)
         pq_one: list[tuple[tuple[int, ...], int]] = []
-
-        def push_ones(cells: Sequence[int]) -> None:
-            for a in cells:
-                for b in lower_cofaces(a, v):
-                    if not done[b] and len(unpaired_faces(b, v)) == 1:
-                        heapq.heappush(pq_one, (keys[b], b))
-
-        push_ones([delta])
+        push_ones([delta], v, pq_one)
         while pq_one or pq_zero:
             while pq_one:
                 _, a = heapq.heappop(pq_one)
@@ -108,13 +93,13 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
                     b = free[0]
                     partner[a], partner[b] = b, a
                     done[a] = done[b] = True
-                    push_ones([a, b])
+                    push_ones([a, b], v, pq_one)
             while pq_zero and done[pq_zero[0][1]]:
                 heapq.heappop(pq_zero)
             if pq_zero:
                 _, c = heapq.heappop(pq_zero)
                 done[c] = True  # critical
-                push_ones([c])
+                push_ones([c], v, pq_one)
     return partner
 
 
@@ -144,7 +129,7 @@ def morse_matching(
     """
     if method not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     if method == "lower-star":
         if values is None:
             raise ValueError("method 'lower-star' needs vertex values")
@@ -152,7 +137,7 @@ def morse_matching(
     else:
         if values is not None:
             raise ValueError(f"method {method!r} takes no values")
-        partner = _greedy_partner(cx, method, seed=seed)
+        partner = greedy_partner(cx, method, seed=seed)
     return pairs_from_partner(cx, partner)
 
 
@@ -161,6 +146,6 @@ def critical_counts(simplices, pairs) -> list[int]:
 
     Thesis: Theorem 4.27 (weak discrete Morse inequalities β_k ≤ Crit_k^d).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
     return np.bincount(cx.dim_of[partner < 0], minlength=cx.dimension + 1).astype(int).tolist()

@@ -9,44 +9,11 @@ import scipy.sparse as sp
 
 from .._validate import MAX_EXACT_PRIME, check_coefficients
 from ..smith import rank_mod_p, smith_normal_form
-from ._cells import CellComplex, Simplex, as_complex, partner_array
-from ._kernels import morse_columns
-from .vector_field import Pairs, _ranks, _cyclic_field_error
+from ._cells import Simplex, cell_complex, partner_array
+from ._gradient import morse_boundary_ids
+from .vector_field import Pairs
 
 __all__ = ["morse_boundary", "morse_homology", "chain_complex_homology"]
-
-
-def _morse_boundary_ids(cx: CellComplex, partner: np.ndarray, coefficients: int = 0):
-    """Critical global ids per dimension and Morse boundary matrices (internal, on global ids)."""
-    rank, g = _ranks(cx, partner)
-    if not (rank >= 0).all():
-        raise _cyclic_field_error(cx, partner, rank, g)
-    is_crit = partner < 0
-    crit = np.flatnonzero(is_crit)
-    sources = crit[cx.dim_of[crit] >= 1]
-    rows, cols, vals, overflow = morse_columns(
-        cx.n, cx.D.indptr.astype(np.int64), cx.D.indices.astype(np.int64), cx.D.data.astype(np.int64),
-        partner, rank, is_crit, sources, int(coefficients),
-    )
-    if overflow:
-        raise ValueError("Morse boundary coefficients exceed int64 over Z; use a prime p (coefficients=p)")
-    local = np.full(cx.n, -1, dtype=np.int64)
-    crit_by_dim = []
-    for d in range(cx.dimension + 1):
-        ids = crit[cx.dim_of[crit] == d]
-        local[ids] = np.arange(ids.size)
-        crit_by_dim.append(ids)
-    mats = [sp.csc_matrix((0, crit_by_dim[0].size), dtype=np.int64)]
-    cdim = cx.dim_of[cols] if cols.size else cols
-    for d in range(1, cx.dimension + 1):
-        m = cdim == d
-        mat = sp.csc_matrix(
-            (vals[m], (local[rows[m]], local[cols[m]])),
-            shape=(crit_by_dim[d - 1].size, crit_by_dim[d].size), dtype=np.int64,
-        )
-        mat.sort_indices()
-        mats.append(mat)
-    return crit_by_dim, mats
 
 
 def morse_boundary(simplices, pairs: Pairs, coefficients: int = 0) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
@@ -70,10 +37,45 @@ def morse_boundary(simplices, pairs: Pairs, coefficients: int = 0) -> tuple[list
     int64 (sums of ±1 over gradient paths).  Raises ValueError for a cyclic field.
     """
     p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
-    crit, mats = _morse_boundary_ids(cx, partner, p)
+    crit, mats = morse_boundary_ids(cx, partner, p)
     return [[cx.simplex(int(g)) for g in ids] for ids in crit], mats
+
+
+def _integer_matrix(m, k: int) -> sp.csc_matrix:
+    """Boundary ``k`` as an int64 CSC matrix; ValueError for entries that are not integers or exceed int64."""
+    mat = sp.csc_matrix(m)
+    data = mat.data
+    if data.dtype == object or not (np.issubdtype(data.dtype, np.number) or data.dtype == bool):
+        raise ValueError(f"boundary {k} must hold integers in int64, got dtype {data.dtype}")
+    if data.size and not np.issubdtype(data.dtype, np.integer) and data.dtype != bool:
+        if not np.all(np.isfinite(data)) or not np.all(data == np.round(data)) or np.abs(data).max() >= 2**53:
+            raise ValueError(f"boundary {k} has entries that are not integers")
+    if data.size and data.dtype == np.uint64 and data.max() >= 2**63:
+        raise ValueError(f"boundary {k} has entries beyond int64")
+    return mat.astype(np.int64)
+
+
+def _first_nonzero_of_product(a: sp.csc_matrix, b: sp.csc_matrix, p: int) -> tuple[int, int] | None:
+    """An entry (i, j) of a @ b that is nonzero (mod p if p), exactly; None if the product is zero."""
+    big_a = int(np.abs(a.data).max()) if a.nnz else 0
+    big_b = int(np.abs(b.data).max()) if b.nnz else 0
+    if big_a * big_b * max(1, a.shape[1]) < 2**62:  # int64 is exact
+        prod = (a @ b).tocoo()
+        vals = prod.data % p if p else prod.data
+        hit = np.flatnonzero(vals)
+        return (int(prod.row[hit[0]]), int(prod.col[hit[0]])) if hit.size else None
+    acc: dict[tuple[int, int], int] = {}
+    ca, rb = a.tocsc(), b.tocsr()
+    for k in range(a.shape[1]):  # exact Python integers, one inner index at a time
+        for i, x in zip(ca.indices[ca.indptr[k]:ca.indptr[k + 1]], ca.data[ca.indptr[k]:ca.indptr[k + 1]]):
+            for j, y in zip(rb.indices[rb.indptr[k]:rb.indptr[k + 1]], rb.data[rb.indptr[k]:rb.indptr[k + 1]]):
+                acc[(int(i), int(j))] = acc.get((int(i), int(j)), 0) + int(x) * int(y)
+    for key, v in acc.items():
+        if (v % p if p else v):
+            return key
+    return None
 
 
 def chain_complex_homology(boundaries: Sequence, coefficients: int = 0) -> list[tuple[int, list[int]]]:
@@ -85,13 +87,30 @@ def chain_complex_homology(boundaries: Sequence, coefficients: int = 0) -> list[
     ``(betti, torsion)`` like :func:`thesis_lib.homology.homology`.
     """
     p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
-    mats = [sp.csc_matrix(b) if not sp.issparse(b) else b for b in boundaries]
+    if isinstance(boundaries, (str, bytes)) or not isinstance(boundaries, Sequence):
+        raise ValueError("boundaries must be a sequence of matrices, boundaries[k]: C_k -> C_{k-1}")
+    mats = []
+    for k, b in enumerate(boundaries):
+        try:
+            m = b if sp.issparse(b) else np.asarray(b)
+        except (TypeError, ValueError) as err:
+            raise ValueError(f"boundary {k} is not a matrix: {err}") from None
+        if m.ndim != 2:
+            raise ValueError(f"boundary {k} must be a 2-D matrix, got shape {m.shape}")
+        mats.append(m)
     if not mats:
         raise ValueError("the chain complex is empty")
     sizes = [m.shape[1] for m in mats]
     for k in range(1, len(mats)):
         if mats[k].shape[0] != sizes[k - 1]:
             raise ValueError(f"boundary {k} has {mats[k].shape[0]} rows but C_{k - 1} has {sizes[k - 1]} cells")
+    mats = [_integer_matrix(m, k) for k, m in enumerate(mats)]
+    for k in range(2, len(mats)):  # a chain complex: ∂_{k-1} ∂_k = 0 (exactly over Z, mod p over Z/p)
+        hit = _first_nonzero_of_product(mats[k - 1], mats[k], p)
+        if hit is not None:
+            i, j = hit
+            raise ValueError(f"not a chain complex: ∂_{k - 1} ∂_{k} != 0 (entry ({i}, {j})); "
+                             "homology needs ∂∂ = 0 (§2.2.1)")
     ranks, divisors = [0], [[]]
     for k in range(1, len(mats)):
         if p:

@@ -6,7 +6,7 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-from ._cells import as_complex, partner_array
+from ._cells import cell_complex, partner_array
 
 __all__ = ["draw_gradient_field", "draw_hasse_diagram", "spectral_layout"]
 
@@ -16,7 +16,7 @@ def spectral_layout(simplices) -> dict[int, tuple[float, float]]:
 
     Thesis: none (a drawing aid for Figures 4.4/4.6 when a complex has no natural picture).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     verts = cx.arrays[0][:, 0]
     n = verts.size
     lap = np.zeros((n, n))
@@ -47,7 +47,7 @@ def draw_gradient_field(
     Give either ``positions`` (vertex → (x, y)) or ``chart`` (triangle → corner positions, for
     complexes such as RP² drawn with identified boundary, see :func:`~thesis_lib.morse.examples.rp2_chart`).
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     if cx.dimension > 2:
         raise ValueError("only complexes of dimension ≤ 2 can be drawn")
     partner = partner_array(cx, pairs)
@@ -109,7 +109,7 @@ def draw_hasse_diagram(ax, simplices, pairs=(), names: Mapping[tuple[int, ...], 
 
     Thesis: §4.2.6, Figures 4.7–4.8 and Theorem 4.44.
     """
-    cx = as_complex(simplices)
+    cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
     pos = {}
     for d in range(cx.dimension + 1):

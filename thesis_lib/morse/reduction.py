@@ -13,23 +13,20 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
+from .._validate import InvalidTypeError, resolve_coefficients
 from ..filtration import Filtration, as_complex
-from .._validate import resolve_coefficients
 from ..persistence.chains import chain_persistence
-from ..simplicial import find_rows
 from ._cells import CellComplex, partner_array
-from .matching import _greedy_partner
-from .morse_complex import _morse_boundary_ids
+from ._gradient import morse_boundary_ids
+from ._kernels import greedy_partner
 
-__all__ = ["MorseReduction", "lower_star_filtration", "filtration_matching", "morse_reduce", "reduced_persistence", "chain_persistence"]
+__all__ = ["MorseReduction", "lower_star_filtration", "filtration_matching", "morse_reduce", "reduced_persistence",
+           "chain_persistence"]
 
 
 def _cells_and_values(filt: Filtration) -> tuple[CellComplex, np.ndarray]:
-    cx = CellComplex([np.asarray(s, dtype=np.int64) for s in filt.simplices], closed=True)
-    vals = np.empty(cx.n)
-    for d, (s, v) in enumerate(zip(filt.simplices, filt.values)):
-        vals[cx.offsets[d] + find_rows(cx.arrays[d], s)] = v
-    return cx, vals
+    cx = CellComplex(filt)
+    return cx, (cx.values if cx.values is not None else np.zeros(cx.n))
 
 
 def lower_star_filtration(simplices, vertex_values) -> Filtration:
@@ -37,18 +34,18 @@ def lower_star_filtration(simplices, vertex_values) -> Filtration:
 
     Thesis: §4.2.6 context (discrete Morse functions from vertex values; ProcessLowerStars).
 
-    Raises ValueError for NaN/inf values or values not covering every vertex.
+    ``simplices``: any complex (a ``Filtration``, whose values are replaced, or simplices; all faces
+    are added).  Raises ValueError for NaN/inf values or values not covering every vertex.
     """
-    from ..simplicial import closure
-
-    arrays = closure([tuple(s) for s in simplices])
+    arrays = as_complex(simplices).simplices
     vals = np.asarray(vertex_values, dtype=np.float64)
     if vals.ndim != 1:
         raise ValueError(f"vertex values must be a 1-D array, got shape {vals.shape}")
     if not np.all(np.isfinite(vals)):
         raise ValueError("vertex values must be finite (no NaN or inf)")
     if int(arrays[0].max()) >= vals.shape[0]:
-        raise ValueError(f"vertex values cover {vals.shape[0]} vertices but the complex uses vertex {int(arrays[0].max())}")
+        raise ValueError(f"vertex values cover {vals.shape[0]} vertices but the complex uses vertex "
+                         f"{int(arrays[0].max())}")
     return Filtration(arrays, [vals[a].max(axis=1) for a in arrays], validate=False)
 
 
@@ -63,7 +60,7 @@ def filtration_matching(filtration) -> list[tuple[tuple[int, ...], tuple[int, ..
     """
     filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
-    partner = _greedy_partner(cx, "coreduction", vals=vals)
+    partner = greedy_partner(cx, "coreduction", vals=vals)
     low = np.flatnonzero(partner > np.arange(cx.n))
     return [(cx.simplex(int(a)), cx.simplex(int(partner[a]))) for a in low]
 
@@ -79,16 +76,21 @@ class MorseReduction:
     critical : ``critical[d]`` the ``(m_d, d + 1)`` array of critical d-simplices.
     values : ``values[d]`` their filtration values.
     boundaries : ``boundaries[d]`` the Morse boundary ∂̃_d (sparse int64, rows critical (d-1)-cells,
-        columns critical d-cells), reduced mod p when ``p > 0``.
+        columns critical d-cells), reduced mod p when ``coefficients`` is a prime p.
     n_cells : simplices of the original filtration.
-    p : coefficients of the boundaries (0 = Z).
+    coefficients : coefficients of the boundaries (0 = Z, a prime p = Z/p).
     """
 
     critical: list[np.ndarray]
     values: list[np.ndarray]
     boundaries: list[sp.csc_matrix]
     n_cells: int
-    p: int
+    coefficients: int
+
+    @property
+    def p(self) -> int:
+        """Deprecated name of :attr:`coefficients`."""
+        return self.coefficients
 
     @property
     def n_critical(self) -> int:
@@ -118,7 +120,7 @@ def morse_reduce(filtration, coefficients: int | None = None, pairs=None, *, p: 
     filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
     if pairs is None:
-        partner = _greedy_partner(cx, "coreduction", vals=vals)
+        partner = greedy_partner(cx, "coreduction", vals=vals)
     else:
         partner = partner_array(cx, pairs)
         paired = np.flatnonzero(partner >= 0)
@@ -129,18 +131,24 @@ def morse_reduce(filtration, coefficients: int | None = None, pairs=None, *, p: 
                 f"pair {cx.simplex(g)} - {cx.simplex(int(partner[g]))} joins different filtration values "
                 f"{vals[g]} and {vals[partner[g]]}: the reduced complex would change the barcode"
             )
-    crit, mats = _morse_boundary_ids(cx, partner, p)
+    crit, mats = morse_boundary_ids(cx, partner, p)
     critical = [cx.arrays[d][ids - cx.offsets[d]] for d, ids in enumerate(crit)]
     values = [vals[ids] for ids in crit]
     return MorseReduction(critical, values, mats, cx.n, p)
 
 
-def reduced_persistence(reduction: MorseReduction, p: int | None = None):
+def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None, *, p: int | None = None):
     """Barcode of the reduced (Morse) filtered complex; equals the filtration's barcode.
 
     Thesis: Theorems 4.39 and 4.41 applied to every sublevel complex; Algorithm 2 for the reduction.
+
+    ``coefficients``: the prime field of the persistence (default: the reduction's own, or 2 for a
+    reduction over Z); ``p=`` is its deprecated alias.
     """
-    p = reduction.p if p is None else p
-    if reduction.p not in (0, p):
-        raise ValueError(f"the reduction was computed mod {reduction.p}, cannot take persistence mod {p}")
+    if not isinstance(reduction, MorseReduction):
+        raise InvalidTypeError(f"expected a MorseReduction (from morse_reduce), got {type(reduction).__name__}")
+    default = reduction.coefficients or 2
+    p = resolve_coefficients(coefficients, p, default=default, field=True)
+    if reduction.coefficients not in (0, p):
+        raise ValueError(f"the reduction was computed mod {reduction.coefficients}, cannot take persistence mod {p}")
     return chain_persistence(reduction.values, reduction.boundaries, p)

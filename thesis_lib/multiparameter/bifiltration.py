@@ -86,7 +86,7 @@ class Bifiltration:
         return np.stack([allg.min(axis=0), allg.max(axis=0)])
 
     def facet_indices(self, d: int) -> np.ndarray:
-        """As :meth:`Filtration.facet_indices`."""
+        """As :meth:`thesis_lib.filtration.Filtration.facet_indices`."""
         return self._eps.facet_indices(d)
 
     def filtration(self, values: Sequence[np.ndarray], keep: Sequence[np.ndarray] | None = None) -> Filtration:
@@ -114,7 +114,8 @@ class Bifiltration:
         return self.filtration([g[:, 0] for g in self.grades], keep)
 
     def __repr__(self) -> str:
-        return f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, max_homology_dim={self.max_homology_dim})"
+        return (f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, "
+                f"max_homology_dim={self.max_homology_dim})")
 
 
 def _vertex_values(values, labels: np.ndarray, name: str) -> np.ndarray:
@@ -145,7 +146,7 @@ def function_bifiltration(filtration, vertex_values, *, max_homology_dim: int | 
 
     Parameters
     ----------
-    filtration : a :class:`Filtration` (its values are the ε-grades).
+    filtration : a :class:`~thesis_lib.filtration.Filtration` (its values are the ε-grades).
     vertex_values : one finite number per point (indexed by vertex label).
     max_homology_dim : see :class:`Bifiltration`.
     name : what the values are called in error messages.
@@ -168,7 +169,8 @@ def radius_curvature_bifiltration(points, curvature, *, complex: str = "rips", m
     Parameters
     ----------
     points : ``(n, d)`` points.
-    curvature : ``(n,)`` curvature estimate at each point (e.g. :func:`thesis_lib.meshes.point_curvature`).
+    curvature : ``(n,)`` curvature estimate at each point (e.g.
+        :func:`thesis_lib.meshes.point_curvature.point_curvature`).
     complex : ``"rips"`` (ε with diameter ≤ 2ε; truncated at ``max_dim``) or ``"alpha"`` (the alpha
         complex; its values ε² are square-rooted so that both complexes are graded by ε).
     max_radius : largest ε kept (Rips only).

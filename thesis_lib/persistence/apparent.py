@@ -34,14 +34,15 @@ def _pairs_by_index(K) -> list[tuple[int, np.ndarray, np.ndarray]]:
 
 
 def apparent_pairs(filtration, *, zero: bool = False) -> list[tuple[tuple[int, ...], tuple[int, ...]]]:
-    """The apparent pairs ``(σ, τ)`` of a filtration, in the order of its :attr:`~Filtration.order`.
+    """The apparent pairs ``(σ, τ)`` of a filtration, in its order (``Filtration.order``).
 
     Thesis: Definitions 4.30–4.33 (the pairs are a discrete vector field, and an acyclic one:
     Theorem 4.36), used as in the Summary, "to reduce the size of simplicial complexes".
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.filtration.Filtration` (or anything :func:`as_complex` takes).
+    filtration : a :class:`~thesis_lib.filtration.Filtration` (or anything
+        :func:`~thesis_lib.filtration.as_complex` takes).
     zero : only the pairs whose two simplices have the same value (zero persistence: the ones the
         implicit engine never makes columns).
 

@@ -141,7 +141,8 @@ class Barcode:
 
     # ------------------------------------------------------------------ construction
     @classmethod
-    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]], dimensions: Iterable[int] | None = None) -> Barcode:
+    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]],
+                   dimensions: Iterable[int] | None = None) -> Barcode:
         """Build from ``(dim, (birth, death))`` pairs, the format of GUDHI's ``persistence()``.
 
         Thesis: Definition 2.34 (a set of P-intervals per dimension).
@@ -157,7 +158,7 @@ class Barcode:
         array of ``(birth, death)`` of dimension k (``inf`` for essential classes).
 
         Thesis: Definition 2.34 (a set of P-intervals per dimension).  Values are taken as they
-        are: ripser's are diameters (2ε), so halve them to compare with :func:`rips` (ε).
+        are: ripser's are diameters (2ε), so halve them to compare with :func:`~thesis_lib.complexes.rips` (ε).
         """
         if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
             raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
@@ -174,7 +175,7 @@ class Barcode:
         per dimension 0, 1, ... up to the largest complete one (or the given ``dims``' maximum).
 
         Thesis: Definition 2.34 and Theorem 2.37 (P-intervals drawn as points).  The values are
-        this barcode's (ε for :func:`rips`; ripser reports diameters 2ε).
+        this barcode's (ε for :func:`~thesis_lib.complexes.rips`; ripser reports diameters 2ε).
         """
         dims = self._complete if dims is None else tuple(int(d) for d in dims)
         top = max(dims, default=-1)

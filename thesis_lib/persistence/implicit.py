@@ -51,9 +51,8 @@ import math
 
 import numpy as np
 
-from ..jit import load_numba, njit
-
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
+from ..jit import load_numba, njit, prange
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
 
@@ -479,7 +478,7 @@ def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, 
 def _apparent_parallel(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nblocks, tau, sign, apparent):
     m = cand_i.shape[0]
     size = (m + nblocks - 1) // nblocks
-    for t in numba.prange(nblocks):
+    for t in prange(nblocks):
         _apparent_block(t * size, min(m, (t + 1) * size), k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen,
                         B, tau, sign, apparent)
 
@@ -910,10 +909,11 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     Parameters
     ----------
     points : (n, d) array of points, or give ``distance_matrix``.
-    max_radius : ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as :func:`rips`).
-    max_dim : the largest simplex dimension of the complex (as :func:`rips`); homology of dimensions
-        0 .. max_dim − 1 is computed, and it is complete (the top dimension of a truncated complex is
-        not: its classes could only die in dimensions that are not built).
+    max_radius : ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as
+        :func:`~thesis_lib.complexes.rips`).
+    max_dim : the largest simplex dimension of the complex (as :func:`~thesis_lib.complexes.rips`);
+        homology of dimensions 0 .. max_dim − 1 is computed, and it is complete (the top dimension
+        of a truncated complex is not: its classes could only die in dimensions that are not built).
     coefficients : a prime p, the field Z/p.
     distance_matrix : a dense symmetric (n, n) array, or a scipy.sparse matrix whose stored entries
         are the only edges (entries above 2ε dropped); keyword only, instead of ``points``.
