@@ -82,7 +82,7 @@ def _candidates_by_definition(pts, theta=np.pi / 4):
     """Steps 3-4 as ABK98 state them: Qhull's Delaunay of S ∪ P, triangles with sample vertices."""
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes.crust import _normal_filter
+    from thesis_lib.meshes.crust_geometry import _normal_filter
 
     pp, pm = poles(pts)
     n = len(pts)
@@ -135,10 +135,10 @@ def test_crust_of_chosen_points_is_closed(n):
     one diagonal per quad and leave no boundary (it left hundreds of boundary vertices before)."""
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes.crust import _circumcentres
+    from thesis_lib.meshes.crust_geometry import circumcentres
 
     vertices, grid_faces = torus_grid(n, 10.0, 5.0)
-    flat = ~_circumcentres(vertices[Delaunay(vertices).simplices])[1]
+    flat = ~circumcentres(vertices[Delaunay(vertices).simplices])[1]
     assert flat.sum() > n  # the degenerate configuration really occurs
     f = crust(vertices)
     assert np.all(facet_degrees(f) == 2) and euler_characteristic(f) == 0
