@@ -5,11 +5,11 @@ of nonzero diagonal entries is the rank, entries ``>= 2`` are torsion.  Boundary
 and sparse, and almost all of their elimination can be done with pivots ``±1``, so the engine works
 in two stages, each exact:
 
-1. **sparse elimination** (:mod:`thesis_lib._elimination`, numba): Gaussian elimination on unit
+1. **sparse elimination** (``thesis_lib._elimination``, numba): Gaussian elimination on unit
    pivots (``±1`` over Z, any nonzero residue over Z/p) chosen by the Markowitz rule to limit
    fill-in, with every new entry checked to stay within int64.  Each step is unimodular, so
    ``SNF(A) = I ⊕ SNF(core)``; over Z/p the core is empty and the number of pivots is the rank;
-2. **the dense core over Z** (:mod:`thesis_lib._modular`): rank profile modulo a prime,
+2. **the dense core over Z** (``thesis_lib._modular``): rank profile modulo a prime,
    determinants of two ``r × r`` minors by Chinese remaindering, and, only if their gcd ``M`` is not
    1, the Smith form modulo ``M`` — exact at any entry size, with no integer factored.
 
