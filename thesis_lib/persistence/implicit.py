@@ -154,23 +154,68 @@ def _csr_kernel(n, edges, lengths):
         fill[v] += 1
     for v in range(n):
         a, b = indptr[v], indptr[v + 1]
-        order = np.argsort(-nbr[a:b])
-        nbr[a:b] = nbr[a:b][order]
-        length[a:b] = length[a:b][order]
+        rising = True  # edges in lexicographic order (every source of ours) fill each list rising
+        for e in range(a + 1, b):
+            if nbr[e] <= nbr[e - 1]:
+                rising = False
+                break
+        if rising:
+            nbr[a:b] = nbr[a:b][::-1].copy()
+            length[a:b] = length[a:b][::-1].copy()
+        else:
+            order = np.argsort(-nbr[a:b])
+            nbr[a:b] = nbr[a:b][order]
+            length[a:b] = length[a:b][order]
     return indptr, nbr, length
 
 
-@njit(cache=True)
 def _by_distance(indptr, nbr, length):
-    """The same neighbour lists sorted by increasing distance (for the apparent-pair test)."""
-    dnbr = np.empty_like(nbr)
-    dlen = np.empty_like(length)
-    for v in range(indptr.shape[0] - 1):
-        a, b = indptr[v], indptr[v + 1]
-        order = np.argsort(length[a:b], kind="mergesort")
-        dnbr[a:b] = nbr[a:b][order]
-        dlen[a:b] = length[a:b][order]
-    return dnbr, dlen
+    """The same neighbour lists sorted by increasing distance, ties by decreasing neighbour (for the
+    apparent-pair test): one sort of every entry by distance (numpy's), then a stable pass that
+    puts each entry back in its vertex's list."""
+    return _by_distance_kernel(indptr, nbr, length, np.argsort(length))
+
+
+@njit(cache=True)
+def _by_distance_kernel(indptr, nbr, length, order):
+    n = indptr.shape[0] - 1
+    owner = np.empty(nbr.shape[0], dtype=np.int64)
+    for v in range(n):
+        owner[indptr[v] : indptr[v + 1]] = v
+    fill = indptr[:-1].copy()
+    pos = np.empty(nbr.shape[0], dtype=np.int64)
+    for t in range(order.shape[0]):
+        e = order[t]
+        v = owner[e]
+        pos[fill[v]] = e
+        fill[v] += 1
+    for v in range(n):
+        _ties_by_index(pos[indptr[v] : indptr[v + 1]], length, nbr)
+    return nbr[pos], length[pos]
+
+
+@njit(cache=True)
+def _ties_by_index(order, key, idx):
+    """Within each run of equal ``key[order]``, put ``order`` by decreasing ``idx`` (in place): an
+    order by key up and then idx down, from any order by key up."""
+    m = order.shape[0]
+    a = 0
+    while a < m:
+        b = a + 1
+        while b < m and key[order[b]] == key[order[a]]:
+            b += 1
+        if b - a > 16:  # a long run (many equal distances): sort it
+            run = order[a:b].copy()
+            order[a:b] = run[np.argsort(-idx[run], kind="mergesort")]
+        else:
+            for x in range(a + 1, b):  # insertion sort
+                t = order[x]
+                y = x - 1
+                while y >= a and idx[order[y]] < idx[t]:
+                    order[y + 1] = order[y]
+                    y -= 1
+                order[y + 1] = t
+        a = b
 
 
 @njit(cache=True)
@@ -985,8 +1030,8 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     intervals: dict[int, np.ndarray] = {}
     # ---- H0: union–find
     ed, ei = _edges(np.int64(n), indptr, nbr, length)
-    order = np.argsort(ed[::-1], kind="stable")  # filtration order: diameter up, index down
-    order = ei.shape[0] - 1 - order
+    order = np.argsort(ed)  # filtration order: diameter up, index down
+    _ties_by_index(order, ed, ei)
     d0, comps, positive = _h0(np.int64(n), order, ed, ei, B)
     iv0 = np.empty((d0.shape[0] + comps, 2))
     iv0[: d0.shape[0], 0] = 0.0
