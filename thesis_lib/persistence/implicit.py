@@ -349,7 +349,7 @@ def _upper(arr, lo, hi, x):
     return lo
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen, B, cur, od, oi, om):
     """The earliest coface of the k-simplex σ if it has σ's diameter (else −1), and its m.
 
@@ -431,7 +431,7 @@ def _with_vertex(verts, k, idx, j, B):
     return idx_above + B[j, k + 2 - m] + idx_below, np.int64(m), np.int64(j)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd, known):
     """The latest facet of the (k1)-simplex ``tau`` if it has tau's diameter, else −1; also its
     position r (the omitted vertex is w[r], so its sign in ∂τ is (−1)^r).  With ``known`` the
@@ -555,9 +555,8 @@ def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, 
             tau[c] = t_c
             sign[c] = 1 - 2 * (m_c & 1)
             if j >= 0:  # τ's vertices: σ's with j inserted at position m
-                w[:m_c] = verts[:m_c]
-                w[m_c] = j
-                w[m_c + 1 : k + 2] = verts[m_c : k + 1]
+                for r in range(k + 2):
+                    w[r] = verts[r] if r < m_c else (j if r == m_c else verts[r - 1])
             f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd, j >= 0)
             apparent[c] = f == cand_i[c]
 
