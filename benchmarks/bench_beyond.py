@@ -135,15 +135,18 @@ def invariant_rows(case: str, repeat: int) -> list[dict]:
     eps, kappa = _grid(bif, 40, 40)
     ours_s, ours = harness.best_of(lambda: hilbert_function(bif, eps, kappa, dims=dims), repeat)
     ref_s, ref = harness.best_of(lambda: _mp_hilbert(bif, eps, kappa, dims), repeat)
-    rows.append(dict(invariant="Hilbert function", grid="40 × 40", ours_s=ours_s, ref_s=ref_s, equal=bool(np.array_equal(ours, ref))))
+    rows.append(dict(invariant="Hilbert function", grid="40 × 40", ours_s=ours_s, ref_s=ref_s,
+                     equal=bool(np.array_equal(ours, ref))))
     eps, kappa = _grid(bif, 8, 8)
     ours_s, ours = harness.best_of(lambda: rank_invariant(bif, eps, kappa, dim=1), repeat)
     ref_s, ref = harness.best_of(lambda: _mp_rank(bif, eps, kappa, 1), repeat)
-    rows.append(dict(invariant="rank invariant (H₁)", grid="8 × 8", ours_s=ours_s, ref_s=ref_s, equal=bool(np.array_equal(ours, ref))))
+    rows.append(dict(invariant="rank invariant (H₁)", grid="8 × 8", ours_s=ours_s, ref_s=ref_s,
+                     equal=bool(np.array_equal(ours, ref))))
     base, dirs = _lines(bif, 32)
     ours_s, ours = harness.best_of(lambda: _ours_lines(bif, base, dirs), repeat)
     ref_s, ref = harness.best_of(lambda: _mp_lines(bif, base, dirs), repeat)
-    rows.append(dict(invariant="fibered barcodes", grid="32 lines", ours_s=ours_s, ref_s=ref_s, equal=_same_lines(ours, ref, dims)))
+    rows.append(dict(invariant="fibered barcodes", grid="32 lines", ours_s=ours_s, ref_s=ref_s,
+                     equal=_same_lines(ours, ref, dims)))
     for row in rows:
         row.update(topic="multiparameter", case=case, n_simplices=len(bif), ratio=row["ours_s"] / row["ref_s"])
     return rows
@@ -184,7 +187,8 @@ def main(argv=None) -> None:
     try:
         import multipers  # noqa: F401
     except ImportError:
-        print("multipers is not installed (pip install 'multipers>=2.3.2,<2.4'): invariants not compared", file=sys.stderr)
+        print("multipers is not installed (pip install 'multipers>=2.3.2,<2.4'): invariants not compared",
+              file=sys.stderr)
     else:
         invariant_rows(cases["invariants"][0], 1)  # warm-up: numba compilation
         print(harness.table_header(INV_COLUMNS), flush=True)

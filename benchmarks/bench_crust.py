@@ -91,23 +91,11 @@ def make_row(n: int, rounds: int | None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
-                             memory=("N", "TOOL"), cases=[str(n) for n in FULL])
-    if args.memory:
-        memory_run(*args.memory)
-        return []
-    meta = harness.environment()
-    names = args.cases or (QUICK if args.quick else FULL)
-    output = args.output or (str(harness.RESULTS / "crust_partial.json") if args.cases else None)
-    rows: list[dict] = []
-
-    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
-        rows.append(make_row(int(name), args.rounds))
-        harness.write_results("crust", rows, args.quick, output, meta)
-        return rows[-1]
-
-    harness.stream_table(COLUMNS, names, row)
-    return rows
+    return harness.run_cases(
+        "crust", __doc__, argv, cases=[str(n) for n in FULL], quick=QUICK, full=[str(n) for n in FULL],
+        columns=COLUMNS, run_case=lambda name, rounds: make_row(int(name), rounds), memory_child=memory_run,
+        memory=("N", "TOOL")
+    )
 
 
 if __name__ == "__main__":

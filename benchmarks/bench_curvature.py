@@ -122,23 +122,10 @@ def make_row(name: str, rounds: int | None) -> dict:
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
-                             memory=("CASE", "TOOL"), cases=FULL)
-    if args.memory:
-        memory_run(*args.memory)
-        return []
-    meta = harness.environment()
-    names = args.cases or (QUICK if args.quick else FULL)
-    output = args.output or (str(harness.RESULTS / "curvature_partial.json") if args.cases else None)
-    rows: list[dict] = []
-
-    def row(name) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
-        rows.append(make_row(name, args.rounds))
-        harness.write_results("curvature", rows, args.quick, output, meta)
-        return rows[-1]
-
-    harness.stream_table(COLUMNS, names, row)
-    return rows
+    return harness.run_cases(
+        "curvature", __doc__, argv, cases=FULL, quick=QUICK, full=FULL, columns=COLUMNS, run_case=make_row,
+        memory_child=memory_run, memory=("CASE", "TOOL")
+    )
 
 
 if __name__ == "__main__":

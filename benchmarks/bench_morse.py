@@ -110,22 +110,10 @@ COLUMNS = [("case", "{case}"), ("cells", "{n_cells}"), ("critical", "{critical_f
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, quick_help="one small case (make bench-check)", output=True,
-                             memory=("TOOL", "CASE"), cases=CASES)
-    if args.memory:
-        memory_child(*args.memory)
-        return []
-    meta = harness.environment()
-    names = args.cases or (QUICK if args.quick else CASES)
-    rows: list[dict] = []
-
-    def row(name: str) -> dict:
-        rows.append(run_case(name, args.rounds))
-        harness.write_results("morse", rows, args.quick, args.output, meta)
-        return rows[-1]
-
-    harness.stream_table(COLUMNS, names, row)
-    return rows
+    return harness.run_cases(
+        "morse", __doc__, argv, cases=CASES, quick=QUICK, full=CASES, columns=COLUMNS, run_case=run_case,
+        memory_child=memory_child, quick_help="one small case (make bench-check)"
+    )
 
 
 if __name__ == "__main__":

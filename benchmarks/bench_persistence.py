@@ -159,23 +159,10 @@ COLUMNS = [("case", "{case}"), ("rounds", "{rounds}"), ("ours s", "{ours_s:.3g}"
 
 
 def main(argv: list[str] | None = None) -> list[dict]:
-    args = harness.arguments(__doc__, argv, quick_help="small cases only (make bench-check)", output=True,
-                             memory=("TOOL", "CASE"), cases=list(CASES))
-    if args.memory:
-        memory_child(*args.memory)
-        return []
-    meta = harness.environment()
-    names = args.cases or (QUICK if args.quick else FULL)
-    output = args.output or (str(harness.RESULTS / "persistence_partial.json") if args.cases else None)
-    rows: list[dict] = []
-
-    def row(name: str) -> dict:  # each finished case is stored at once: an interrupted long run keeps them
-        rows.append(run_case(name, args.rounds))
-        harness.write_results("persistence", rows, args.quick, output, meta)
-        return rows[-1]
-
-    harness.stream_table(COLUMNS, names, row)
-    return rows
+    return harness.run_cases(
+        "persistence", __doc__, argv, cases=list(CASES), quick=QUICK, full=FULL, columns=COLUMNS, run_case=run_case,
+        memory_child=memory_child
+    )
 
 
 if __name__ == "__main__":

@@ -32,7 +32,8 @@ COLUMNS = [
     ("wall_s", "{wall_s:.1f}"),
     ("per_run_s", "{per_run_s:.2f}"),
     ("speedup", lambda r: f"{r['speedup']:.2f}" if r.get("speedup") else ""),
-    ("overhead_per_run_s", lambda r: f"{r['overhead_per_run_s']:.2f}" if r.get("overhead_per_run_s") is not None else ""),
+    ("overhead_per_run_s",
+     lambda r: f"{r['overhead_per_run_s']:.2f}" if r.get("overhead_per_run_s") is not None else ""),
 ]
 
 

@@ -38,8 +38,8 @@ def main(argv: list[str] | None = None) -> int:
         if not meta.get("commit"):
             failures.append(f"{topic}: {stored.name} was stored without provenance (commit, date, load): re-run it")
             continue
-        print(f"== {topic} (stored {meta.get('date')} at {str(meta.get('commit'))[:12]}, load {meta.get('load_average')})",
-              flush=True)
+        print(f"== {topic} (stored {meta.get('date')} at {str(meta.get('commit'))[:12]}, "
+              f"load {meta.get('load_average')})", flush=True)
         proc = subprocess.run([sys.executable, str(script), "--quick"], cwd=harness.HERE.parent)
         if proc.returncode != 0:
             failures.append(f"{topic}: the quick run failed (exit {proc.returncode})")

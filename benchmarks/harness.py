@@ -53,9 +53,9 @@ import subprocess
 import sys
 import time
 import tracemalloc
+from collections.abc import Callable, Mapping, Sequence
 from importlib import metadata
 from pathlib import Path
-from typing import Callable, Mapping, Sequence
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "results"
@@ -212,7 +212,7 @@ def environment() -> dict:
         usable = os.cpu_count()
     return {
         "commit": commit,
-        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
         "load_average": [round(x, 2) for x in os.getloadavg()],
         "cores": os.cpu_count(),
         "usable_cores": usable,
@@ -328,7 +328,8 @@ def arguments(
         ap.add_argument("--worker", nargs=len(worker), metavar=tuple(worker), help=argparse.SUPPRESS)
     if memory:
         ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
-        ap.add_argument("--rounds", type=int, default=None, help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
+        ap.add_argument("--rounds", type=int, default=None,
+                        help="interleaved timing rounds (default 5, or 15 under 0.1 s)")
     if cases:
         ap.add_argument("--cases", nargs="+", choices=list(cases), default=None, metavar="CASE",
                         help="run only these cases: " + ", ".join(cases))
@@ -476,6 +477,33 @@ def stream_table(columns: Sequence, names: Sequence[str], make_row: Callable[[st
     for name in names:
         rows.append(make_row(name))
         print(table_row(columns, rows[-1]), flush=True)
+    return rows
+
+
+def run_cases(topic: str, doc: str, argv: list[str] | None, *, cases: Sequence[str], quick: Sequence[str],
+              full: Sequence[str], columns: Sequence, run_case: Callable[[str, int | None], dict],
+              memory_child: Callable[..., object], memory: Sequence[str] = ("TOOL", "CASE"),
+              quick_help: str = "small cases only (make bench-check)") -> list[dict]:
+    """The ``main`` of a case-by-case benchmark: parse the common options (:func:`arguments`); in a
+    ``--memory`` child call ``memory_child(*args)``; else run ``run_case(name, rounds)`` for the
+    chosen cases (``--cases``, else ``quick`` or ``full``), printing each row as it is made and
+    storing the rows after each case (an interrupted long run keeps the finished ones; a partial
+    run goes to ``--output`` or ``<topic>_partial.json``)."""
+    args = arguments(doc, argv, quick_help=quick_help, output=True, memory=memory, cases=list(cases))
+    if args.memory:
+        memory_child(*args.memory)
+        return []
+    meta = environment()
+    names = args.cases or list(quick if args.quick else full)
+    output = args.output or (str(RESULTS / f"{topic}_partial.json") if args.cases else None)
+    rows: list[dict] = []
+
+    def row(name: str) -> dict:
+        rows.append(run_case(name, args.rounds))
+        write_results(topic, rows, args.quick, output, meta)
+        return rows[-1]
+
+    stream_table(columns, names, row)
     return rows
 
 

@@ -1,5 +1,10 @@
 """Helpers shared by the tests (imported as ``from helpers import ...``; pytest puts tests/ on sys.path)."""
 
+import collections as _collections
+import contextlib as _contextlib
+import os as _os
+import signal as _signal
+
 import numpy as np
 from sympy import Matrix
 from sympy.matrices.normalforms import invariant_factors
@@ -56,10 +61,6 @@ def pari_invariants(a) -> list[int]:
 
 
 # ---------------------------------------------------------------------------- fuzz tests (issue 11.3)
-import collections as _collections
-import contextlib as _contextlib
-import os as _os
-import signal as _signal
 
 #: outcomes of fuzzed calls per module, printed at the end of the run (conftest.py)
 FUZZ_TALLY: dict = _collections.defaultdict(_collections.Counter)

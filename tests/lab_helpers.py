@@ -130,7 +130,8 @@ def complete_runs_are_whole(runs: Path) -> list[str]:
     """Problems with run folders below ``runs``: a folder marked complete without its results,
     notebook or valid params, or a failed one whose params are not JSON."""
     problems = []
-    for folder in sorted(p for p in runs.glob("*/*") if p.is_dir() and not p.name.startswith(".") and p.name != "sweeps"):
+    folders = (p for p in runs.glob("*/*") if p.is_dir() and not p.name.startswith(".") and p.name != "sweeps")
+    for folder in sorted(folders):
         files = {p.name for p in folder.iterdir()}
         if "complete.json" in files:
             missing = {"results.json", "params.json", f"{folder.parent.name}.ipynb"} - files

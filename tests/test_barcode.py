@@ -153,7 +153,8 @@ def test_complete_dimensions_rule_repr_betti_diagrams_and_equality():
     iv = {0: [[0, 1], [0, np.inf]], 1: [[0.5, 2]], 2: [[1, np.inf]] * 3}
     b = Barcode(iv, complete=[0, 1])
     assert b.dimensions == (0, 1, 2) and b.complete_dimensions == (0, 1)
-    assert repr(b) == "Barcode(H0: 2 (1 essential), H1: 1 (0 essential); H2 incomplete (top dimension of a truncated complex))"
+    assert repr(b) == ("Barcode(H0: 2 (1 essential), H1: 1 (0 essential); "
+                       "H2 incomplete (top dimension of a truncated complex))")
     assert b.betti(0.7) == [2, 1] and b.betti(1.5, 2) == 3
     dg = b.to_diagrams()
     assert len(dg) == 2 and dg[0].tolist() == [[0, 1], [0, np.inf]] and dg[1].tolist() == [[0.5, 2]]

@@ -135,7 +135,8 @@ def test_api_reference_documents_the_public_functions(built_book):
     documented = re.findall(r'<dt class="sig sig-object py" id="([^"]+)"', page)
     assert len(documented) == len(set(documented))
     complexes = importlib.import_module("thesis_lib.complexes")
-    functions = [n for n in complexes.__all__ if callable(getattr(complexes, n)) and n not in ("Filtration", "as_complex")]
+    functions = [n for n in complexes.__all__
+                 if callable(getattr(complexes, n)) and n not in ("Filtration", "as_complex")]
     assert {f"thesis_lib.complexes.{n}" for n in functions} <= set(documented)
 
 
@@ -207,7 +208,7 @@ class _Links(HTMLParser):
                 self.links.append(html.unescape(attrs[key]))
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _parse(path: Path) -> _Links:
     parser = _Links()
     parser.feed(path.read_text(errors="replace"))
@@ -375,7 +376,8 @@ def test_report_tables_have_a_row_per_claim(seen_at_subpath):
     assert len(tables["tbl-report-thesis"]["links"]) == len(linked)
     for href, r in zip(tables["tbl-report-thesis"]["links"], linked):
         page, _, label = r["link"].partition("#")
-        assert href.split("#")[0] == page + ".html" and href.endswith(f"#{label}" if label else ".html"), (r["id"], href)
+        assert href.split("#")[0] == page + ".html", (r["id"], href)
+        assert href.endswith(f"#{label}" if label else ".html"), (r["id"], href)
 
 
 def test_performance_tables_have_a_row_per_benchmark_case(seen_at_subpath):
@@ -408,7 +410,8 @@ def test_executing_an_experiment_page_writes_nothing_into_the_checkout(tmp_path)
     before = _git_status()
     env = {k: v for k, v in os.environ.items() if k != DEFAULT_RUN_ENV}
     name = "rp2-morse"
-    proc = jupyter_book(BOOK / "experiments" / f"{name}.ipynb", build_config(tmp_path, execute_notebooks="force"), tmp_path, env=env)
+    proc = jupyter_book(BOOK / "experiments" / f"{name}.ipynb", build_config(tmp_path, execute_notebooks="force"),
+                        tmp_path, env=env)
     assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-4000:]
     assert "running over TCP without encryption" not in proc.stdout + proc.stderr
     assert _git_status() == before, "executing a page changed files of the checkout"

@@ -14,9 +14,9 @@ import uuid
 import pytest
 from lab_helpers import (
     TOY_RESULTS,
-    commit_fake_results,
     cli,
     cli_env,
+    commit_fake_results,
     complete_runs_are_whole,
     make_project,
     popen_args,
@@ -67,7 +67,7 @@ def test_killed_at_random_moments_loses_nothing_and_leaves_nothing_running(tmp_p
         if sig != signal.SIGKILL and proc.returncode not in (0, -sig):  # -sig: killed while Python started
             assert proc.returncode == 128 + sig, f"{moment}: {err}"
             assert "cancelled" in err and "Traceback" not in err, f"{moment}: {err}"
-        wait_until(lambda: not tagged_processes(tag), timeout=60, what=f"no process of ours after {moment}")
+        wait_until(lambda tag=tag: not tagged_processes(tag), timeout=60, what=f"no process of ours after {moment}")
         assert tree_bytes(committed) == before or _stored_whole(committed), moment
         assert complete_runs_are_whole(root / "runs") == [], moment
     proc = cli(root, *COMMANDS[command])

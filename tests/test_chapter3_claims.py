@@ -5,8 +5,8 @@ errata are computed as errata from the stored results."""
 from __future__ import annotations
 
 import pytest
-from helpers import claims_of as _claims
 from helpers import check_claim_file
+from helpers import claims_of as _claims
 
 from thesis_lib.lab import report
 

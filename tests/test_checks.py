@@ -126,7 +126,8 @@ def test_exterior_angles_turning_number():
     assert delta.sum() == pytest.approx(2 * np.pi, abs=1e-12)
     assert exterior_angles(curve[::-1]).sum() == pytest.approx(-2 * np.pi, abs=1e-12)
     loop = 0.4 + np.cos(t)  # a limaçon with an inner loop turns twice
-    assert exterior_angles(np.column_stack([loop * np.cos(t), loop * np.sin(t)])).sum() == pytest.approx(4 * np.pi, abs=1e-9)
+    limacon = np.column_stack([loop * np.cos(t), loop * np.sin(t)])
+    assert exterior_angles(limacon).sum() == pytest.approx(4 * np.pi, abs=1e-9)
     square = np.array([[0, 0], [1, 0], [1, 1], [0, 1]], dtype=float)
     assert exterior_angles(square) == pytest.approx([np.pi / 2] * 4)  # δ = π − α (Figure 3.1)
     with pytest.raises(ValueError, match="repeated"):

@@ -11,12 +11,13 @@ from thesis_lib.meshes import crust, sample_sphere, sample_torus
 from thesis_lib.meshes.crust_geometry import _normal_filter, circumcentres, poles_from_delaunay
 from thesis_lib.meshes.crust_nd import (
     ReconstructionError,
+    _delaunay,
+    _far,
     crust_nd,
     crust_nd_candidates,
     manifold_report,
     manifold_vertices,
 )
-from thesis_lib.meshes.crust_nd import _delaunay, _far
 from thesis_lib.meshes.sampling import sample_n_catenoid
 
 

@@ -13,8 +13,16 @@ import uuid
 from pathlib import Path
 
 import pytest
-from lab_helpers import cli, cli_env, complete_runs_are_whole, popen_args, table_rows, tagged_processes, wait_until
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    cli,
+    cli_env,
+    complete_runs_are_whole,
+    popen_args,
+    root,  # noqa: F401 (the project fixture)
+    table_rows,
+    tagged_processes,
+    wait_until,
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab.paths import project_root
@@ -83,7 +91,8 @@ def test_unreachable_scheduler_is_a_clear_error_and_starts_nothing(root, capsys)
     with pytest.raises(ClusterError, match="could not reach the Dask scheduler at 'tcp://127.0.0.1:9'"):
         with dask_client("tcp://127.0.0.1:9", timeout=3):
             pytest.fail("connected to nothing")
-    assert lab_cli.main(["sweep", "toy", "-q", "-p", "n", "1", "--executor", "dask", "--scheduler", "tcp://127.0.0.1:9"]) == 2
+    argv = ["sweep", "toy", "-q", "-p", "n", "1", "--executor", "dask", "--scheduler", "tcp://127.0.0.1:9"]
+    assert lab_cli.main(argv) == 2
     assert "could not reach the Dask scheduler" in capsys.readouterr().err
     assert not (root / "runs" / "toy").exists() or not any((root / "runs" / "toy").iterdir())
 
@@ -95,7 +104,8 @@ def test_a_worker_without_the_project_is_named(tmp_path):
     shadow = tmp_path / "shadow" / "thesis_lib"
     shadow.mkdir(parents=True)
     (shadow / "__init__.py").write_text("raise ImportError('thesis_lib is not installed here')\n")
-    with LocalCluster(n_workers=0, processes=False, protocol="tcp", host="127.0.0.1", dashboard_address=None) as cluster:
+    with LocalCluster(n_workers=0, processes=False, protocol="tcp", host="127.0.0.1",
+                      dashboard_address=None) as cluster:
         env = {**os.environ, "PYTHONPATH": str(shadow.parent)}
         worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", cluster.scheduler_address,
                                    "--nworkers", "1", "--nthreads", "1", "--no-nanny", "--no-dashboard"],
@@ -116,13 +126,14 @@ def test_cancelled_dask_sweep_leaves_nothing_running_and_resumes(root):
         proc = subprocess.Popen(popen_args(root, *args), env=cli_env(root, tag), stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True)
         scratch = Path(tempfile.gettempdir()) / "thesis-lab-runs"
-        wait_until(lambda: proc.poll() is not None or any(
-            (p / "out" / "results.json").is_file() for p in scratch.glob(".toy.tmp-*")), timeout=180, what="a run to start")
+        wait_until(lambda proc=proc, scratch=scratch: proc.poll() is not None or any(
+            (p / "out" / "results.json").is_file() for p in scratch.glob(".toy.tmp-*")),
+            timeout=180, what="a run to start")
         proc.send_signal(sig)
         _, err = proc.communicate(timeout=180)
         if sig == signal.SIGTERM and proc.returncode != 0:
             assert proc.returncode == 143 and "cancelled" in err, err
-        wait_until(lambda: not tagged_processes(tag), timeout=90, what=f"no process of ours after {sig.name}")
+        wait_until(lambda tag=tag: not tagged_processes(tag), timeout=90, what=f"no process of ours after {sig.name}")
         assert complete_runs_are_whole(root / "runs") == []
     proc = cli(root, *args)
     assert proc.returncode == 0, proc.stderr

@@ -54,7 +54,8 @@ def test_missing_file_names_it_and_what_to_do(tiny):
 def test_wrong_hash_names_the_file_and_what_to_do(tiny):
     root, shared, payload = tiny
     (shared / "data" / "x" / "toy.pdb").write_bytes(payload + b"corrupt")
-    with pytest.raises(DataError, match=r"toy.pdb does not match its sha256.*delete it and run `thesis-lab data fetch toy`"):
+    with pytest.raises(DataError,
+                       match=r"toy.pdb does not match its sha256.*delete it and run `thesis-lab data fetch toy`"):
         data.path("toy")
     assert cli.main(["data", "verify"]) == 1
 
@@ -98,8 +99,8 @@ def _manifest(root, file="x/toy.pdb", **kw):
     (root / "data" / "manifest.toml").write_text(f"[[file]]\n{body}\n")
 
 
-@pytest.mark.parametrize("file", ["../../x", "../outside.pdb", "/etc/passwd", "x/../../y", "./x", "x//y", "", "x\\..\\y",
-                                  "a/./b", ".."])
+@pytest.mark.parametrize("file", ["../../x", "../outside.pdb", "/etc/passwd", "x/../../y", "./x", "x//y", "",
+                                  "x\\..\\y", "a/./b", ".."])
 def test_manifest_entries_outside_data_are_refused(tiny, file):
     """Regression (issue 11): a `file` of ../../x made `data fetch` write outside data/ and `path` read outside it."""
     root, shared, payload = tiny

@@ -106,7 +106,9 @@ def test_constructions_cut_at_max_dim_are_truncated():
     from thesis_lib.persistence import persistence
 
     pts = datasets.two_circles(12, seed=3)
-    for f in (rips(pts, 2.0, 2), cech(pts, 1.0, 2), witness(pts, np.arange(0, 24, 3), 2.0, 2), lazy_witness(pts, np.arange(0, 24, 3), 2.0, 2)):
+    landmarks = np.arange(0, 24, 3)
+    for f in (rips(pts, 2.0, 2), cech(pts, 1.0, 2), witness(pts, landmarks, 2.0, 2),
+              lazy_witness(pts, landmarks, 2.0, 2)):
         assert f.truncated and f.dimension == 2
         assert persistence(f, coefficients=2).complete_dimensions == (0, 1)
     sparse = rips(pts, 0.01, 2)  # no edges at this scale: nothing was cut

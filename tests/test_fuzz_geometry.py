@@ -16,10 +16,9 @@ import textwrap
 
 import numpy as np
 import pytest
+from helpers import fuzz_call, fuzz_settings
 from hypothesis import given
 from hypothesis import strategies as st
-
-from helpers import fuzz_call, fuzz_settings
 
 from thesis_lib import complexes as cx
 from thesis_lib import curvature as cv

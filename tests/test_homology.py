@@ -6,10 +6,12 @@ import itertools
 import gudhi
 import numpy as np
 import pytest
+from helpers import THESIS_M2, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from helpers import THESIS_M2, sympy_invariants
+from thesis_lib._elimination import markowitz_eliminate
+from thesis_lib._modular import dense_invariants
 from thesis_lib.datasets import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
 from thesis_lib.homology import (
     betti_numbers,
@@ -19,8 +21,6 @@ from thesis_lib.homology import (
     simplex_counts,
 )
 from thesis_lib.simplicial import closure
-from thesis_lib._elimination import markowitz_eliminate
-from thesis_lib._modular import dense_invariants
 from thesis_lib.smith import dense_smith_diagonal, reduce_matrix
 
 # ------------------------------------------------------------------ random complexes

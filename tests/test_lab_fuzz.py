@@ -16,8 +16,10 @@ import pytest
 from helpers import fuzz_call, fuzz_settings
 from hypothesis import given
 from hypothesis import strategies as st
-from lab_helpers import PAYLOAD
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    PAYLOAD,
+    root,  # noqa: F401 (the project fixture)
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import data, execute, runner
@@ -33,7 +35,8 @@ names = st.one_of(st.sampled_from(HOSTILE + ["toy"]), st.text(max_size=30),
 scalars = st.one_of(st.text(max_size=30), st.integers(), st.integers(min_value=10**300, max_value=10**400),
                     st.floats(allow_nan=True, allow_infinity=True), st.booleans(), st.none(),
                     st.from_regex(r" ?\[?[-+0-9., eEnaif]{0,12}\]? ?", fullmatch=True))
-values = st.one_of(scalars, st.lists(scalars, max_size=4), st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
+values = st.one_of(scalars, st.lists(scalars, max_size=4),
+                   st.dictionaries(st.text(max_size=3), st.integers(), max_size=2),
                    st.tuples(st.integers(), st.integers()))
 TOY_KEYS = ["n", "x", "label", "flag", "sizes", "fail", "sleep", "data_name", "output_mb", "work", "output_dir"]
 keys = st.one_of(st.sampled_from(TOY_KEYS), st.text(max_size=10))
@@ -79,8 +82,8 @@ def test_fuzz_parameter_values(root, overrides):
 
 
 @fuzz_settings(100)
-@given(grid=st.dictionaries(keys, st.lists(values, max_size=3), max_size=2), shard=st.one_of(st.none(), st.text(max_size=6),
-                                                                                             st.tuples(st.integers(-2, 4), st.integers(-2, 4))))
+@given(grid=st.dictionaries(keys, st.lists(values, max_size=3), max_size=2),
+       shard=st.one_of(st.none(), st.text(max_size=6), st.tuples(st.integers(-2, 4), st.integers(-2, 4))))
 def test_fuzz_grids_and_shards(root, grid, shard):
     ok, points = fuzz_call("runner", expand_grid, "toy", grid)
     if ok:
@@ -96,10 +99,12 @@ def test_fuzz_grids_and_shards(root, grid, shard):
 
 
 @fuzz_settings(60)
-@given(pairs=st.lists(st.tuples(keys, st.text(max_size=20)), max_size=3), name=st.sampled_from(["toy", "../toy", "", "toy/x"]))
+@given(pairs=st.lists(st.tuples(keys, st.text(max_size=20)), max_size=3),
+       name=st.sampled_from(["toy", "../toy", "", "toy/x"]))
 def test_fuzz_command_line(root, monkeypatch, pairs, name):
     """`thesis-lab run NAME -p K V ...` exits 0 (a run) or 2 (a clear error), never with a traceback."""
-    monkeypatch.setattr(runner, "cancellable", lambda fn, spec, **kw: execute.RunOutput("ok", seconds=0.1, worker="fuzz"))
+    monkeypatch.setattr(runner, "cancellable",
+                        lambda fn, spec, **kw: execute.RunOutput("ok", seconds=0.1, worker="fuzz"))
     argv = ["run", name, "-q"] + [a for k, v in pairs for a in ("-p", k, v)]
     err = io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
@@ -110,7 +115,8 @@ def test_fuzz_command_line(root, monkeypatch, pairs, name):
     for folder in (root / "runs").glob("*/*"):
         assert _inside(folder, root / "runs" / "toy")
         if folder.name != "sweeps" and not folder.name.startswith("."):
-            json.loads((folder / "params.json").read_text(), parse_constant=lambda c: pytest.fail(f"{c} in params.json"))
+            json.loads((folder / "params.json").read_text(),
+                       parse_constant=lambda c: pytest.fail(f"{c} in params.json"))
 
 
 FILES = ["x/toy.pdb", "../x", "/etc/passwd", "a/../../b", "x/./toy.pdb", "x//toy.pdb", "link/toy.pdb", "..", ".",
@@ -139,7 +145,8 @@ entries = st.builds(
 )
 manifests = st.one_of(
     st.lists(entries, max_size=3).map(
-        lambda items: "".join("[[file]]\n" + "".join(f"{k} = {_toml_value(v)}\n" for k, v in it.items()) for it in items)
+        lambda items: "".join("[[file]]\n" + "".join(f"{k} = {_toml_value(v)}\n" for k, v in it.items())
+                              for it in items)
     ),
     st.text(max_size=80),
     st.binary(max_size=40),
@@ -192,6 +199,7 @@ def test_fuzz_stored_results(tmp_path, blob):
     (tmp_path / "results.json").write_bytes(blob)
     ok, value = fuzz_call("runner", load, "demo", tmp_path)
     if ok:
-        assert isinstance(value, dict) and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value.values())
+        assert isinstance(value, dict)
+        assert all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value.values())
     else:
         assert isinstance(value, ResultsError)

@@ -58,7 +58,8 @@ _NUMPY_DISPATCH = (
 def perturbed_environment() -> tuple[dict[str, str], dict[str, str]]:
     """The environment of the re-execution, and what each perturbation amounts to on this machine."""
     base = {k: v for k, v in os.environ.items() if not k.startswith(("PYTEST_", "OPENBLAS_CORETYPE"))}
-    changes = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "NUMBA_NUM_THREADS": "1", "NUMBA_CPU_NAME": "generic"}
+    changes = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "NUMBA_NUM_THREADS": "1",
+               "NUMBA_CPU_NAME": "generic"}
     found = {"threads": "OpenBLAS 1 thread, numba 1 thread; numba code for a generic x86-64 CPU"}
     default_arch = _probe(base, _BLAS_ARCH)
     for core in CORETYPES:

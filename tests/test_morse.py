@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 import scipy.sparse as sp
 import sympy
-from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 
 from thesis_lib.complexes.rips import rips
 from thesis_lib.datasets import dunce_hat, klein_bottle, rp2, sphere, torus
@@ -18,8 +18,8 @@ from thesis_lib.filtration import Filtration
 from thesis_lib.homology import homology
 from thesis_lib.morse import (
     RP2_FACETS,
-    cells,
     boundary_operator,
+    cells,
     chain_complex_homology,
     check_discrete_morse_function,
     check_vector_field,
@@ -242,7 +242,8 @@ def test_theorems_4_25_4_26_crossing_critical_values(seed):
             if s in crit:
                 k = crit[s]
                 diff = np.array(b_now[:5]) - np.array(b_prev[:5])
-                up = np.zeros(5, int); up[k] = 1
+                up = np.zeros(5, int)
+                up[k] = 1
                 down = np.zeros(5, int)
                 if k > 0:
                     down[k - 1] = -1
@@ -343,7 +344,8 @@ def test_closed_vpath_detected_and_reported():
     for i in range(0, len(path) - 2, 2):
         s, t, s2 = path[i], path[i + 1], path[i + 2]
         assert (s, t) in CYCLIC and set(s2) < set(t) and s2 != s  # Definition 4.34
-    with pytest.raises(ValueError, match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\) > \(1, 2\) > \(2,\) > \(0, 2\) > \(0,\)"):
+    with pytest.raises(ValueError,
+                       match=r"closed V-path \(0,\) > \(0, 1\) > \(1,\) > \(1, 2\) > \(2,\) > \(0, 2\) > \(0,\)"):
         morse_homology(CIRCLE, CYCLIC)
     with pytest.raises(ValueError, match="closed V-path"):
         morse_boundary(CIRCLE, CYCLIC)
@@ -516,7 +518,8 @@ def test_lower_star_pairs_stay_in_lower_stars(seed):
     values = np.round(np.random.default_rng(seed).random(nv), 1)  # ties on purpose
     pairs = morse_matching(cx, "lower-star", values=values)
     rank = np.lexsort((np.arange(nv), values))
-    order = np.empty(nv, int); order[rank] = np.arange(nv)
+    order = np.empty(nv, int)
+    order[rank] = np.arange(nv)
     for s, t in pairs:
         assert max(s, key=lambda v: order[v]) == max(t, key=lambda v: order[v])
     assert is_acyclic(cx, pairs)

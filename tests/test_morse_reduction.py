@@ -14,11 +14,11 @@ from thesis_lib.homology import homology
 from thesis_lib.morse import (
     chain_persistence,
     critical_counts,
-    morse_matching,
     filtration_matching,
     is_acyclic,
     lower_star_filtration,
     morse_homology,
+    morse_matching,
     morse_reduce,
     reduced_persistence,
 )

@@ -27,7 +27,8 @@ def test_example_4_2_critical_points_and_indices():
     assert [c["index"] for c in crit] == [0, 1, 1, 2]  # r, q_1, q_2, p
     assert np.allclose([c["value"] for c in crit], [-(R + r), -(R - r), R - r, R + r])
     # points on the z-axis: p = (0, 0, R + r), q_2 = (0, 0, R - r), q_1 = (0, 0, -R + r), r = (0, 0, -R - r)
-    assert np.allclose([c["point"] for c in crit], [(0, 0, -R - r), (0, 0, -R + r), (0, 0, R - r), (0, 0, R + r)], atol=1e-9)
+    assert np.allclose([c["point"] for c in crit], [(0, 0, -R - r), (0, 0, -R + r), (0, 0, R - r), (0, 0, R + r)],
+                       atol=1e-9)
     uv = sorted((round(c["u"], 6), round(c["v"], 6)) for c in crit)
     assert np.allclose(uv, sorted([(0, 0), (0, np.pi), (np.pi, np.pi), (np.pi, 0)]), atol=1e-6)
     # the Hessians of the thesis

@@ -2,9 +2,15 @@
 
 from __future__ import annotations
 
+import importlib.util
 import re
+import shutil
+import subprocess
+import sys
 import tomllib
+from pathlib import Path
 
+import pytest
 import yaml
 
 from thesis_lib.lab.paths import repo_root
@@ -42,7 +48,8 @@ def test_book_workflow_runs_the_readme_book_command_and_publishes_the_site():
 
 def test_licence_is_an_spdx_expression():
     project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
-    assert isinstance(project["license"], str) and project["license"] == yaml.safe_load((ROOT / "CITATION.cff").read_text())["license"]
+    cff = yaml.safe_load((ROOT / "CITATION.cff").read_text())
+    assert isinstance(project["license"], str) and project["license"] == cff["license"]
     assert all((ROOT / f).is_file() for f in project.get("license-files", []))
 
 
@@ -87,3 +94,14 @@ def test_readme_library_example_runs_and_prints_what_it_says(capsys):
     assert "[(1, []), (0, [2]), (0, [])]" in out
     expected = re.search(r"# (\[\(1, \[\]\), \(0, \[2\]\), \(0, \[\]\)\])", code).group(1)
     assert expected in out
+
+
+def test_ruff_is_clean():
+    """The code base is lint-clean under the project's ruff configuration (pyproject.toml, [tool.ruff])."""
+    ruff = shutil.which("ruff", path=str(Path(sys.executable).parent))
+    if ruff is None and importlib.util.find_spec("ruff") is None:
+        pytest.skip("ruff is not installed (pip install -e '.[dev]')")
+    cmd = [ruff] if ruff else [sys.executable, "-m", "ruff"]
+    proc = subprocess.run([*cmd, "check", "--no-cache", "--output-format", "concise", "."], cwd=ROOT,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout + proc.stderr

@@ -83,7 +83,8 @@ def test_points_given_for_a_filtration_say_how_to_build_one():
 
 
 def test_compute_intervals_raw_errors_are_clear():
-    for bad, pattern in [([((0, 1), 0.0)], "face"), ([((0,), math.nan)], "NaN"), ([((0,), 1.0), ((1,), 0.0)], "decrease"),
-                         ([((0,), 0.0), ((0,), 0.0)], "twice"), (5, "iterable"), ("ab", "expected")]:
+    for bad, pattern in [([((0, 1), 0.0)], "face"), ([((0,), math.nan)], "NaN"),
+                         ([((0,), 1.0), ((1,), 0.0)], "decrease"), ([((0,), 0.0), ((0,), 0.0)], "twice"),
+                         (5, "iterable"), ("ab", "expected")]:
         with pytest.raises((ValueError, TypeError), match=pattern):
             compute_intervals(bad)

@@ -1,11 +1,11 @@
-"""Tests of thesis_lib.applications.proteins: PDB parsing traps (SOURCES.md), radii and weights (thesis §2.2.2, §2.4.2)."""
+"""Tests of thesis_lib.applications.proteins: PDB parsing traps (SOURCES.md), radii and weights
+(thesis §2.2.2, §2.4.2)."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from thesis_lib.lab.paths import shared_dir
 from thesis_lib.applications.proteins import (
     Atoms,
     discretise_intervals,
@@ -14,6 +14,7 @@ from thesis_lib.applications.proteins import (
     vdw_radii,
     weighted_points,
 )
+from thesis_lib.lab.paths import shared_dir
 
 PDB = shared_dir() / "data" / "pdb"
 pytestmark = pytest.mark.skipif(not (PDB / "1eca.pdb").is_file(), reason="shared PDB files not present")
@@ -262,8 +263,8 @@ def test_sampled_barcodes_invisible_bars_and_readings():
 
 
 def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():
-    from thesis_lib.persistence import persistence
     from thesis_lib.applications.proteins import protein_filtration
+    from thesis_lib.persistence import persistence
 
     atoms = read_pdb(PDB / "1grm.pdb")
     r = vdw_radii(atoms)

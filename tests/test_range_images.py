@@ -1,4 +1,5 @@
-"""Tests of thesis_lib.applications.range_images: synthetic range images and the Adams–Carlsson patch pipeline (§2.4.3)."""
+"""Tests of thesis_lib.applications.range_images: synthetic range images and the Adams–Carlsson patch
+pipeline (§2.4.3)."""
 
 from __future__ import annotations
 
@@ -46,7 +47,7 @@ def test_empty_scene_is_ground_with_exact_ranges():
     assert rows[-1] and not rows[0]
     # Recompute the ray of the bottom centre pixel from the camera model with the same seed's rotation.
     rng = np.random.default_rng(0)
-    yaw, pitch = rng.uniform(-0.3, 0.3), rng.uniform(-0.12, 0.05)
+    _yaw, pitch = rng.uniform(-0.3, 0.3), rng.uniform(-0.12, 0.05)  # draw yaw too: same stream as the scene
     focal = 0.5 * w / np.tan(np.radians(40.0) / 2)
     d = np.array([0.0, -((h - 1) / 2) / focal, 1.0])
     d /= np.linalg.norm(d)

@@ -15,12 +15,14 @@ def test_registry_is_well_formed_and_complete():
     rows = report.report()
     assert rows, "the registry has no claims"
     for row in rows:
-        assert set(row) == {"id", "where", "thesis", "ours", "status", "note", "provenance", "section", "link", "correct"}
+        assert set(row) == {"id", "where", "thesis", "ours", "status", "note", "provenance", "section", "link",
+                            "correct"}
         assert row["status"] in report.STATUSES
         if row["status"] != "reproduced":
             assert row["note"], row
         if row["ours"] is None:
-            assert row["status"] in ("not-reproducible", "figure-only")  # nothing measured, or a figure to compare by eye
+            # nothing measured, or a figure to compare by eye
+            assert row["status"] in ("not-reproducible", "figure-only")
             assert not row["note"].startswith("no stored result"), f"claim {row['id']} has no stored result"
 
 
@@ -70,16 +72,20 @@ def _claim(**kw) -> str:
         ({"compare": "le", "thesis": 0.004, "result": "exp:err"}, "reproduced"),
         ({"compare": "ge", "thesis": 0.004, "result": "exp:err", "note": "too small"}, "differs"),
         ({"compare": "abs", "thesis": 0.0, "atol": 0.01, "result": "exp:err"}, "reproduced"),
-        ({"compare": "between", "thesis": "(2e-5, 1.4e-4)", "low": 2e-5, "high": 1.4e-4, "result": "exp:err", "note": "n"}, "differs"),
+        ({"compare": "between", "thesis": "(2e-5, 1.4e-4)", "low": 2e-5, "high": 1.4e-4, "result": "exp:err",
+          "note": "n"}, "differs"),
         ({"compare": "eq", "thesis": [3, 1], "result": ["exp:b1", "exp:b2"]}, "reproduced"),
-        ({"compare": "eq", "thesis": "β = (3, 2)", "value": [3, 2], "result": ["exp:b1", "exp:b2"], "note": "β₂"}, "differs"),
+        ({"compare": "eq", "thesis": "β = (3, 2)", "value": [3, 2], "result": ["exp:b1", "exp:b2"], "note": "β₂"},
+         "differs"),
         ({"not_reproducible": True, "note": "data unavailable"}, "not-reproducible"),
         # errata: passes with `correct`, fails with the thesis's value
-        ({"compare": "abs", "atol": 1e-6, "thesis": 1 / 12, "correct": 5 / 48, "result": "exp:coef", "note": "5/48"}, "erratum"),
+        ({"compare": "abs", "atol": 1e-6, "thesis": 1 / 12, "correct": 5 / 48, "result": "exp:coef", "note": "5/48"},
+         "erratum"),
         # passes with the thesis's value: reproduced, even with a `correct`
         ({"compare": "abs", "atol": 0.1, "thesis": 1 / 12, "correct": 5 / 48, "result": "exp:coef"}, "reproduced"),
         # passes with neither: differs
-        ({"compare": "abs", "atol": 1e-6, "thesis": 1 / 12, "correct": 0.5, "result": "exp:coef", "note": "n"}, "differs"),
+        ({"compare": "abs", "atol": 1e-6, "thesis": 1 / 12, "correct": 0.5, "result": "exp:coef", "note": "n"},
+         "differs"),
         ({"compare": "eq", "thesis": "β = (3, 2)", "value": [3, 2], "correct": [3, 1], "result": ["exp:b1", "exp:b2"],
           "note": "β₂ = 1"}, "erratum"),
         ({"compare": "none", "thesis": "the figure", "note": "shown in the book"}, "figure-only"),
@@ -165,16 +171,19 @@ def test_rows_carry_provenance_section_link_and_correct(registry):
 
 
 def test_summary_counts_by_status_chapter_and_provenance(registry):
-    text = (_claim(id="a", rtol=0.1, provenance="computed") + _claim(id="b", where="Figure 3.5", rtol=0, note="x", provenance="reconstructed input")
+    text = (_claim(id="a", rtol=0.1, provenance="computed")
+            + _claim(id="b", where="Figure 3.5", rtol=0, note="x", provenance="reconstructed input")
             + _claim(id="c", where="Example 4.43", compare="none", note="fig", provenance="transcribed")
             + _claim(id="d", section="beyond", rtol=0.1, note="new", provenance="reconstructed input"))
     s = report.summary(registry(text))
     assert s["total"] == 4 and s["beyond"] == 1
-    assert s["by_status"] == {"reproduced": 1, "erratum": 0, "differs": 1, "not-reproducible": 0, "figure-only": 1, "new": 1}
+    assert s["by_status"] == {"reproduced": 1, "erratum": 0, "differs": 1, "not-reproducible": 0, "figure-only": 1,
+                              "new": 1}
     assert s["by_chapter"] == {"2": {"reproduced": 1}, "3": {"differs": 1}, "4": {"figure-only": 1}}
     assert s["by_provenance"] == {"computed": 1, "reconstructed input": 2, "transcribed": 1}
     assert report.summary_markdown(registry(text)).startswith(
-        "4 claims: 1 reproduced, 1 differs, 1 figure-only, 1 new. Provenance: 1 computed, 2 reconstructed input, 1 transcribed.")
+        "4 claims: 1 reproduced, 1 differs, 1 figure-only, 1 new. "
+        "Provenance: 1 computed, 2 reconstructed input, 1 transcribed.")
 
 
 def test_corrupt_results_and_claims_give_clear_errors(registry, tmp_path, capsys):

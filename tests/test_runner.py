@@ -16,14 +16,21 @@ import termios
 
 import nbformat
 import pytest
-from lab_helpers import TOY_RESULTS, cli, cli_env, commit_fake_results, popen_args, set_default, tree_bytes
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    TOY_RESULTS,
+    cli,
+    cli_env,
+    commit_fake_results,
+    popen_args,
+    root,  # noqa: F401 (the project fixture)
+    set_default,
+    tree_bytes,
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import execute, runner
 from thesis_lib.lab.results import DEFAULT_RUN_ENV
 from thesis_lib.lab.runner import ParameterError
-
 
 TOY_DEFAULTS = {"n": 3, "x": 0.5, "label": "a", "flag": False, "sizes": [60, 100], "fail": False,
                 "sleep": 0.0, "data_name": "", "output_mb": 0.0, "work": 0}
@@ -78,7 +85,7 @@ def test_unknown_experiment_names_the_known_ones(root):
         runner.resolve_parameters("nope")
 
 
-HOSTILE_NAMES = ["../outside/evil", str("/abs/toy"), "toy/../toy", "experiments/toy", "toy.ipynb", "", ".", "..",
+HOSTILE_NAMES = ["../outside/evil", "/abs/toy", "toy/../toy", "experiments/toy", "toy.ipynb", "", ".", "..",
                  "to\x00y", "./toy", "TOY", " toy"]
 
 
@@ -136,7 +143,8 @@ def test_cli_reports_bad_input_with_exit_code_2(root, capsys, argv, message):
     assert err.startswith("error: ") and message in err
 
 
-@pytest.mark.parametrize("argv", [["sweep", "toy", "-p", "n", "1", "-j", "0"], ["sweep", "toy", "-p", "n", "1", "-j", "x"],
+@pytest.mark.parametrize("argv", [["sweep", "toy", "-p", "n", "1", "-j", "0"],
+                                  ["sweep", "toy", "-p", "n", "1", "-j", "x"],
                                   ["sweep", "toy", "-p", "n", "1", "--retries", "-1"]])
 def test_cli_refuses_bad_counts(root, argv, capsys):
     """Regression (issue 11): `-j 0` was accepted."""

@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import sympy
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from thesis_lib._validate import MAX_EXACT_PRIME, check_coefficients
 from thesis_lib.simplicial import boundary_matrix, closure

@@ -5,10 +5,10 @@ import itertools
 import numpy as np
 import pytest
 import scipy.sparse as sp
+from helpers import THESIS_M2, pari_invariants, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from helpers import THESIS_M2, pari_invariants, sympy_invariants
 from thesis_lib._elimination import markowitz_eliminate
 from thesis_lib._modular import dense_invariants
 from thesis_lib.simplicial import boundary_matrix, closure

@@ -7,8 +7,11 @@ import concurrent.futures as cf
 import csv
 
 import pytest
-from lab_helpers import cli, table_rows
-from lab_helpers import root  # noqa: F401 (the project fixture)
+from lab_helpers import (
+    cli,
+    root,  # noqa: F401 (the project fixture)
+    table_rows,
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import sweep as lab_sweep

@@ -269,7 +269,8 @@ def check_indices(indices, n: int, name: str, *, unique: bool = False, allow_emp
     arr = arr.astype(np.int64)
     bad = (arr < 0) | (arr >= n)
     if bad.any():
-        raise ValueError(f"{name} must be indices in 0..{n - 1}; entry {int(np.argmax(bad))} is {int(arr[np.argmax(bad)])}")
+        first = int(np.argmax(bad))
+        raise ValueError(f"{name} must be indices in 0..{n - 1}; entry {first} is {int(arr[first])}")
     if unique and np.unique(arr).size != arr.size:
         raise ValueError(f"{name} repeat an index")
     return arr

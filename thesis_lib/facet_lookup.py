@@ -11,7 +11,6 @@ from __future__ import annotations
 import numpy as np
 
 from .jit import njit
-
 from .simplicial import facets, find_rows
 
 __all__ = ["facet_indices"]

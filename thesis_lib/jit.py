@@ -16,7 +16,7 @@ import functools
 import os
 from pathlib import Path
 
-__all__ = ["njit", "numba_cache_dir", "load_numba"]
+__all__ = ["njit", "prange", "numba_cache_dir", "load_numba"]
 
 _done_modules: set[int] = set()
 
@@ -48,6 +48,15 @@ def load_numba():
     return numba
 
 
+def prange(*args: int) -> range:
+    """``numba.prange`` for lazily compiled kernels: ``from thesis_lib.jit import prange``.
+
+    A plain ``range`` until numba is loaded; when a module's kernels are compiled, :func:`njit`'s proxy
+    replaces this name in the module by ``numba.prange`` (so that importing the module does not import
+    numba, and the loop is parallel once compiled with ``parallel=True``)."""
+    return range(*args)
+
+
 def _materialize(module_globals: dict) -> None:
     """Replace every lazy kernel of a module's namespace by its numba dispatcher (once per module)."""
     key = id(module_globals)
@@ -55,7 +64,8 @@ def _materialize(module_globals: dict) -> None:
         return
     _done_modules.add(key)
     numba = load_numba()
-    module_globals.setdefault("numba", numba)  # kernels may use numba.prange
+    if module_globals.get("prange") is prange:  # the kernels' parallel loops become numba's
+        module_globals["prange"] = numba.prange
     for name, obj in list(module_globals.items()):
         if isinstance(obj, _LazyKernel):
             module_globals[name] = obj.dispatcher()

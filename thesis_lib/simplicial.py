@@ -12,7 +12,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ._validate import check_coefficients, vertex_label
+from ._validate import vertex_label
 
 __all__ = [
     "as_simplex_array",

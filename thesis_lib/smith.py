@@ -68,14 +68,14 @@ def _is_int(x) -> bool:
 def _checked_entries(data: np.ndarray) -> np.ndarray:
     """The entries as int64, or as Python ints (object) when one does not fit; refuse non-integers."""
     dt = data.dtype
-    if dt == object:
+    if dt.kind == "O":  # object dtype (Python ints)
         if not all(_is_int(x) for x in data.flat):
             raise ValueError("matrix entries must be integers")
         out = np.array([int(x) for x in data.flat], dtype=object).reshape(data.shape)
         if out.size == 0 or max(abs(x) for x in out.flat) < 2**63:
             return out.astype(np.int64)
         return out
-    if dt == bool:
+    if dt.kind == "b":
         return data.astype(np.int64)
     if np.issubdtype(dt, np.unsignedinteger):
         if data.size and int(data.max()) >= 2**63:  # uint64 beyond int64: keep exact Python ints

@@ -10,8 +10,9 @@ enough and no Python object is made per simplex.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
+
+from ..jit import njit
 
 
 @njit(cache=True)
@@ -158,7 +159,8 @@ def upper_csr(n: int, edges: np.ndarray, edge_values: np.ndarray):
     counts = np.bincount(edges[:, 0], minlength=n) if edges.shape[0] else np.zeros(n, dtype=np.int64)
     indptr = np.zeros(n + 1, dtype=np.int64)
     np.cumsum(counts, out=indptr[1:])
-    return indptr, np.ascontiguousarray(edges[:, 1], dtype=np.int64), np.ascontiguousarray(edge_values, dtype=np.float64)
+    return (indptr, np.ascontiguousarray(edges[:, 1], dtype=np.int64),
+            np.ascontiguousarray(edge_values, dtype=np.float64))
 
 
 def flag_levels(n: int, edges: np.ndarray, edge_values: np.ndarray, max_dim: int,

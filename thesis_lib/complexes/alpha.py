@@ -15,11 +15,11 @@ linear solves.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
 from ..filtration import Filtration
+from ..jit import njit
 from ..simplicial import facets, find_rows, row_keys
 from .orthoballs import attached, orthoballs
 from .scaling import unscale_values

@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
+from ..filtration import Filtration
+from ..jit import njit
 from ..simplicial import facets, find_rows
 from ._flag import edges_within, expand_level, upper_csr
-from ..filtration import Filtration
 from .miniball import meb_radius_small
 from .scaling import scaled, unscale_values
 

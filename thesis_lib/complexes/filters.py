@@ -10,8 +10,9 @@ and flags the rows whose error amplification is too large to trust.
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
+
+from ..jit import njit
 
 __all__ = ["orient_filter", "insphere_filter", "orient_one", "insphere_one", "orthoball_float", "power_filter"]
 

@@ -12,11 +12,11 @@ Two independent implementations:
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import as_points, check_seed
+from ..jit import njit
 from .scaling import scaled
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]

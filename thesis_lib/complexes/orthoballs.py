@@ -28,7 +28,8 @@ __all__ = ["orthoballs", "attached"]
 _MAX_AMPLIFICATION = 100.0
 
 
-def orthoballs(geo: Geometry, simplices: npt.NDArray[np.int64]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def orthoballs(geo: Geometry,
+               simplices: npt.NDArray[np.int64]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Centres, squared radii, an error bound on the centres and an "exact" flag per simplex.
 
     Thesis: §2.1.2 (weighted point x ↔ sphere of squared radius w_x; power distance π_x).

@@ -152,7 +152,7 @@ class ScalarPredicates:
     for ties.  Points are indices into the :class:`~.predicates.Geometry`.
     """
 
-    def __init__(self, geo: "Geometry"):
+    def __init__(self, geo: Geometry):
         self.d = geo.d
         self.geo = geo
         self._x: dict[int, tuple[float, ...]] = {}

@@ -6,8 +6,8 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
-from ._flag import edges_within, flag_levels, matrix_edges
 from ..filtration import Filtration
+from ._flag import edges_within, flag_levels, matrix_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["rips"]

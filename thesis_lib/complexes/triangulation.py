@@ -26,14 +26,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from math import comb
 
-from ..jit import njit
 import numpy as np
-import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from .._validate import as_points, check_size, check_weights
+from ..jit import njit
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
@@ -213,7 +212,7 @@ def _hint_pairs(tri, hint):
                     good = True
                     a = 0
                     b = 0
-                    for q in range(w - 1):
+                    for _ in range(w - 1):
                         if a == i:
                             a += 1
                         if b == j:
@@ -350,7 +349,8 @@ def _same_volume(geo: Geometry, sub: np.ndarray, old: np.ndarray) -> bool:
     return abs(v_sub - v_old) <= 1e-9 * max(v_sub, v_old)
 
 
-def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray, walls: list[tuple[tuple[int, ...], int]]) -> np.ndarray | None:
+def _fill(geo: Geometry, sub: np.ndarray, sub_nb: np.ndarray,
+          walls: list[tuple[tuple[int, ...], int]]) -> np.ndarray | None:
     """Simplices of ``sub`` on the inner side of the wall facets, by flood fill; None if a wall is missing."""
     d = geo.d
     where: dict[tuple[int, ...], list[tuple[int, int]]] = {}

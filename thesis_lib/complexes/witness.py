@@ -18,13 +18,13 @@ Vertices of both complexes are landmark positions ``0..L-1``: vertex ``i`` is th
 
 from __future__ import annotations
 
-from ..jit import load_numba, njit
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
-from ._flag import lower_bound, flag_levels, matrix_edges
 from ..filtration import Filtration
+from ..jit import load_numba, njit, prange
+from ._flag import flag_levels, lower_bound, matrix_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
@@ -222,7 +222,7 @@ def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chun
     out_v = np.empty(total, dtype=np.float64)
     valid = np.zeros(total, dtype=np.bool_)
     n_chunks = max(1, min(m, n_chunks))
-    for c in numba.prange(n_chunks):
+    for c in prange(n_chunks):
         cur = np.empty(n_x)
         ccur = np.empty(n_x)
         idx = np.empty(n_x, dtype=np.int64)

@@ -18,11 +18,11 @@
 
 from __future__ import annotations
 
-from ..jit import njit
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import InvalidTypeError, resolve_alias
+from ..jit import njit
 from .manifold import checked_mesh
 from .validate import Mesh
 

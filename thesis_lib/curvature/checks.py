@@ -10,8 +10,6 @@ calls them; the tests pin them to closed forms.
 
 from __future__ import annotations
 
-from math import factorial
-
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial import ConvexHull, HalfspaceIntersection
@@ -134,7 +132,8 @@ def hyperarea_gradient_fd(points: ArrayLike, h: float = 1e-6) -> NDArray[np.floa
         plus, minus = p.copy(), p.copy()
         plus[:, 0, a] += h
         minus[:, 0, a] -= h
-        out[:, a] = (simplex_hyperareas(plus.reshape(-1, d), flat) - simplex_hyperareas(minus.reshape(-1, d), flat)) / (2 * h)
+        out[:, a] = (simplex_hyperareas(plus.reshape(-1, d), flat)
+                     - simplex_hyperareas(minus.reshape(-1, d), flat)) / (2 * h)
     return out
 
 

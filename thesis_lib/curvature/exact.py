@@ -9,8 +9,8 @@ signed values returned here.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from math import factorial
-from typing import Callable
 
 import numpy as np
 

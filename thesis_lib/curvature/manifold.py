@@ -18,7 +18,6 @@ import numpy as np
 import numpy.typing as npt
 
 from ..jit import njit
-
 from .validate import Mesh, validate_mesh
 
 __all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]

@@ -141,7 +141,8 @@ def _edges_with_weights(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     return edges, weights
 
 
-def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
+def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike,
+                      normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
     """Normal curvature estimate κ_ij = 2 (x_i − x_j)·n_i / ‖x_i − x_j‖² along every directed edge.
 
     Thesis: Equation (3.24) (circle through x_i and x_j tangent to the plane ⊥ n_i; κ = 1/R).

@@ -116,8 +116,8 @@ class Mesh(NamedTuple):
     areas: np.ndarray  #: ``(m,)`` hyperarea of each top simplex
     boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
-    tri: "TriangleGeometry | None" = None  #: per-corner data when n = 2, else None
-    pinched: "np.ndarray | None" = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
+    tri: TriangleGeometry | None = None  #: per-corner data when n = 2, else None
+    pinched: np.ndarray | None = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
 
     @property
     def n(self) -> int:

@@ -3,10 +3,10 @@
 Each topic lives in its own module; this package re-exports their public functions.
 """
 
-from .samplers import flat_torus, noisy_circle, two_circles, two_circles_intersections
 from .filtrations import dense_filtration, example_filtration, module_filtration, named_chain
-from .triangulations import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
+from .samplers import flat_torus, noisy_circle, two_circles, two_circles_intersections
 from .surfaces import sample_catenoid, sample_sphere, sample_torus, torus_grid
+from .triangulations import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
 
 __all__ = [
     "RP2_LABELS",

@@ -75,9 +75,9 @@ def dunce_hat() -> list[tuple[int, ...]]:
     """An 8-vertex, 17-triangle dunce hat: contractible, yet no edge is free (not collapsible).
 
     Thesis: §4.2.2 / §4.2.6 (collapses and optimal discrete Morse functions; the dunce hat is the
-    classic contractible complex that admits no collapse).  Vertices 0, 1, 2 lie on the glued edge 0–1–2–0 (each of its 3 edges is in 3
-    triangles); every other edge is in exactly 2 triangles.  Found by link-condition edge
-    contractions of a subdivided triangle with sides a, a, a⁻¹ glued.
+    classic contractible complex that admits no collapse).  Vertices 0, 1, 2 lie on the glued edge
+    0–1–2–0 (each of its 3 edges is in 3 triangles); every other edge is in exactly 2 triangles.
+    Found by link-condition edge contractions of a subdivided triangle with sides a, a, a⁻¹ glued.
     """
     return [
         (0, 1, 3), (0, 1, 4), (0, 1, 7), (0, 2, 4), (0, 2, 5), (0, 2, 6), (0, 3, 7), (0, 5, 6),

@@ -15,8 +15,8 @@ import ctypes.util
 import os
 import shutil
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator
 
 __all__ = ["replacing", "write_bytes", "write_text", "staging", "replace_dir", "recover", "clean_stale"]
 

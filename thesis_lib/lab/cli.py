@@ -68,7 +68,8 @@ def _print_table(runs, table, what: str) -> int:
         detail = f"{r.error} (see {r.path / 'error.txt'})" if r.status == "failed" else f"no run folder {r.path}"
         _err(f"{r.status}: {r.params} -> {detail}")
     if bad:
-        _err(f"{what}: {sum(r.status == 'failed' for r in bad)} failed, {sum(r.status == 'missing' for r in bad)} missing")
+        failed, missing = sum(r.status == "failed" for r in bad), sum(r.status == "missing" for r in bad)
+        _err(f"{what}: {failed} failed, {missing} missing")
     return 1 if bad else 0
 
 
@@ -206,7 +207,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--executor", choices=["local", "dask"], default="local")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a running Dask scheduler (tcp://host:8786)")
     p.add_argument("--shard", metavar="I/N", help="run only the I-th of N slices of the grid (job arrays)")
-    p.add_argument("--retries", type=_int_from(0), default=2, help="Dask: retries of a run whose worker died (default 2)")
+    p.add_argument("--retries", type=_int_from(0), default=2,
+                   help="Dask: retries of a run whose worker died (default 2)")
     p.add_argument("--max-output-mb", type=_positive_float, default=64.0,
                    help="largest total size of one run's outputs sent back from a worker (default 64)")
     p.set_defaults(func=_cmd_sweep)

@@ -73,7 +73,8 @@ def _validated(item: object, source: Path) -> Entry:
     names = [f.name for f in fields(Entry)]
     unknown, missing = set(item) - set(names), set(names) - set(item)
     if unknown or missing:
-        raise DataError(f"{source}: entry {item.get('name', '?')!r}: unknown keys {sorted(unknown)}, missing {sorted(missing)}")
+        raise DataError(f"{source}: entry {item.get('name', '?')!r}: unknown keys {sorted(unknown)}, "
+                        f"missing {sorted(missing)}")
     name, size, url = item["name"], item["size"], item["url"]
     if not isinstance(name, str) or not _NAME.fullmatch(name):
         raise DataError(f"{source}: entry name {name!r} must be 1-64 letters, digits, '.', '_' or '-'")

@@ -92,7 +92,8 @@ def experiment_parameters(name: str) -> dict[str, object]:
     try:
         tree = ast.parse(_parameters_cell(nb))
     except SyntaxError as exc:
-        raise ParameterError(f"{name}: the parameters cell is not valid Python ({exc.msg}, line {exc.lineno})") from None
+        raise ParameterError(f"{name}: the parameters cell is not valid Python ({exc.msg}, "
+                             f"line {exc.lineno})") from None
     params: dict[str, object] = {}
     for node in tree.body:
         if not (isinstance(node, ast.Assign) and len(node.targets) == 1 and isinstance(node.targets[0], ast.Name)):

@@ -122,8 +122,9 @@ def _parse(item: object, source: str) -> Claim:
         raise ClaimError(f"{where}: provenance must be one of {PROVENANCES}, got {item.get('provenance')!r} (required)")
     if item.get("section", "thesis") not in SECTIONS:
         raise ClaimError(f"{where}: section must be one of {SECTIONS}, got {item['section']!r}")
-    if "link" in item and (not isinstance(item["link"], str) or not _LINK.fullmatch(item["link"]) or ".." in item["link"]):
-        raise ClaimError(f"{where}: link must be '<book page>#<label>' (like 'ch3-curvature#fig-3-5'), got {item['link']!r}")
+    link = item.get("link")
+    if "link" in item and (not isinstance(link, str) or not _LINK.fullmatch(link) or ".." in link):
+        raise ClaimError(f"{where}: link must be '<book page>#<label>' (like 'ch3-curvature#fig-3-5'), got {link!r}")
     for key in ("rtol", "atol", "low", "high"):
         if key in item and (isinstance(item[key], bool) or not isinstance(item[key], (int, float))):
             raise ClaimError(f"{where}: {key} must be a number, got {item[key]!r}")
@@ -349,7 +350,8 @@ def _place(row: dict[str, object], link_suffix: str) -> str:
     return f"[{row['where']}]({page}{link_suffix}#{label})"
 
 
-def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False, link_suffix: str = ".html") -> str:
+def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False,
+             link_suffix: str = ".html") -> str:
     """The report as Markdown: the thesis's claims in its order, then new work beyond the thesis.
 
     ``with_summary`` puts :func:`summary_markdown` first; a claim's thesis place links to

@@ -19,6 +19,7 @@ import sys
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import nbformat
 
@@ -36,6 +37,9 @@ from .experiments import (
 )
 from .paths import PROJECT_ENV, project_root
 from .results import DEFAULT_RUN_ENV, RESULTS_FILE, ResultsError, results_dir
+
+if TYPE_CHECKING:  # at run time the module __getattr__ below (.sweep imports this module)
+    from .sweep import collect, stored_sweeps, sweep
 
 __all__ = [
     "ParameterError",
@@ -104,7 +108,8 @@ def read_run(name: str, params: dict[str, object], root: Path | None = None) -> 
         try:
             result.results = json.loads((path / RESULTS_FILE).read_text())
         except json.JSONDecodeError as exc:
-            raise ResultsError(f"{path / RESULTS_FILE} is not valid JSON ({exc}); delete the run folder and run it again") from None
+            raise ResultsError(f"{path / RESULTS_FILE} is not valid JSON ({exc}); "
+                               "delete the run folder and run it again") from None
     return result
 
 
@@ -139,7 +144,8 @@ def write_run(name: str, params: dict[str, object], output: RunOutput, root: Pat
             if not (tmp / ERROR_FILE).exists():
                 (tmp / ERROR_FILE).write_text(output.error + "\n")
             (tmp / FAILED_FILE).write_text(_json({**info, "error": output.error}))
-    result = RunResult(name, params, dest, output.status, error=output.error, seconds=output.seconds, worker=output.worker)
+    result = RunResult(name, params, dest, output.status, error=output.error, seconds=output.seconds,
+                       worker=output.worker)
     if (dest / RESULTS_FILE).is_file() and output.status == "ok":
         result.results = json.loads((dest / RESULTS_FILE).read_text())
     return result

@@ -24,8 +24,8 @@ import io
 import itertools
 import logging
 import types
+from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Callable, Iterator
 
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker
@@ -146,7 +146,8 @@ def dask_client(
 
     say = log or (lambda text: None)
     cluster = None
-    with dask.config.set({"distributed.scheduler.allowed-failures": retries, "distributed.comm.timeouts.connect": f"{timeout}s"}):
+    with dask.config.set({"distributed.scheduler.allowed-failures": retries,
+                          "distributed.comm.timeouts.connect": f"{timeout}s"}):
         try:
             if scheduler:
                 client = Client(scheduler, timeout=f"{timeout}s")
@@ -158,7 +159,8 @@ def dask_client(
             if cluster is not None:
                 cluster.close()
             if scheduler:
-                raise ClusterError(f"could not reach the Dask scheduler at {scheduler!r} within {timeout:g} s: {exc}") from None
+                raise ClusterError(f"could not reach the Dask scheduler at {scheduler!r} within {timeout:g} s: "
+                                   f"{exc}") from None
             raise ClusterError(f"could not start a local Dask cluster of {jobs} workers: {exc}") from None
         try:
             try:
@@ -221,7 +223,8 @@ def _outcome(future: cf.Future) -> RunOutput:
         return future.result()
     except Exception as exc:  # the task itself failed: its worker died too often, or it could not run
         kind = type(exc).__name__
-        why = "its worker died on every attempt (killed or out of memory)" if kind == "KilledWorker" else "it could not run"
+        why = ("its worker died on every attempt (killed or out of memory)" if kind == "KilledWorker"
+               else "it could not run")
         return RunOutput("failed", error=f"{kind}: {why}: {exc}")
 
 
@@ -373,7 +376,8 @@ def _cancel(pending: dict, pool: cf.Executor | None) -> None:
         cancel_runs(False)
 
 
-def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = None, keep: bool = False) -> tuple[list[RunResult], Path]:
+def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = None,
+            keep: bool = False) -> tuple[list[RunResult], Path]:
     """The sweep table of ``grid`` built from the run folders that exist (after ``--shard`` runs).
 
     Points without a run folder are rows with status ``missing``; nothing is executed.

@@ -6,7 +6,7 @@ A cell is written as text: floats with a given number of significant digits, ``N
 
 from __future__ import annotations
 
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 __all__ = ["cell", "header", "row", "markdown_table"]
 

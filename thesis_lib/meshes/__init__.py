@@ -16,12 +16,12 @@ from .grids import (
 )
 from .hull import convex_hull_surface, orient_outward, sphere_hull
 from .io import from_pyvista, read_mesh, to_pyvista, write_mesh
-from .plotting import mesh_figure, render_mesh
 from .pivoting import ball_pivoting, estimate_normals
+from .plotting import mesh_figure, render_mesh
 from .reconstruct import RECONSTRUCTIONS, reconstruct_surface
 from .sampling import sample_catenoid, sample_sphere, sample_torus
 from .stencil import cross_stars, neighbour_grid_mean_curvature
-from .topology import euler_characteristic, facet_degrees, faces_of, is_closed_pseudomanifold
+from .topology import euler_characteristic, faces_of, facet_degrees, is_closed_pseudomanifold
 
 __all__ = [
     "RECONSTRUCTIONS",

@@ -13,7 +13,8 @@ from .sampling import sample_sphere
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]
 
 
-def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike, centre: npt.ArrayLike | None = None) -> np.ndarray:
+def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
+                   centre: npt.ArrayLike | None = None) -> np.ndarray:
     """Reorder each facet so that det[v_1 - v_0, ..., v_n - v_0, v_0 - centre] > 0 (outward normal).
 
     Thesis: eq. (3.9) (orientation of N = X_{u_1} ∧ ... ∧ X_{u_n}/W).

@@ -53,7 +53,8 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
     if estimator == "knn":
         return knn_curvature(pts, kind=kind, k=k)
     if kind == "gaussian" and pts.shape[1] != 3:
-        raise ValueError(f"the Gaussian curvature (Definition 3.21) is for surfaces in R³, got points in R^{pts.shape[1]}")
+        raise ValueError("the Gaussian curvature (Definition 3.21) is for surfaces in R³, "
+                         f"got points in R^{pts.shape[1]}")
     if pts.shape[1] == 3:
         faces = crust(pts)
     else:

@@ -11,7 +11,7 @@ half is exact to leading order in ε: |H| = ‖∇ area‖ / (n · area/2) → |
 from __future__ import annotations
 
 import itertools
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 import numpy.typing as npt

@@ -62,6 +62,12 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
     def unpaired_faces(g: int, v: int) -> list[int]:
         return [h for h in lower_faces(g, v) if not done[h]]
 
+    def push_ones(cells: Sequence[int], v: int, pq_one: list[tuple[tuple[int, ...], int]]) -> None:
+        for a in cells:
+            for b in lower_cofaces(a, v):
+                if not done[b] and len(unpaired_faces(b, v)) == 1:
+                    heapq.heappush(pq_one, (keys[b], b))
+
     for v in range(cx.counts[0]):
         star = members[v]
         if len(star) == 1:
@@ -74,14 +80,7 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
         pq_zero = [(keys[g], g) for g in edges if g != delta]
         heapq.heapify(pq_zero)
         pq_one: list[tuple[tuple[int, ...], int]] = []
-
-        def push_ones(cells: Sequence[int]) -> None:
-            for a in cells:
-                for b in lower_cofaces(a, v):
-                    if not done[b] and len(unpaired_faces(b, v)) == 1:
-                        heapq.heappush(pq_one, (keys[b], b))
-
-        push_ones([delta])
+        push_ones([delta], v, pq_one)
         while pq_one or pq_zero:
             while pq_one:
                 _, a = heapq.heappop(pq_one)
@@ -94,13 +93,13 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
                     b = free[0]
                     partner[a], partner[b] = b, a
                     done[a] = done[b] = True
-                    push_ones([a, b])
+                    push_ones([a, b], v, pq_one)
             while pq_zero and done[pq_zero[0][1]]:
                 heapq.heappop(pq_zero)
             if pq_zero:
                 _, c = heapq.heappop(pq_zero)
                 done[c] = True  # critical
-                push_ones([c])
+                push_ones([c], v, pq_one)
     return partner
 
 

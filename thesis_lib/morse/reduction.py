@@ -13,14 +13,15 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-from ..filtration import Filtration, as_complex
 from .._validate import InvalidTypeError, resolve_coefficients
+from ..filtration import Filtration, as_complex
 from ..persistence.chains import chain_persistence
 from ._cells import CellComplex, partner_array
 from ._gradient import morse_boundary_ids
 from ._kernels import greedy_partner
 
-__all__ = ["MorseReduction", "lower_star_filtration", "filtration_matching", "morse_reduce", "reduced_persistence", "chain_persistence"]
+__all__ = ["MorseReduction", "lower_star_filtration", "filtration_matching", "morse_reduce", "reduced_persistence",
+           "chain_persistence"]
 
 
 def _cells_and_values(filt: Filtration) -> tuple[CellComplex, np.ndarray]:
@@ -43,7 +44,8 @@ def lower_star_filtration(simplices, vertex_values) -> Filtration:
     if not np.all(np.isfinite(vals)):
         raise ValueError("vertex values must be finite (no NaN or inf)")
     if int(arrays[0].max()) >= vals.shape[0]:
-        raise ValueError(f"vertex values cover {vals.shape[0]} vertices but the complex uses vertex {int(arrays[0].max())}")
+        raise ValueError(f"vertex values cover {vals.shape[0]} vertices but the complex uses vertex "
+                         f"{int(arrays[0].max())}")
     return Filtration(arrays, [vals[a].max(axis=1) for a in arrays], validate=False)
 
 

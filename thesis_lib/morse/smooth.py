@@ -131,7 +131,8 @@ def morse_inequalities(critical_counts: Sequence[int], betti: Sequence[int]) -> 
     b = np.pad(b, (0, n - b.size))
     signs = (-1) ** np.arange(n)
     strong = all(
-        int(np.sum(signs[: k + 1][::-1] * b[: k + 1])) <= int(np.sum(signs[: k + 1][::-1] * c[: k + 1])) for k in range(n)
+        int(np.sum(signs[: k + 1][::-1] * b[: k + 1])) <= int(np.sum(signs[: k + 1][::-1] * c[: k + 1]))
+        for k in range(n)
     )
     return {
         "weak": bool(np.all(b <= c)),

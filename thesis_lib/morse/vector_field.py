@@ -134,7 +134,8 @@ def vpaths(simplices, pairs: Pairs, start: Sequence[int], max_paths: int = 100_0
     return paths
 
 
-def gradient_paths(simplices, pairs: Pairs, tau: Sequence[int], sigma: Sequence[int]) -> list[tuple[list[Simplex], int]]:
+def gradient_paths(simplices, pairs: Pairs, tau: Sequence[int],
+                   sigma: Sequence[int]) -> list[tuple[list[Simplex], int]]:
     """Gradient paths from a maximal face of ``tau`` to ``sigma`` with their multiplicities ±1.
 
     Thesis: Theorem 4.42 (Γ(τ, σ) and m(γ); orientation of τ induced along the path, Figure 4.5).

@@ -114,7 +114,8 @@ class Bifiltration:
         return self.filtration([g[:, 0] for g in self.grades], keep)
 
     def __repr__(self) -> str:
-        return f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, max_homology_dim={self.max_homology_dim})"
+        return (f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, "
+                f"max_homology_dim={self.max_homology_dim})")
 
 
 def _vertex_values(values, labels: np.ndarray, name: str) -> np.ndarray:

@@ -141,7 +141,8 @@ class Barcode:
 
     # ------------------------------------------------------------------ construction
     @classmethod
-    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]], dimensions: Iterable[int] | None = None) -> Barcode:
+    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]],
+                   dimensions: Iterable[int] | None = None) -> Barcode:
         """Build from ``(dim, (birth, death))`` pairs, the format of GUDHI's ``persistence()``.
 
         Thesis: Definition 2.34 (a set of P-intervals per dimension).

@@ -11,9 +11,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..jit import njit
-
 from .._validate import check_coefficients
+from ..jit import njit
 from .barcode import Barcode
 from .kernels import grow, heap_push, mod_inverse, pop_pivot
 

@@ -22,10 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..jit import njit
-
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
+from ..jit import njit
 from .barcode import Barcode
 from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
 
@@ -96,7 +95,8 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
         lower, upper = K.simplices[1], K.simplices[2]
         n = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
         if n * n <= max(1 << 22, 8 * lower.shape[0]):
-            out = _coboundary_triangles(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(n), up_values)
+            out = _coboundary_triangles(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(n),
+                                        up_values)
             if out[5] >= 0:
                 t = upper[out[5]]
                 raise ValueError(f"an edge of the triangle {tuple(int(v) for v in t)} is missing from the filtration")

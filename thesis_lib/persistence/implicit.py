@@ -51,9 +51,8 @@ import math
 
 import numpy as np
 
-from ..jit import load_numba, njit
-
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
+from ..jit import load_numba, njit, prange
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
 
@@ -565,7 +564,7 @@ def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, 
 def _apparent_parallel(k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen, B, nblocks, tau, sign, apparent):
     m = cand_i.shape[0]
     size = (m + nblocks - 1) // nblocks
-    for t in numba.prange(nblocks):
+    for t in prange(nblocks):
         _apparent_block(t * size, min(m, (t + 1) * size), k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, dlen,
                         B, tau, sign, apparent)
 

@@ -90,8 +90,9 @@ def plot_barcode(
     if axes is None:
         heights = [max(1, bars[d].shape[0]) for d in dims]
         ratios = [0.6 + min(h, 40) for h in heights]
+        height = 0.9 + 0.22 * sum(min(h, 40) for h in heights) + 0.5 * len(dims)
         fig, axes = plt.subplots(
-            len(dims), 1, sharex=True, squeeze=False, figsize=(6.4, 0.9 + 0.22 * sum(min(h, 40) for h in heights) + 0.5 * len(dims)),
+            len(dims), 1, sharex=True, squeeze=False, figsize=(6.4, height),
             gridspec_kw={"height_ratios": ratios},
         )
         axes = axes[:, 0]
