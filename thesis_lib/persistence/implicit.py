@@ -153,23 +153,68 @@ def _csr_kernel(n, edges, lengths):
         fill[v] += 1
     for v in range(n):
         a, b = indptr[v], indptr[v + 1]
-        order = np.argsort(-nbr[a:b])
-        nbr[a:b] = nbr[a:b][order]
-        length[a:b] = length[a:b][order]
+        rising = True  # edges in lexicographic order (every source of ours) fill each list rising
+        for e in range(a + 1, b):
+            if nbr[e] <= nbr[e - 1]:
+                rising = False
+                break
+        if rising:
+            nbr[a:b] = nbr[a:b][::-1].copy()
+            length[a:b] = length[a:b][::-1].copy()
+        else:
+            order = np.argsort(-nbr[a:b])
+            nbr[a:b] = nbr[a:b][order]
+            length[a:b] = length[a:b][order]
     return indptr, nbr, length
 
 
-@njit(cache=True)
 def _by_distance(indptr, nbr, length):
-    """The same neighbour lists sorted by increasing distance (for the apparent-pair test)."""
-    dnbr = np.empty_like(nbr)
-    dlen = np.empty_like(length)
-    for v in range(indptr.shape[0] - 1):
-        a, b = indptr[v], indptr[v + 1]
-        order = np.argsort(length[a:b], kind="mergesort")
-        dnbr[a:b] = nbr[a:b][order]
-        dlen[a:b] = length[a:b][order]
-    return dnbr, dlen
+    """The same neighbour lists sorted by increasing distance, ties by decreasing neighbour (for the
+    apparent-pair test): one sort of every entry by distance (numpy's), then a stable pass that
+    puts each entry back in its vertex's list."""
+    return _by_distance_kernel(indptr, nbr, length, np.argsort(length))
+
+
+@njit(cache=True)
+def _by_distance_kernel(indptr, nbr, length, order):
+    n = indptr.shape[0] - 1
+    owner = np.empty(nbr.shape[0], dtype=np.int64)
+    for v in range(n):
+        owner[indptr[v] : indptr[v + 1]] = v
+    fill = indptr[:-1].copy()
+    pos = np.empty(nbr.shape[0], dtype=np.int64)
+    for t in range(order.shape[0]):
+        e = order[t]
+        v = owner[e]
+        pos[fill[v]] = e
+        fill[v] += 1
+    for v in range(n):
+        _ties_by_index(pos[indptr[v] : indptr[v + 1]], length, nbr)
+    return nbr[pos], length[pos]
+
+
+@njit(cache=True)
+def _ties_by_index(order, key, idx):
+    """Within each run of equal ``key[order]``, put ``order`` by decreasing ``idx`` (in place): an
+    order by key up and then idx down, from any order by key up."""
+    m = order.shape[0]
+    a = 0
+    while a < m:
+        b = a + 1
+        while b < m and key[order[b]] == key[order[a]]:
+            b += 1
+        if b - a > 16:  # a long run (many equal distances): sort it
+            run = order[a:b].copy()
+            order[a:b] = run[np.argsort(-idx[run], kind="mergesort")]
+        else:
+            for x in range(a + 1, b):  # insertion sort
+                t = order[x]
+                y = x - 1
+                while y >= a and idx[order[y]] < idx[t]:
+                    order[y + 1] = order[y]
+                    y -= 1
+                order[y + 1] = t
+        a = b
 
 
 @njit(cache=True)
@@ -213,7 +258,7 @@ def _vertices(idx, k, n, B, out):
         top = lo - 1
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _dist(indptr, nbr, length, D, u, v):
     """Distance of u and v: from the dense matrix ``D`` when there is one (small n), else by binary
     search in u's neighbour list (decreasing); inf if there is no edge."""
@@ -303,15 +348,27 @@ def _upper(arr, lo, hi, x):
     return lo
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen, B, cur, od, oi, om):
     """The earliest coface of the k-simplex σ if it has σ's diameter (else −1), and its m.
 
     The cofaces of σ's diameter are σ ∪ {j} for the j within ``diam`` of every vertex; the earliest is
     the one with the largest j.  When one vertex has few neighbours that close, they are read from
     its distance-sorted list and checked (short simplices: a handful); otherwise the coboundary is
-    scanned with j decreasing and stops at the first hit (long simplices: found almost at once).
+    scanned with j decreasing and stops at the first hit (long simplices: found almost at once) —
+    with a dense distance matrix, a plain scan of the matrix's columns j = n − 1, n − 2, … (no list
+    merging).  Returns (index, m, j) with j the added vertex, (−1, 0, −1) when there is none.
     """
+    if D.shape[0] > 0:  # every vertex has more than 1/8 of its neighbours within diam: scan D
+        wide = True
+        for i in range(k + 1):
+            v = verts[i]
+            deg = indptr[v + 1] - indptr[v]
+            if deg == 0 or dlen[indptr[v] + deg // 8] > diam:
+                wide = False
+                break
+        if wide:
+            return _with_vertex(verts, k, idx, _dense_first(verts, k, diam, D), B)
     best = -1
     bcount = np.int64(1) << 62
     for i in range(k + 1):
@@ -320,12 +377,14 @@ def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen,
         if c < bcount:
             bcount = c
             best = i
-    if 8 * bcount > indptr[verts[best] + 1] - indptr[verts[best]]:
-        if _cofaces(verts, k, idx, diam, indptr, nbr, length, B, cur, od, oi, om, True, False):
-            return oi[0], om[0]
-        return np.int64(-1), np.int64(0)
-    vb = verts[best]
     jmax = np.int64(-1)
+    if 8 * bcount > indptr[verts[best] + 1] - indptr[verts[best]]:
+        if D.shape[0] > 0:
+            return _with_vertex(verts, k, idx, _dense_first(verts, k, diam, D), B)
+        if _cofaces(verts, k, idx, diam, indptr, nbr, length, B, cur, od, oi, om, True, False):
+            return oi[0], om[0], np.int64(-1)  # j unknown: the caller decodes the coface
+        return np.int64(-1), np.int64(0), np.int64(-1)
+    vb = verts[best]
     for e in range(indptr[vb], indptr[vb] + bcount):
         j = dnbr[e]
         if j <= jmax:
@@ -337,23 +396,47 @@ def _zero_pivot_cofacet(verts, k, idx, diam, indptr, nbr, length, D, dnbr, dlen,
                 break
         if ok:
             jmax = j
-    if jmax < 0:
-        return np.int64(-1), np.int64(0)
-    idx_above = np.int64(0)
-    idx_below = idx
-    m = 0
-    while m <= k and verts[m] > jmax:
-        idx_below -= B[verts[m], k + 1 - m]
-        idx_above += B[verts[m], k + 2 - m]
-        m += 1
-    return idx_above + B[jmax, k + 2 - m] + idx_below, np.int64(m)
+    return _with_vertex(verts, k, idx, jmax, B)
 
 
 @njit(cache=True)
-def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd):
+def _dense_first(verts, k, diam, D):
+    """The largest j within ``diam`` of each of the k + 1 vertices ``verts`` in the dense matrix D,
+    −1 if there is none (D[v, v] = inf: the vertices themselves never match)."""
+    for j in range(D.shape[0] - 1, -1, -1):
+        ok = True
+        for i in range(k + 1):
+            if D[verts[i], j] > diam:
+                ok = False
+                break
+        if ok:
+            return np.int64(j)
+    return np.int64(-1)
+
+
+@njit(cache=True)
+def _with_vertex(verts, k, idx, j, B):
+    """(index of σ ∪ {j}, m = #vertices of σ above j, j) for the k-simplex σ = ``idx``; (−1, 0, −1)
+    when j < 0."""
+    if j < 0:
+        return np.int64(-1), np.int64(0), np.int64(-1)
+    idx_above = np.int64(0)
+    idx_below = idx
+    m = 0
+    while m <= k and verts[m] > j:
+        idx_below -= B[verts[m], k + 1 - m]
+        idx_above += B[verts[m], k + 2 - m]
+        m += 1
+    return idx_above + B[j, k + 2 - m] + idx_below, np.int64(m), np.int64(j)
+
+
+@njit(cache=True, inline="always")
+def _zero_pivot_facet(tau, k1, n, diam, indptr, nbr, length, D, B, w, pd, known):
     """The latest facet of the (k1)-simplex ``tau`` if it has tau's diameter, else −1; also its
-    position r (the omitted vertex is w[r], so its sign in ∂τ is (−1)^r)."""
-    _vertices(tau, k1, n, B, w)
+    position r (the omitted vertex is w[r], so its sign in ∂τ is (−1)^r).  With ``known`` the
+    vertices of tau are already in ``w`` (decreasing); otherwise they are decoded from ``tau``."""
+    if not known:
+        _vertices(tau, k1, n, B, w)
     for a in range(k1 + 1):
         for b in range(a + 1, k1 + 1):
             d = _dist(indptr, nbr, length, D, w[a], w[b])
@@ -465,12 +548,15 @@ def _apparent_block(lo, hi, k, cand_i, cand_d, n, indptr, nbr, length, D, dnbr, 
     pd = np.zeros((k + 2, k + 2), dtype=np.float64)
     for c in range(lo, hi):
         _vertices(cand_i[c], k, n, B, verts)
-        t_c, m_c = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, D, dnbr, dlen,
-                                       B, cur, od, oi, om)
+        t_c, m_c, j = _zero_pivot_cofacet(verts, k, cand_i[c], cand_d[c], indptr, nbr, length, D, dnbr, dlen,
+                                          B, cur, od, oi, om)
         if t_c != -1:
             tau[c] = t_c
             sign[c] = 1 - 2 * (m_c & 1)
-            f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd)
+            if j >= 0:  # τ's vertices: σ's with j inserted at position m
+                for r in range(k + 2):
+                    w[r] = verts[r] if r < m_c else (j if r == m_c else verts[r - 1])
+            f, _ = _zero_pivot_facet(t_c, k + 1, n, cand_d[c], indptr, nbr, length, D, B, w, pd, j >= 0)
             apparent[c] = f == cand_i[c]
 
 
@@ -942,8 +1028,8 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
     intervals: dict[int, np.ndarray] = {}
     # ---- H0: union–find
     ed, ei = _edges(np.int64(n), indptr, nbr, length)
-    order = np.argsort(ed[::-1], kind="stable")  # filtration order: diameter up, index down
-    order = ei.shape[0] - 1 - order
+    order = np.argsort(ed)  # filtration order: diameter up, index down
+    _ties_by_index(order, ed, ei)
     d0, comps, positive = _h0(np.int64(n), order, ed, ei, B)
     iv0 = np.empty((d0.shape[0] + comps, 2))
     iv0[: d0.shape[0], 0] = 0.0
