@@ -17,18 +17,11 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._unionfind import find as _find
 from ..jit import njit
 from .validate import Mesh, validate_mesh
 
 __all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]
-
-
-@njit(cache=True)
-def _find(parent, x):
-    while parent[x] != x:
-        parent[x] = parent[parent[x]]
-        x = parent[x]
-    return x
 
 
 @njit(cache=True)

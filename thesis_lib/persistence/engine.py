@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._unionfind import find as _find
 from .._validate import resolve_coefficients
 from ..filtration import as_complex
 from ..jit import njit
@@ -105,14 +106,6 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
 
 
 # ---------------------------------------------------------------------------- H0: union-find
-@njit(cache=True)
-def _find(parent: np.ndarray, x: np.int64) -> np.int64:
-    while parent[x] != x:
-        parent[x] = parent[parent[x]]
-        x = parent[x]
-    return x
-
-
 @njit(cache=True)
 def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
     """Elder-rule union–find over the edges in filtration order.

@@ -51,6 +51,7 @@ import math
 
 import numpy as np
 
+from .._unionfind import find as _find
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
 from ..jit import load_numba, njit, prange
 from .barcode import Barcode
@@ -478,14 +479,6 @@ def _table(size):
 
 
 # ---------------------------------------------------------------------------- dimension 0
-@njit(cache=True)
-def _find(parent, x):
-    while parent[x] != x:
-        parent[x] = parent[parent[x]]
-        x = parent[x]
-    return x
-
-
 @njit(cache=True)
 def _edges(n, indptr, nbr, length):
     """Every edge as (diameter, index = C(u, 2) + v for u > v), by increasing index."""
