@@ -300,7 +300,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
     rows = harness.stream_table(COLUMNS, names, lambda name: make_row(name, args.repeat))
     if args.case and not args.quick:  # refresh some rows of the stored results
         path = harness.RESULTS / "homology.json"
-        stored = json.loads(path.read_text()) if path.exists() else []
+        stored = harness.read_results(path)[1] if path.exists() else []
         fresh = {r["case"]: r for r in rows}
         rows = [fresh.pop(r["case"], r) for r in stored] + list(fresh.values())
     harness.write_rows("homology", rows, args.quick)
