@@ -318,3 +318,17 @@ def test_absurd_grid_dimensions_and_complex_corners_are_refused():
         hypersphere_freudenthal(np.pi / 4, 2.0, 2**70)
     with pytest.raises(ValueError, match="complex numbers are not coordinates"):
         circumcentric_fractions(np.zeros((1, 3, 2)) + 1j)
+
+
+def test_dense_expansions_to_a_huge_dimension_are_refused_up_front():
+    """Regression (--fuzz-long): Čech of a 4 × 4 × 4 grid at ε = 2 with max_dim = 2**70 expanded for
+    minutes before any level grew too large; the clique bound Σ C(deg⁺, d) refuses it at once."""
+    import numpy as np
+
+    from thesis_lib.complexes import cech, rips
+
+    grid = np.array([[i, j, k] for i in range(4) for j in range(4) for k in range(4)], dtype=float)
+    for build in (cech, rips):
+        with pytest.raises(ValueError, match="could number up to"):
+            build(grid, 2.0, 2**70)
+        assert len(build(grid, 0.6, 3)) == 208  # the unit-spaced grid's 64 vertices and 144 edges

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from .._validate import MAX_SIMPLICES
 from ..jit import njit
 
 
@@ -163,6 +164,25 @@ def upper_csr(n: int, edges: np.ndarray, edge_values: np.ndarray):
             np.ascontiguousarray(edge_values, dtype=np.float64))
 
 
+def check_expansion(indptr: np.ndarray, max_dim: int) -> None:
+    """Refuse up front a clique expansion to ``max_dim`` that could build more than ``MAX_SIMPLICES``.
+
+    A d-simplex of a flag complex is counted once by its lowest vertex, whose d other vertices are
+    among its forward neighbours (``indptr`` of the upper adjacency), so there are at most
+    Σ_v C(deg⁺(v), d) of them.  Summed over d = 2..max_dim in O(n · max_dim), before any level is
+    built: a large ``max_dim`` over a dense graph would otherwise expand for hours before a level
+    got too large to store.
+    """
+    from scipy.special import comb
+
+    deg = np.diff(indptr)
+    top = min(int(max_dim), int(deg.max(initial=0)))
+    bound = float(sum(np.sum(comb(deg, d, exact=False)) for d in range(2, top + 1)))
+    if bound > MAX_SIMPLICES:
+        raise ValueError(f"simplices of dimension 2 to {max_dim} could number up to {bound:.3g} (more than "
+                         f"the limit of {MAX_SIMPLICES:,}): lower max_radius or max_dim")
+
+
 def flag_levels(n: int, edges: np.ndarray, edge_values: np.ndarray, max_dim: int,
                 vertex_values: np.ndarray | None = None):
     """Per-dimension simplex and value arrays of the flag complex of a weighted graph.
@@ -180,6 +200,7 @@ def flag_levels(n: int, edges: np.ndarray, edge_values: np.ndarray, max_dim: int
         simplices.append(edges)
         values.append(edge_values)
         indptr, indices, vals = upper_csr(n, edges, edge_values)
+        check_expansion(indptr, max_dim)
         for _ in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break

@@ -9,7 +9,7 @@ from .._validate import as_points, check_max_dim, check_radius
 from ..filtration import Filtration
 from ..jit import njit
 from ..simplicial import facets, find_rows
-from ._flag import edges_within, expand_level, upper_csr
+from ._flag import check_expansion, edges_within, expand_level, upper_csr
 from .miniball import meb_radius_small
 from .scaling import scaled, unscale_values
 
@@ -65,6 +65,7 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
         simplices.append(edges)
         values.append(lengths * 0.5)
         indptr, indices, vals = upper_csr(n, edges, lengths * 0.5)
+        check_expansion(indptr, max_dim)
         for d in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break
