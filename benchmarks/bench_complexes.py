@@ -151,9 +151,7 @@ def make_row(name: str, rounds: int | None) -> dict:
     if CASES[name]["kind"] in ("rips", "alpha", "alpha-weighted", "alpha-grid") and counts["ours"] != counts["gudhi"]:
         raise AssertionError(f"{name}: ours built {counts['ours']} simplices, GUDHI {counts['gudhi']}")
     for tool in ("ours", "gudhi"):
-        mem = harness.memory(__file__, name, tool)
-        row[f"{tool}_mb"] = mem["delta_mb"]
-        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+        row.update(harness.memory_fields(__file__, tool, name, tool))
     row["reference"] = REFERENCE[CASES[name]["kind"]]
     return row
 

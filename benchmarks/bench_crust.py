@@ -84,9 +84,7 @@ def make_row(n: int, rounds: int | None) -> dict:
     row["ours_closed_genus1"] = closed["ours"]
     row["ball_pivoting_closed_genus1"] = closed["ball_pivoting"]
     for tool, key in zip(TOOLS, ("ours", "ball_pivoting", "delaunay")):
-        mem = harness.memory(__file__, n, tool)
-        row[f"{key}_mb"] = mem["delta_mb"]
-        row[f"{key}_baseline_mb"] = mem["baseline_mb"]
+        row.update(harness.memory_fields(__file__, key, n, tool))
     return row
 
 

@@ -115,9 +115,7 @@ def make_row(name: str, rounds: int | None) -> dict:
            "n_faces": int(len(F)), **harness.ratio_fields(result), "max_abs_diff": diff["value"],
            "reference": "libigl " + importlib.metadata.version("libigl")}
     for tool in ("ours", "libigl"):
-        mem = harness.memory(__file__, name, tool)
-        row[f"{tool}_mb"] = mem["delta_mb"]
-        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+        row.update(harness.memory_fields(__file__, tool, name, tool))
     return row
 
 

@@ -99,8 +99,7 @@ def run_case(case: str, rounds: int | None) -> dict:
            "same_barcode": True, "step_only": True}
     row.update(harness.ratio_fields(res, "ours"))
     for tool in ("ours", "engine", "gudhi"):
-        mem = harness.memory(__file__, tool, case)
-        row[f"{tool}_mb"], row[f"{tool}_baseline_mb"] = mem["delta_mb"], mem["baseline_mb"]
+        row.update(harness.memory_fields(__file__, tool, tool, case))
     return row
 
 

@@ -138,9 +138,7 @@ def run_case(name: str, rounds: int | None) -> dict:
            "held_out": name in HELD_OUT}
     row.update(harness.ratio_fields(res, "ours"))
     for tool in tools:
-        mem = harness.memory(__file__, tool, name)
-        row[f"{tool}_mb"] = mem["delta_mb"]
-        row[f"{tool}_baseline_mb"] = mem["baseline_mb"]
+        row.update(harness.memory_fields(__file__, tool, tool, name))
     stats: dict = {}
     from thesis_lib.persistence import rips_persistence
 

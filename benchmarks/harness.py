@@ -186,6 +186,12 @@ def memory(script: str, *args: object) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+def memory_fields(script: str, key: str, *args: object) -> dict:
+    """``{key}_mb`` (peak above the baseline) and ``{key}_baseline_mb`` of :func:`memory`'s fresh run."""
+    mem = memory(script, *args)
+    return {f"{key}_mb": mem["delta_mb"], f"{key}_baseline_mb": mem["baseline_mb"]}
+
+
 # ---------------------------------------------------------------------------- provenance
 def _git(*args: str) -> str | None:
     try:
