@@ -157,6 +157,23 @@ def test_huge_entries_match_sympy(m, n, seed, bits):
     assert [int(x) for x in smith_normal_form(a)] == sympy_invariants(a)
 
 
+@pytest.mark.parametrize("primes", [1, 2, 3])
+@pytest.mark.parametrize("shape", [(1, 1), (2, 3), (4, 4)])
+def test_entries_divisible_by_the_first_crt_primes(primes, shape):
+    """Regression (CI, hypothesis seed 1031066): the 1 × 1 matrix [[2²⁶ − 5]] is zero modulo the first
+    CRT prime, whose rank profile was then empty and crashed the exact solver."""
+    from thesis_lib._modular import crt_primes
+
+    q = int(np.prod([int(x) for x in crt_primes(primes)], dtype=object))
+    rng = np.random.default_rng(primes)
+    a = np.array(rng.integers(-5, 6, shape), dtype=object) * q
+    a[0, 0] = q * 7  # never the zero matrix
+    for matrix in (a, -a, a * (1 << 70)):
+        assert [int(x) for x in smith_normal_form(matrix)] == sympy_invariants(matrix)
+    if q < 2**62:
+        assert [int(x) for x in smith_normal_form(a.astype(np.int64))] == sympy_invariants(a)
+
+
 def known_smith_form(seed: int, m: int, n: int, diagonal: list[int]) -> np.ndarray:
     """U · diag · V with random unimodular U, V (products of elementary matrices): the Smith form is known."""
     rng = np.random.default_rng(seed)
