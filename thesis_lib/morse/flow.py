@@ -24,7 +24,7 @@ def cells(simplices: ComplexLike) -> list[Simplex]:
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
+        The complex whose simplices form the basis (all faces are added).
 
     Returns
     -------
@@ -42,7 +42,7 @@ def boundary_operator(simplices: ComplexLike) -> sp.csc_matrix:
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
+        The complex, in any form :func:`cells` takes.
 
     Returns
     -------
@@ -59,10 +59,8 @@ def gradient_matrix(simplices: ComplexLike, pairs: Pairs) -> sp.csc_matrix:
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field, sigma a facet of tau (Definition 4.33).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field that V encodes, sigma a facet of tau (Definition 4.33).
 
     Returns
     -------
@@ -93,10 +91,8 @@ def gradient_flow(simplices: ComplexLike, pairs: Pairs) -> sp.csc_matrix:
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field, sigma a facet of tau (Definition 4.33).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field; Φ is built from :func:`gradient_matrix` of them.
 
     Returns
     -------
@@ -106,7 +102,7 @@ def gradient_flow(simplices: ComplexLike, pairs: Pairs) -> sp.csc_matrix:
     Raises
     ------
     ValueError
-        An invalid vector field.
+        The pairs are not a vector field on the complex (see :func:`gradient_matrix`).
     """
     cx = cell_complex(simplices)
     v = gradient_matrix(cx, pairs)
@@ -128,10 +124,8 @@ def stabilised_flow(simplices: ComplexLike, pairs: Pairs, max_iter: int | None =
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field, sigma a facet of tau (Definition 4.33).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field (a closed V-path keeps Φ^N from stabilising).
     max_iter : int, optional
         Largest power tried; default the number of cells + 1.
 
@@ -169,10 +163,8 @@ def is_flow_invariant(simplices: ComplexLike, pairs: Pairs, chain: npt.ArrayLike
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field, sigma a facet of tau (Definition 4.33).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field that define Φ (see :func:`gradient_flow`).
     chain : array_like of int, shape (n,)
         Coefficients of the chain in the basis :func:`cells` (cast to int64).
 

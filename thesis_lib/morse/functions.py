@@ -96,8 +96,7 @@ def check_discrete_morse_function(values: Values) -> None:
     Parameters
     ----------
     values : mapping or Filtration
-        The function: a mapping simplex -> value over every simplex of a complex, or a
-        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
+        The function to check, in a form :func:`is_discrete_morse_function` accepts.
 
     Raises
     ------
@@ -143,8 +142,7 @@ def critical_simplices(values: Values) -> list[Simplex]:
     Parameters
     ----------
     values : mapping or Filtration
-        The function: a mapping simplex -> value over every simplex of a complex, or a
-        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
+        A discrete Morse function (see :func:`is_discrete_morse_function` for the forms).
 
     Returns
     -------
@@ -169,8 +167,8 @@ def gradient_pairs(values: Values) -> list[tuple[Simplex, Simplex]]:
     Parameters
     ----------
     values : mapping or Filtration
-        The function: a mapping simplex -> value over every simplex of a complex, or a
-        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
+        The discrete Morse function whose gradient is wanted (a mapping simplex -> value or a
+        Filtration with values, as in :func:`is_discrete_morse_function`).
 
     Returns
     -------
@@ -180,7 +178,7 @@ def gradient_pairs(values: Values) -> list[tuple[Simplex, Simplex]]:
     Raises
     ------
     ValueError
-        ``values`` is malformed or not a discrete Morse function.
+        As :func:`critical_simplices`.
     """
     cx, face, cell, _, _ = _checked(values)
     order = np.lexsort((cell, face))
@@ -195,9 +193,8 @@ def sublevel_complex(values: Values, a: float) -> list[Simplex]:
     Parameters
     ----------
     values : mapping or Filtration
-        The function: a mapping simplex -> value over every simplex of a complex, or a
-        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
-        It need not be a discrete Morse function.
+        Any function on the simplices of a complex, in a form :func:`is_discrete_morse_function`
+        accepts; it need not be a discrete Morse function.
     a : float
         The level.
 

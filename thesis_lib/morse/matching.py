@@ -161,10 +161,8 @@ def critical_counts(simplices: ComplexLike, pairs: Pairs) -> list[int]:
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field, sigma a facet of tau (Definition 4.33).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and a vector field on it; a simplex in no pair is critical.
 
     Returns
     -------

@@ -24,10 +24,9 @@ def morse_boundary(simplices: ComplexLike, pairs: Pairs,
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The acyclic discrete vector field, sigma a facet of tau.
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it, whose critical simplices span the Morse
+        complex.
     coefficients : int, default 0
         0 for Z, a prime p for Z/p (entries reduced to 0..p-1).
 
@@ -168,10 +167,9 @@ def morse_homology(simplices: ComplexLike, pairs: Pairs, coefficients: int = 0) 
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The acyclic discrete vector field, e.g. from :func:`~thesis_lib.morse.matching.morse_matching`.
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it, e.g. from
+        :func:`~thesis_lib.morse.matching.morse_matching`; passed to :func:`morse_boundary`.
     coefficients : int, default 0
         0 for Z, a prime p for Z/p.
 

@@ -23,7 +23,7 @@ def spectral_layout(simplices: ComplexLike) -> dict[int, tuple[float, float]]:
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
+        The complex; only its 1-skeleton (the graph) matters.
 
     Returns
     -------
@@ -156,7 +156,7 @@ def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
     ax : matplotlib.axes.Axes
         Where to draw.
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added); meant for small ones.
+        A small complex (all faces are added): every simplex is a labelled box.
     pairs : iterable of (sigma, tau), default ()
         The discrete vector field; empty draws the plain Hasse diagram.
     names : mapping of tuple to str, optional
@@ -170,7 +170,7 @@ def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
     Raises
     ------
     ValueError
-        An invalid vector field.
+        The pairs are not a discrete vector field on the complex.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

@@ -33,7 +33,8 @@ def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0, r: float = 
     Parameters
     ----------
     u, v : array_like
-        The angles of φ(u, v) (scalars or arrays of one shape).
+        The angles of φ(u, v): around the axis and around the tube (scalars or arrays that
+        broadcast together).
     R : float, default 2.0
         Distance from the centre of the tube to the axis; 0 < r < R.
     r : float, default 1.0
@@ -62,11 +63,9 @@ def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
     Parameters
     ----------
     u, v : array_like
-        The angles of φ(u, v) (scalars or arrays of one shape).
-    R : float, default 2.0
-        Distance from the centre of the tube to the axis; 0 < r < R.
-    r : float, default 1.0
-        Radius of the tube.
+        The angles, as in :func:`torus_height`.
+    R, r : float
+        The radii (default 2 and 1), as in :func:`torus_height`.
 
     Returns
     -------
@@ -76,7 +75,7 @@ def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
     Raises
     ------
     ValueError
-        Radii without 0 < r < R.
+        Unless 0 < r < R.
     """
     R, r = check_torus_radii(R, r)
     return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
@@ -90,12 +89,8 @@ def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
 
     Parameters
     ----------
-    u, v : array_like
-        The angles of φ(u, v) (scalars or arrays of one shape).
-    R : float, default 2.0
-        Distance from the centre of the tube to the axis; 0 < r < R.
-    r : float, default 1.0
-        Radius of the tube.
+    u, v, R, r : array_like, array_like, float, float
+        The point (u, v) and the radii of :func:`torus_height` (defaults R = 2, r = 1).
 
     Returns
     -------
@@ -105,7 +100,7 @@ def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
     Raises
     ------
     ValueError
-        Radii without 0 < r < R.
+        Radii that are not 0 < r < R (finite).
     """
     R, r = check_torus_radii(R, r)
     return np.array(
@@ -285,14 +280,9 @@ def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tupl
 
     Returns
     -------
-    names : list of list of str
-        The critical points per index 0, 1, 2.
-    boundaries : list of scipy.sparse.csc_matrix
-        ``boundaries[k]`` the int64 Morse boundary from index-k to index-(k-1) points
-        (``boundaries[0]`` has no rows).
-    homology : list of (int, list of int)
-        Its homology over Z/2.  The matrices hold the numbers of flow lines (2), which vanish
-        mod 2.
+    names, boundaries, homology : list, list, list
+        As in :func:`sphere_morse_complex`: the critical points r, q, p; the boundaries, which hold
+        the numbers of flow lines (2) and so vanish mod 2; the homology over Z/2 (β = 1, 1, 1).
     """
     names = [["r"], ["q"], ["p"]]
     mats = _complex([[[2]], [[2]]], [1, 1, 1])
@@ -306,13 +296,9 @@ def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tu
 
     Returns
     -------
-    names : list of list of str
-        The critical points per index 0, 1, 2.
-    boundaries : list of scipy.sparse.csc_matrix
-        ``boundaries[k]`` the int64 Morse boundary from index-k to index-(k-1) points
-        (``boundaries[0]`` has no rows).
-    homology : list of (int, list of int)
-        Its homology over Z/2 (the matrices hold the flow-line counts 2).
+    names, boundaries, homology : list, list, list
+        As in :func:`sphere_morse_complex`: the critical points r; q1, q2; p, boundary entries 2
+        (the flow-line counts) and the homology over Z/2, β = 1, 2, 1.
     """
     names = [["r"], ["q1", "q2"], ["p"]]
     mats = _complex([[[2, 2]], [[2], [2]]], [1, 2, 1])

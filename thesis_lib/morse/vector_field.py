@@ -35,9 +35,10 @@ def check_vector_field(simplices: ComplexLike, pairs: Pairs) -> list[tuple[Simpl
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added; a Filtration's values are ignored).
+        The complex, in any form :func:`~thesis_lib.filtration.as_complex` accepts: all faces are
+        added and a Filtration's values are ignored (so in every function of this module).
     pairs : iterable of (sigma, tau)
-        The vector field: sigma a face of codimension one of tau.
+        The vector field: sigma a face of codimension one of tau, each simplex in at most one pair.
 
     Returns
     -------
@@ -62,10 +63,9 @@ def critical_cells(simplices: ComplexLike, pairs: Pairs) -> list[list[Simplex]]:
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and a vector field on it (as in :func:`check_vector_field`); the simplices
+        in no pair are the critical ones.
 
     Returns
     -------
@@ -87,10 +87,9 @@ def vpath_graph(simplices: ComplexLike, pairs: Pairs) -> tuple[list[Simplex], sp
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex, whose cells are the nodes of the digraph, and the vector field, whose
+        pairs give its edges (as in :func:`check_vector_field`).
 
     Returns
     -------
@@ -112,16 +111,15 @@ def hasse_diagram(simplices: ComplexLike, pairs: Pairs = ()) -> tuple[list[Simpl
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
+        The complex whose face relation gives the edges (as in :func:`check_vector_field`).
     pairs : iterable of (sigma, tau), default ()
-        The discrete vector field; empty gives the plain Hasse diagram.
+        The pairs whose edges are reversed; empty gives the plain Hasse diagram.
 
     Returns
     -------
-    cells : list of tuple
-        All simplices in the global order: by dimension, then lexicographically.
-    graph : scipy.sparse.csr_matrix, shape (n, n)
-        The int8 adjacency matrix: ``graph[i, j] = 1`` for an edge ``cells[i] → cells[j]``.
+    cells, graph : list of tuple, scipy.sparse.csr_matrix
+        As in :func:`vpath_graph`: the simplices in the global order and the (n × n) int8
+        adjacency matrix, here of the modified Hasse diagram.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -137,10 +135,8 @@ def is_acyclic(simplices: ComplexLike, pairs: Pairs, method: str = "vpaths") -> 
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The vector field to test, on its complex (as in :func:`check_vector_field`).
     method : {"vpaths", "hasse"}, default "vpaths"
         ``"vpaths"`` topologically sorts the V-path digraph; ``"hasse"`` looks for a strongly
         connected component with more than one cell in the modified Hasse diagram.
@@ -174,10 +170,9 @@ def find_closed_vpath(simplices: ComplexLike, pairs: Pairs) -> list[Simplex] | N
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field searched for a closed V-path (as in
+        :func:`check_vector_field`).
 
     Returns
     -------
@@ -201,10 +196,8 @@ def vpaths(simplices: ComplexLike, pairs: Pairs, start: Sequence[int],
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it (as in :func:`check_vector_field`).
     start : sequence of int
         The first simplex σ_0 of every path; must be in the complex.
     max_paths : int, default 100_000
@@ -243,10 +236,9 @@ def gradient_paths(simplices: ComplexLike, pairs: Pairs, tau: Sequence[int],
 
     Parameters
     ----------
-    simplices : Filtration or iterable of simplices
-        The complex (all faces are added).
-    pairs : iterable of (sigma, tau)
-        The acyclic discrete vector field (validated as in :func:`check_vector_field`).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the acyclic vector field whose gradient paths are enumerated (as in
+        :func:`check_vector_field`).
     tau : sequence of int
         A (k+1)-simplex of the complex, where the paths start (through a facet not paired with it).
     sigma : sequence of int
