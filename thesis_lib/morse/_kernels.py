@@ -47,11 +47,10 @@ def topological_rank(n, ptr, idx):
     removed = np.zeros(n, dtype=np.bool_)
     vals = np.zeros(n)
     rank = np.full(n, -1, dtype=np.int64)
-    while head < tail:
-        v = queue[head]
-        rank[v] = head
+    while head < tail:  # the queue is the order: rank = position in it
+        rank[queue[head]] = head
+        tail = _count_down(ptr, idx, queue[head], indeg, 0, removed, vals, queue, tail)
         head += 1
-        tail = _count_down(ptr, idx, v, indeg, 0, removed, vals, queue, tail)
     return rank
 
 
@@ -108,6 +107,20 @@ def greedy_matching(n, down_ptr, down_idx, up_ptr, up_idx, vals, order):
 
 
 @numba.njit(cache=True)
+def _touch(s, inheap, touched, nt, partner, rank, heap):
+    """First visit of cell ``s`` in a column of :func:`morse_columns`: list it in ``touched`` (to be
+    reset after the column) and, when it is paired upwards, queue it by its rank.  Returns the new
+    count ``nt`` of touched cells."""
+    if not inheap[s]:
+        inheap[s] = True
+        touched[nt] = s
+        nt += 1
+        if partner[s] > s:
+            heapq.heappush(heap, (rank[s], s))
+    return nt
+
+
+@numba.njit(cache=True)
 def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
     """Theorem 4.42 for every critical cell in ``sources``: flow ∂τ along gradient paths.
 
@@ -130,12 +143,7 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
         for e in range(ptr[t], ptr[t + 1]):
             s = idx[e]
             acc[s] += data[e]
-            if not inheap[s]:
-                inheap[s] = True
-                touched[nt] = s
-                nt += 1
-                if partner[s] > s:
-                    heapq.heappush(heap, (rank[s], s))
+            nt = _touch(s, inheap, touched, nt, partner, rank, heap)
         while len(heap) > 0:
             item = heapq.heappop(heap)
             s = item[1]
@@ -157,12 +165,7 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
                     acc[s2] = acc[s2] % p
                 elif acc[s2] > limit or acc[s2] < -limit:
                     overflow = True
-                if not inheap[s2]:
-                    inheap[s2] = True
-                    touched[nt] = s2
-                    nt += 1
-                    if partner[s2] > s2:
-                        heapq.heappush(heap, (rank[s2], s2))
+                nt = _touch(s2, inheap, touched, nt, partner, rank, heap)
         for i in range(nt):
             s = touched[i]
             a = acc[s]

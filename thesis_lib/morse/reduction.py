@@ -205,8 +205,9 @@ def reduced_persistence(reduction: MorseReduction, coefficients: int | None = No
 
     Raises
     ------
-    InvalidTypeError
-        ``reduction`` is not a MorseReduction.
+    TypeError
+        ``reduction`` is not a MorseReduction (an ``InvalidTypeError``, which is also a
+        ValueError).
     ValueError
         Coefficients that are not a prime, or differ from a reduction's prime.
     """
