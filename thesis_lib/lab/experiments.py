@@ -44,7 +44,7 @@ def experiments_dir() -> Path:
     Returns
     -------
     pathlib.Path
-        ``experiments/`` of the project folder (:func:`thesis_lib.lab.paths.project_root`).
+        ``experiments/`` of the project folder (``thesis_lib.lab.paths.project_root()``).
     """
     return project_root() / "experiments"
 

@@ -160,7 +160,7 @@ def load_claims(directory: Path | None = None) -> list[Claim]:
     Parameters
     ----------
     directory : pathlib.Path, optional
-        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (:func:`claims_dir`).
+        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
 
     Returns
     -------
@@ -378,7 +378,7 @@ def report(directory: Path | None = None) -> list[dict[str, object]]:
     Parameters
     ----------
     directory : pathlib.Path, optional
-        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (:func:`claims_dir`).
+        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
 
     Returns
     -------
