@@ -70,7 +70,7 @@ class RunSpec:
     notebook: bytes
     timeout: int = 3600
     max_output_mb: float = DEFAULT_MAX_OUTPUT_MB
-    #: a project folder the kernel may use in place (same machine); None: a self-contained scratch project
+    #: a project folder the kernel may use in place (same machine), or None for a self-contained scratch project
     project: str | None = None
 
 

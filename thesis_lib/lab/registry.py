@@ -28,8 +28,9 @@ def read_tables(path: Path, key: str, error: type[Exception]) -> list:
 
     Raises
     ------
-    error
-        When the file is missing, not UTF-8, not valid TOML, or ``key`` is not an array.
+    Exception
+        An ``error`` (the class given) when the file is missing, not UTF-8, not valid TOML, or ``key``
+        is not an array.
     """
     try:
         with open(path, "rb") as fh:

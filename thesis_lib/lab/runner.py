@@ -340,8 +340,10 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
     ------
     ParameterError
         If ``path`` is neither a known experiment nor a notebook of the project.
-    nbclient.exceptions.CellExecutionError
-        If a cell fails (nothing is rewritten).
+
+    Notes
+    -----
+    A failing cell raises nbclient's ``CellExecutionError``; nothing is rewritten.
     """
     from nbclient import NotebookClient
 
