@@ -87,7 +87,7 @@ def meta(topic: str) -> dict:
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        Whose stored run to describe.
 
     Returns
     -------
@@ -109,7 +109,7 @@ def provenance(topic: str) -> str:
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        The stored benchmark to describe in one sentence.
 
     Returns
     -------
@@ -133,7 +133,7 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        The stored benchmark to show (as in ``load``).
     columns : list of str, optional
         The columns, in order; by default every scalar (not list or dict) column, in first-seen order.
     cases : list of str, optional
@@ -175,7 +175,7 @@ def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, f
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        The stored benchmark whose ratios are read.
     cases : list of str, optional
         Only the rows whose ``case`` is one of these; by default every row.
 
@@ -228,7 +228,7 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        The stored benchmark to draw.
     cases : list of str, optional
         Only these cases; by default every stored case.
     peers : list of str, optional
@@ -286,7 +286,7 @@ def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
     Parameters
     ----------
     topic : str
-        The benchmark's name (``benchmarks/results/<topic>.json``).
+        The stored benchmark to draw (its rows with sizes, times and memory).
     prefix : str
         Only the rows whose ``case`` starts with this.
     tools : dict of str to str

@@ -213,7 +213,7 @@ def path(name: str, manifest_file: str | Path | None = None) -> Path:
     name : str
         The data set's name in the manifest.
     manifest_file : str or pathlib.Path, optional
-        The manifest to read; by default the project's ``data/manifest.toml``.
+        The manifest naming the data set (default: the project's ``data/manifest.toml``).
 
     Returns
     -------
@@ -244,7 +244,7 @@ def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]
     Parameters
     ----------
     manifest_file : str or pathlib.Path, optional
-        The manifest to read; by default the project's ``data/manifest.toml``.
+        The manifest whose entries are checked (default: the project's, see :func:`manifest`).
 
     Returns
     -------
@@ -278,7 +278,7 @@ def fetch(name: str, manifest_file: str | Path | None = None, timeout: float = 6
     name : str
         The data set's name in the manifest.
     manifest_file : str or pathlib.Path, optional
-        The manifest to read; by default the project's ``data/manifest.toml``.
+        The manifest with the data set's URL and sha256 (default: the project's).
     timeout : float, default 60.0
         Seconds to wait for the server (``urllib.request.urlopen``).
 

@@ -378,7 +378,7 @@ def report(directory: Path | None = None) -> list[dict[str, object]]:
     Parameters
     ----------
     directory : pathlib.Path, optional
-        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
+        The claim registry to report on, as in :func:`load_claims`.
 
     Returns
     -------
@@ -430,7 +430,7 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
     Parameters
     ----------
     rows : list of dict, optional
-        Report rows (:func:`report`); by default the whole report, from the stored results.
+        The rows to count, as for :func:`summary`.
 
     Returns
     -------
@@ -473,7 +473,7 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
     Parameters
     ----------
     rows : list of dict, optional
-        Report rows (:func:`report`); by default the whole report, from the stored results.
+        The rows to show, as for :func:`summary`.
     with_summary : bool, default False
         Put :func:`summary_markdown` first.
     link_suffix : str, default ".html"
@@ -507,7 +507,7 @@ def to_json(rows: list[dict[str, object]] | None = None) -> str:
     Parameters
     ----------
     rows : list of dict, optional
-        Report rows (:func:`report`); by default the whole report, from the stored results.
+        What to write; by default the whole report, from the stored results.
 
     Returns
     -------

@@ -66,10 +66,9 @@ def expand_grid(name: str, grid: dict[str, list[object]]) -> list[dict[str, obje
     Parameters
     ----------
     name : str
-        An experiment that ``thesis-lab list`` shows.
+        The experiment whose parameters the values are checked against.
     grid : dict of str to list
-        Parameter name → values (a list or tuple, non-empty); strings are converted to the default's
-        type.
+        The sweep's grid, as for :func:`sweep`.
 
     Returns
     -------
@@ -470,15 +469,8 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
 
     Parameters
     ----------
-    name : str
-        An experiment that ``thesis-lab list`` shows.
-    grid : dict of str to list
-        Parameter name → values (a list or tuple, non-empty); strings are converted to the default's
-        type.
-    root : pathlib.Path, optional
-        Folder of the run folders (default ``runs/``).
-    keep : bool, default False
-        Also store the table (without wall times and workers) with the default run.
+    name, grid, root, keep
+        As for :func:`sweep`; the grid is the whole one the shards were cut from.
 
     Returns
     -------
