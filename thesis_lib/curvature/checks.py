@@ -270,7 +270,8 @@ def nearest_vertex_volumes(points: ArrayLike) -> NDArray[np.float64]:
     Parameters
     ----------
     points : array_like, shape (m, n + 1, d)
-        Vertex coordinates of m non-degenerate n-simplices, d >= n >= 1.
+        The m simplices, by the coordinates of their n + 1 vertices (d >= n >= 1, none
+        degenerate).
 
     Returns
     -------

@@ -89,8 +89,10 @@ def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 
 
     Parameters
     ----------
-    u, v : array_like
-        Parameters (angle around the axis, angle around the tube), broadcast together.
+    u : array_like
+        Angle around the axis of revolution (the z-axis).
+    v : array_like
+        Angle around the tube, broadcast with ``u``.
     R : float, default 10.0
         Distance from the centre of the tube to the axis of revolution.
     r : float, default 5.0
@@ -121,11 +123,10 @@ def torus_uv(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> tuple[np
     Parameters
     ----------
     points : array_like, shape (..., 3)
-        Points on (or near) the torus.
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+        Points on (or near) the torus of :func:`torus_point`.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+        Only R enters the formula; r is checked.
 
     Returns
     -------
@@ -153,22 +154,22 @@ def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r:
 
     Parameters
     ----------
-    u, v : array_like
-        Parameters (angle around the axis, angle around the tube), broadcast together.
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+    u : array_like
+        Angle around the axis; S does not depend on it (it only sets the shape).
+    v : array_like
+        Angle around the tube, broadcast with ``u``.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
     ndarray of float64, shape (..., 2, 2)
-        The matrix of S at each parameter pair (the broadcast shape of ``u`` and ``v``).
+        The diagonal matrix of S at each parameter pair.
 
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
+        Unless 0 < r < R (finite); if ``u`` or ``v`` holds NaN or infinite values or they do not
         broadcast.
     """
     R, r = check_torus_radii(R, r)
@@ -186,12 +187,12 @@ def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10
 
     Parameters
     ----------
-    u, v : array_like
-        Parameters (angle around the axis, angle around the tube), broadcast together.
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+    u : array_like
+        Angle around the axis (the curvatures do not depend on it).
+    v : array_like
+        Angle around the tube: κ = -cos v / (R + r cos v) along the parallel, -1/r along the meridian.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
@@ -201,8 +202,7 @@ def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
-        broadcast.
+        As :func:`torus_shape_operator`.
     """
     S = torus_shape_operator(u, v, R, r)
     k = np.stack([S[..., 0, 0], S[..., 1, 1]], axis=-1)
@@ -216,12 +216,12 @@ def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r:
 
     Parameters
     ----------
-    u, v : array_like
-        Parameters (angle around the axis, angle around the tube), broadcast together.
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+    u : array_like
+        Angle around the axis (H does not depend on it; it is broadcast with ``v``).
+    v : array_like
+        Angle around the tube.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
@@ -231,8 +231,7 @@ def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r:
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
-        broadcast.
+        As :func:`torus_shape_operator`.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -247,12 +246,12 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0
 
     Parameters
     ----------
-    u, v : array_like
-        Parameters (angle around the axis, angle around the tube), broadcast together.
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+    u : array_like
+        Angle around the axis (K does not depend on it; it is broadcast with ``v``).
+    v : array_like
+        Angle around the tube: K > 0 on the outer half (cos v > 0), K < 0 on the inner half.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
@@ -262,8 +261,7 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
-        broadcast.
+        As :func:`torus_shape_operator`.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -279,21 +277,20 @@ def torus_mean_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5
     Parameters
     ----------
     points : array_like, shape (..., 3)
-        Points on (or near) the torus; each is read at its parameters (:func:`torus_uv`).
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+        Sample points, e.g. the vertices of a reconstruction; each is read at the parameters of the
+        nearest torus point.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
     ndarray of float64, shape (...)
-        H at each point (outward normal).
+        H at each point (outward normal); compare ``abs`` of it with the discrete |H|.
 
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``points`` is not (..., 3) or holds NaN or infinite values.
+        As :func:`torus_uv`.
     """
     return torus_mean_curvature(*torus_uv(points, R, r), R, r)
 
@@ -306,11 +303,9 @@ def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: flo
     Parameters
     ----------
     points : array_like, shape (..., 3)
-        Points on (or near) the torus; each is read at its parameters (:func:`torus_uv`).
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+        Points on (or near) the torus, read at their parameters (:func:`torus_uv`).
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
@@ -320,7 +315,7 @@ def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: flo
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``points`` is not (..., 3) or holds NaN or infinite values.
+        As :func:`torus_uv`.
     """
     return torus_principal_curvatures(*torus_uv(points, R, r), R, r)
 
@@ -333,11 +328,9 @@ def torus_gaussian_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float
     Parameters
     ----------
     points : array_like, shape (..., 3)
-        Points on (or near) the torus; each is read at its parameters (:func:`torus_uv`).
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+        Sample points; K is taken at the parameters of the nearest torus point.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
 
     Returns
     -------
@@ -347,7 +340,7 @@ def torus_gaussian_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float
     Raises
     ------
     ValueError
-        Unless 0 < r < R (finite), or if ``points`` is not (..., 3) or holds NaN or infinite values.
+        As :func:`torus_uv`.
     """
     return torus_gaussian_curvature(*torus_uv(points, R, r), R, r)
 
@@ -464,7 +457,8 @@ def catenoid_principal_curvatures(params: npt.ArrayLike) -> np.ndarray:
     Parameters
     ----------
     params : array_like, shape (..., n)
-        The parameters (u, v, w₁, ..., w_{n-2}), n >= 2.
+        The parameters (u, v, w₁, ..., w_{n-2}), n >= 2, as in :func:`catenoid_point`; only v
+        enters the curvatures.
 
     Returns
     -------
@@ -474,7 +468,7 @@ def catenoid_principal_curvatures(params: npt.ArrayLike) -> np.ndarray:
     Raises
     ------
     ValueError
-        If ``params`` is not (..., n) with n >= 2 or holds NaN or infinite values.
+        As :func:`catenoid_point`.
     """
     p = _finite("params", params)
     if p.ndim < 1 or p.shape[-1] < 2:
@@ -494,7 +488,7 @@ def catenoid_mean_curvature(params: npt.ArrayLike) -> np.ndarray:
     Parameters
     ----------
     params : array_like, shape (..., n)
-        The parameters (u, v, w₁, ..., w_{n-2}), n >= 2.
+        Where H is wanted: parameters (u, v, w₁, ..., w_{n-2}) of :func:`catenoid_point`, n >= 2.
 
     Returns
     -------
@@ -504,7 +498,7 @@ def catenoid_mean_curvature(params: npt.ArrayLike) -> np.ndarray:
     Raises
     ------
     ValueError
-        If ``params`` is not (..., n) with n >= 2 or holds NaN or infinite values.
+        As :func:`catenoid_point`.
     """
     return catenoid_principal_curvatures(params).sum(axis=-1) / np.asarray(params).shape[-1]
 
@@ -625,11 +619,11 @@ def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w: npt.Arra
     Parameters
     ----------
     X : callable
-        The parametrisation: maps parameters (..., n) to points (..., n + 1), vectorised.
+        Parametrisation (..., n) -> (..., n + 1) of the hypersurface, vectorised.
     w : array_like, shape (..., n)
-        The parameters at which to evaluate.
+        The parameters at which S is wanted.
     h : float, default 1e-4
-        The finite-difference step.
+        Step of the central differences of :func:`fundamental_forms`.
 
     Returns
     -------
@@ -660,11 +654,11 @@ def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayL
     X : callable
         The parametrisation of a surface: maps parameters (..., 2) to points (..., 3), vectorised.
     w : array_like, shape (..., 2)
-        The parameters at which to evaluate.
+        The parameters of the points at which the tangent direction turns.
     nodes : int, default 64
         How many directions θ_k, at least 3.
     h : float, default 1e-4
-        The finite-difference step.
+        Step of the central differences (see :func:`fundamental_forms`).
 
     Returns
     -------
@@ -776,13 +770,13 @@ def total_gauss_kronecker_curvature(
     Parameters
     ----------
     X : callable
-        The parametrisation: maps parameters (..., n) to points (..., n + 1), vectorised.
+        Parametrisation (..., n) -> (..., n + 1) of a closed hypersurface, vectorised.
     params : array_like, shape (k, n)
         Quadrature nodes in parameter space (e.g. from :func:`hypersphere_quadrature`).
     weights : array_like, shape (k,)
         Quadrature weights of the nodes (not point weights).
     h : float, default 1e-4
-        The finite-difference step.
+        Step of the central differences for g and B.
 
     Returns
     -------
@@ -869,10 +863,9 @@ def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
 
     Parameters
     ----------
-    R : float, default 10.0
-        Distance from the centre of the tube to the axis of revolution.
-    r : float, default 5.0
-        Radius of the tube, 0 < r < R.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5, where R = 2r); the ratio depends only
+        on R/r.
 
     Returns
     -------

@@ -253,9 +253,9 @@ def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     Parameters
     ----------
     simplices : array_like of int, shape (m, n + 1)
-        Top simplices, vertex indices in ``range(nv)`` (trusted).
+        Top simplices of a validated mesh (trusted, as in :func:`ridges`).
     nv : int
-        Number of vertices.
+        Number of vertices: the length of the mask.
 
     Returns
     -------
