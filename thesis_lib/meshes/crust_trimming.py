@@ -71,16 +71,23 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
 
 
 @njit(cache=True)
+def _edge_vectors(pts, verts):
+    """Rows p_{i+1} − p_0 for the vertices ``verts`` (k + 1,) of a simplex: shape (k, d)."""
+    k = verts.shape[0] - 1
+    e = np.empty((k, pts.shape[1]))
+    for i in range(k):
+        e[i] = pts[verts[i + 1]] - pts[verts[0]]
+    return e
+
+
+@njit(cache=True)
 def _complement_basis(pts, ridge):
     """Orthonormal basis (rows) of the directions of the ridge's affine span (Gram–Schmidt)."""
-    k = ridge.shape[0] - 1
-    d = pts.shape[1]
-    q = np.zeros((k, d))
-    for i in range(k):
-        v = pts[ridge[i + 1]] - pts[ridge[0]]
+    q = _edge_vectors(pts, ridge)
+    for i in range(q.shape[0]):
         for j in range(i):
-            v = v - (v * q[j]).sum() * q[j]
-        q[i] = v / (np.sqrt((v * v).sum()) + 1e-300)
+            q[i] = q[i] - (q[i] * q[j]).sum() * q[j]
+        q[i] = q[i] / (np.sqrt((q[i] * q[i]).sum()) + 1e-300)
     return q
 
 
@@ -162,9 +169,7 @@ def _oriented_normal(pts, o):
     """Normal of the oriented simplex o: cofactors of its edge vectors (the cross product for n = 2)."""
     n = o.shape[0] - 1
     d = pts.shape[1]
-    e = np.empty((n, d))
-    for i in range(n):
-        e[i] = pts[o[i + 1]] - pts[o[0]]
+    e = _edge_vectors(pts, o)
     nrm = np.empty(d)
     sub = np.empty((n, n))
     for k in range(d):
