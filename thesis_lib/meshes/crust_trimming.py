@@ -13,6 +13,7 @@ orienting coherently; a simplex that would put a third simplex on a ridge is lef
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ..jit import njit
 from .crust_geometry import simplex_normals
@@ -20,7 +21,7 @@ from .crust_geometry import simplex_normals
 __all__ = ["unique_rows", "outer_walk", "open_walk"]
 
 
-def unique_rows(rows: np.ndarray, return_counts: bool = False):
+def unique_rows(rows: npt.ArrayLike, return_counts: bool = False) -> tuple[np.ndarray, ...]:
     """``np.unique(rows, axis=0, return_inverse=True)`` for non-negative integer rows, by one int64
     key per row (much faster than a row-wise unique).
 
@@ -28,13 +29,19 @@ def unique_rows(rows: np.ndarray, return_counts: bool = False):
 
     Parameters
     ----------
-    rows : ``(m, k)`` non-negative integers.
-    return_counts : also return how often each distinct row occurs.
+    rows : array_like of int, shape (m, k)
+        Non-negative integers (not checked).
+    return_counts : bool, default False
+        Also return how often each distinct row occurs.
 
     Returns
     -------
-    uniq, inverse[, counts] : the distinct rows (sorted), the index of each row among them, and the
-        counts if asked.
+    uniq : ndarray of int64, shape (u, k)
+        The distinct rows, in lexicographic order.
+    inverse : ndarray of int64, shape (m,)
+        The index of each row among them: ``uniq[inverse]`` is ``rows``.
+    counts : ndarray of int64, shape (u,)
+        How often each distinct row occurs; only when ``return_counts``.
     """
     rows = np.asarray(rows, dtype=np.int64)
     base = int(rows.max()) + 1 if rows.size else 1

@@ -299,23 +299,41 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
 
 
 def catenoid_freudenthal(
-    epsilon: float = 0.05, n: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0), n_u: int | None = None
-):
+    epsilon: float = 0.05, n: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
+    w_range: tuple[float, float] = (-1.0, 1.0), n_u: int | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
 
     Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
 
     Parameters
     ----------
-    epsilon : grid step of v and w (the ranges must be whole multiples of it).
-    n : dimension (>= 2).
-    v_range, w_range : (low, high) of v and of each extra coordinate w.
-    n_u : steps of the periodic u (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
+    epsilon : float, default 0.05
+        Grid step of v and w (the ranges must be whole multiples of it).
+    n : int, default 3
+        Dimension of the catenoid, n >= 2.
+    v_range : (low, high), default (-1.0, 1.0)
+        The range of v.
+    w_range : (low, high), default (-1.0, 1.0)
+        The range of each extra coordinate w (unused for n = 2).
+    n_u : int or None, default None
+        Steps of the periodic u, at least 3 (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
 
     Returns
     -------
-    vertices, simplices, params
-        The boundary is v = v_low, v_high (and w = w_low, w_high).
+    vertices : ndarray of float64, shape (nv, n + 1)
+        The grid points on the catenoid (:func:`~thesis_lib.curvature.exact.catenoid_point`).
+    simplices : ndarray of int64, shape (m, n + 1)
+        The Freudenthal n-simplices, closed up in u; the boundary is v = v_low, v_high (and
+        w = w_low, w_high).
+    params : ndarray of float64, shape (nv, n)
+        The parameters (u, v, w₁, ...) of each vertex.
+
+    Raises
+    ------
+    ValueError
+        On a non-positive ``epsilon``, ``n`` outside 2 to the largest grid dimension, a range that
+        is not a pair or not a whole number of steps, fewer than 3 u-steps, or a grid too large.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     n = check_int(n, "n", minimum=2, maximum=MAX_GRID_DIM)

@@ -11,11 +11,15 @@ from __future__ import annotations
 import os
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import InvalidTypeError, as_points, check_simplices
+
+if TYPE_CHECKING:  # pyvista is slow to import: loaded on first use (_pyvista)
+    import pyvista
 
 __all__ = ["read_mesh", "write_mesh", "to_pyvista", "from_pyvista"]
 
@@ -30,19 +34,27 @@ def _pyvista():
     return pyvista
 
 
-def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike):
+def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyData:
     """A pyvista ``PolyData`` of a triangle mesh.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
 
     Parameters
     ----------
-    vertices : (nv, 3) array of points (float64 is kept).
-    faces : (m, 3) vertex indices (the row order is the orientation, kept).
+    vertices : array_like, shape (nv, 3)
+        The points, finite (float64 is kept).
+    faces : array_like of int, shape (m, 3)
+        Vertex indices of the triangles (the row order is the orientation, kept).
 
     Returns
     -------
     pyvista.PolyData
+        A copy of the vertices as its points, the triangles as its faces.
+
+    Raises
+    ------
+    ValueError
+        On invalid vertices, vertices not in R³, or faces that are not (m, 3) indices of vertices.
     """
     v = as_points(vertices, name="vertices")
     if v.shape[1] != 3:
@@ -53,19 +65,29 @@ def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike):
     return pv.PolyData(v.copy(), cells)
 
 
-def from_pyvista(mesh) -> tuple[np.ndarray, np.ndarray]:
+def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
     """``(vertices, faces)`` of a pyvista mesh; polygons and other cells are triangulated first.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
 
     Parameters
     ----------
-    mesh : pyvista.DataSet (``PolyData``, ``UnstructuredGrid``, ...): its surface is used.
+    mesh : pyvista.DataSet
+        ``PolyData``, ``UnstructuredGrid``, ...: its surface is used.
 
     Returns
     -------
-    vertices : (nv, 3) float64.
-    faces : (m, 3) int64, in the mesh's vertex order (lines and points are dropped).
+    vertices : ndarray of float64, shape (nv, 3)
+        The mesh's points.
+    faces : ndarray of int64, shape (m, 3)
+        The triangles, in the mesh's vertex order (lines and points are dropped).
+
+    Raises
+    ------
+    InvalidTypeError
+        If ``mesh`` is not a pyvista data set.
+    ValueError
+        If it has no faces, or its faces could not be triangulated.
     """
     pv = _pyvista()
     if not isinstance(mesh, pv.DataSet):

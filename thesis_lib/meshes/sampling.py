@@ -119,12 +119,42 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
     return radius * g / np.linalg.norm(g, axis=1, keepdims=True)
 
 
-def sample_n_catenoid(n_points: int, *, dimension: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0),
-                      seed: int = 0, return_params: bool = False):
+def sample_n_catenoid(
+    n_points: int, *, dimension: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
+    w_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0, return_params: bool = False,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n_points`` uniform w.r.t. volume on the piece v ∈ v_range, every w_i ∈ w_range of the
     n-catenoid (catenoid × R^{n-2}) in R^{n+1}; volume element cosh² v du dv dw.
 
     Thesis: §3.4.3 (the 3-catenoid on u ∈ [−π, π], v, r ∈ [−1, 1]), sampled at random (Chapter 5).
+
+    Parameters
+    ----------
+    n_points : int
+        Number of samples, at least 1.
+    dimension : int, default 3
+        The dimension n >= 2 of the catenoid (points in R^{n+1}).
+    v_range : (low, high), default (-1.0, 1.0)
+        Finite range of v, low < high.
+    w_range : (low, high), default (-1.0, 1.0)
+        Finite range of each extra coordinate w_i, low < high (unused for n = 2).
+    seed : int, default 0
+        Seed of the random draws (``numpy.random.default_rng``).
+    return_params : bool, default False
+        Also return the parameters of the samples.
+
+    Returns
+    -------
+    points : ndarray of float64, shape (n_points, n + 1)
+        The samples.
+    params : ndarray of float64, shape (n_points, n)
+        Their parameters (u, v, w₁, ...), u in [0, 2π); only when ``return_params``.
+
+    Raises
+    ------
+    ValueError
+        On a ``dimension`` < 2, a ``n_points`` < 1 or too large, or a range that is not a finite
+        interval low < high.
     """
     dimension = check_int(dimension, "dimension", minimum=2)
     n_points = _count(n_points, dimension + 1, "n_points")
