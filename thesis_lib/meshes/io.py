@@ -99,6 +99,8 @@ def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
 
         with warnings.catch_warnings():  # pyvista announces a change of the default algorithm
             warnings.simplefilter("ignore", FutureWarning)
+            # pyvista 0.49 warns with PyVistaFutureWarning, a Warning but not a FutureWarning
+            warnings.filterwarnings("ignore", message="The default value of `algorithm`")
             surface = mesh.extract_surface()
     if np.asarray(surface.faces).size == 0:
         raise ValueError("the mesh has no faces (only points or lines)")
