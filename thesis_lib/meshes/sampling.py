@@ -39,14 +39,26 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
 
     Parameters
     ----------
-    n : number of samples (>= 1; refused up front beyond 10⁹ coordinates).
-    R, r : the torus's radii.
-    seed : seed of the random draws.
-    return_uv : also return the parameters.
+    n : int
+        Number of samples, at least 1 (refused up front beyond 10⁹ coordinates).
+    R, r : float
+        The torus's radii, 0 < r < R (default 10 and 5, the thesis's torus).
+    seed : int, default 0
+        Seed of the rejection sampler's draws.
+    return_uv : bool, default False
+        Also return the parameters (u, v) of the samples.
 
     Returns
     -------
-    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_uv``.
+    points : ndarray of float64, shape (n, 3)
+        The samples.
+    uv : ndarray of float64, shape (n, 2)
+        Their parameters, each in [0, 2π); only when ``return_uv``.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n``, radii or ``seed``.
     """
     n = _count(n, 3)
     torus_point(0.0, 0.0, R, r)  # validates the radii
@@ -67,14 +79,27 @@ def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: in
 
     Parameters
     ----------
-    n : number of samples (>= 1).
-    v_range : (low, high) with low < high.
-    seed : seed of the random draws.
-    return_params : also return the (u, v) parameters.
+    n : int
+        How many points, at least 1.
+    v_range : (low, high), default (-1.0, 1.0)
+        The piece of the catenoid: low < high, within [-300, 300] (cosh² v overflows beyond).
+    seed : int, default 0
+        Seed of the draws (u, v and the acceptance test).
+    return_params : bool, default False
+        Also return the (u, v) parameters.
 
     Returns
     -------
-    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_params``.
+    points : ndarray of float64, shape (n, 3)
+        The samples, X(u, v) of :func:`~thesis_lib.curvature.exact.catenoid_point`: uniform in
+        area, so denser in (u, v) where cosh² v is larger.
+    uv : ndarray of float64, shape (n, 2)
+        Their parameters, u in [0, 2π); only when ``return_params``.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n`` or ``seed``, or a ``v_range`` that is not such an interval.
     """
     n = _count(n, 3)
     try:
@@ -103,14 +128,24 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
 
     Parameters
     ----------
-    n : number of samples (>= 1).
-    n_dims : ambient dimension (>= 2).
-    radius : > 0.
-    seed : seed of the random draws.
+    n : int
+        Number of points, at least 1.
+    n_dims : int, default 3
+        Ambient dimension, at least 2.
+    radius : float, default 1.0
+        Radius of the sphere, > 0.
+    seed : int, default 0
+        Seed of the normal draws that are projected onto the sphere.
 
     Returns
     -------
-    ndarray, shape (n, n_dims)
+    ndarray of float64, shape (n, n_dims)
+        The samples.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n``, ``n_dims``, ``radius`` or ``seed``.
     """
     d = check_int(n_dims, "n_dims", minimum=2)
     n = _count(n, d)
