@@ -119,12 +119,15 @@ def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    path : the file.
+    path : str or os.PathLike
+        The file; its suffix tells pyvista the format.
 
     Returns
     -------
-    vertices : (nv, 3) float64.
-    faces : (m, 3) int64 (polygons triangulated).
+    vertices : ndarray of float64, shape (nv, 3)
+        The points of the file's surface.
+    faces : ndarray of int64, shape (m, 3)
+        Its triangles (polygons triangulated), as :func:`from_pyvista` gives them.
 
     Raises
     ------
@@ -158,14 +161,26 @@ def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.Arra
 
     Parameters
     ----------
-    path : destination file (its folder must exist).
-    vertices, faces : the mesh, as in :func:`to_pyvista`.
-    binary : binary rather than ASCII where the format allows both.
+    path : str or os.PathLike
+        Destination file, with a suffix naming the format (its folder must exist).
+    vertices : array_like, shape (nv, 3)
+        The points, as in :func:`to_pyvista`.
+    faces : array_like of int, shape (m, 3)
+        The triangles, as in :func:`to_pyvista`.
+    binary : bool, default True
+        Binary rather than ASCII where the format allows both.
 
     Returns
     -------
     Path
         The file written.
+
+    Raises
+    ------
+    ValueError
+        On a path without suffix, an invalid mesh, or a format pyvista cannot write.
+    FileNotFoundError
+        If the folder of ``path`` does not exist.
     """
     p = Path(path)
     if not p.suffix:
