@@ -208,7 +208,8 @@ def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | 
         Top simplices of a simplicial pseudo-manifold (checked).
     area : {"mixed", "voronoi", "barycentric"}, default "mixed"
         See the module docstring; ``"mixed"`` needs n = 2.
-    kind : deprecated alias of ``area`` (FutureWarning; removed in the next release).
+    kind : str or None, default None
+        Deprecated alias of ``area`` (FutureWarning; removed in the next release).
 
     Returns
     -------

@@ -160,8 +160,10 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
 
     Parameters
     ----------
-    simplices : (m, n + 1) int64 vertex indices in 0..n_vertices-1, no repeated vertex in a row.
-    n_vertices : number of vertices.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Top simplices: vertex indices in 0..n_vertices-1, no repeated vertex in a row (trusted).
+    n_vertices : int
+        Number of vertices.
 
     Raises
     ------

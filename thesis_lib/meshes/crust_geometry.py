@@ -305,16 +305,26 @@ def filtered_faces(pts: np.ndarray, tri: Delaunay, theta: float, far: float, *,
 
     Parameters
     ----------
-    pts : ``(N, d)`` samples (validated, scaled by the caller).
-    tri : their Delaunay triangulation.
-    theta : normal-filter angle in (0, π/2).
-    far : distance of the poles at infinity and cap of all pole distances.
-    resolve_flat : treatment of flat Delaunay cells (default: their faces are left out).
+    pts : ndarray of float64, shape (N, d)
+        The samples (validated, scaled by the caller).
+    tri : scipy.spatial.Delaunay
+        Their Delaunay triangulation.
+    theta : float
+        Normal-filter angle in (0, π/2) (checked by the caller).
+    far : float
+        Distance of the poles at infinity and cap of all pole distances.
+    resolve_flat : callable, default: leave the faces of flat cells out
+        Treatment of flat Delaunay cells: called as ``resolve_flat(pts, tri, cc, ok)`` with the
+        circumcentres and their reliability (:func:`circumcentres`), it returns ``(centre, keep,
+        across)``: the Voronoi vertex of each cell, whether each face slot stays, and the cell whose
+        Voronoi vertex ends each face's dual edge on the cell's side.
 
     Returns
     -------
-    faces : ``(m, d)`` vertex rows, each sorted, in lexicographic order.
-    p_plus, p_minus : ``(N, d)`` poles.
+    faces : ndarray of int, shape (m, d)
+        Vertex rows, each sorted, in lexicographic order.
+    p_plus, p_minus : ndarray of float64, shape (N, d)
+        The poles (:func:`poles_from_delaunay`).
     """
     cc, ok = circumcentres(pts[tri.simplices])
     p_plus, p_minus = poles_from_delaunay(pts, tri, cc, ok, far)

@@ -198,8 +198,8 @@ def crust_nd_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far:
 
     Returns
     -------
-    ndarray of int64, shape (m, n + 1)
-        The candidate simplices, each row sorted, rows in lexicographic order.
+    ndarray of int, shape (m, n + 1)
+        The candidate simplices, each row sorted, rows in lexicographic order (Qhull's index type).
 
     Raises
     ------

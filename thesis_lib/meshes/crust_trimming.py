@@ -370,15 +370,25 @@ def outer_walk(pts: np.ndarray, simplices: np.ndarray, *, prune: bool = True) ->
 
     Parameters
     ----------
-    pts : ``(N, n + 1)`` samples.
-    simplices : ``(m, n + 1)`` int64 candidate n-simplices (validated indices into ``pts``).
-    prune : remove simplices with sharp ridges first.
+    pts : ndarray of float64, shape (N, n + 1)
+        The samples.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Candidate n-simplices (validated indices into ``pts``).
+    prune : bool, default True
+        Remove simplices with sharp ridges first.
 
     Returns
     -------
-    simplices : coherently oriented n-simplices (outward for a closed hypersurface), every ridge in
-        one or two of them (a simplex that would put a third on a ridge is left out, in visiting order).
-    conflicts : the orientation conflicts met by the walk (0 for an orientable result).
+    simplices : ndarray of int64, shape (k, n + 1)
+        Coherently oriented n-simplices (outward for a closed hypersurface), every ridge in one or
+        two of them (a simplex that would put a third on a ridge is left out, in visiting order).
+    conflicts : int
+        The orientation conflicts met by the walk (0 for an orientable result).
+
+    Raises
+    ------
+    ValueError
+        If ``prune`` removes every simplex (the sample is too sparse).
     """
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
@@ -399,11 +409,17 @@ def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
 
     Parameters
     ----------
-    pts, simplices : as in :func:`outer_walk`.
+    pts : ndarray of float64, shape (N, n + 1)
+        The samples, as in :func:`outer_walk`.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Candidate n-simplices, as in :func:`outer_walk`.
 
     Returns
     -------
-    simplices, conflicts : as in :func:`outer_walk`.
+    simplices : ndarray of int64, shape (k, n + 1)
+        Coherently oriented n-simplices reached before the boundary; every ridge in one or two.
+    conflicts : int
+        The orientation conflicts met by the walk.
     """
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
