@@ -85,8 +85,8 @@ def crust_curvature_errors(surface: str, n_samples: int, *, seed: int = 0, area:
     -------
     dict
         ``simplices``, ``points``, ``params``, ``H`` (per sample, NaN where not estimated), ``report``
-        (:class:`ManifoldReport`), ``pole_ratio``, ``estimated`` (mask of the samples with an
-        estimate: vertices whose star is a manifold ball), ``errors`` (at those, see below),
+        (:class:`~thesis_lib.meshes.crust_nd.ManifoldReport`), ``pole_ratio``, ``estimated`` (mask
+        of the samples with an estimate: vertices whose star is a manifold ball), ``errors`` (at those, see Notes),
         ``median``, ``p90``; for the catenoid also ``control_median``/``control_p90``: the same
         errors on the Delaunay triangulation of the samples' parameters (u, v, w) lifted to R⁴, a
         triangulation with no reconstruction error.
