@@ -281,8 +281,7 @@ def nearest_vertex_volumes(points: ArrayLike) -> NDArray[np.float64]:
     Raises
     ------
     ValueError
-        If ``points`` is not an (m, n + 1, d) array with m >= 1 and d >= n >= 1, or holds NaN or
-        infinite values.
+        On the bad ``points`` that :func:`barycentric_gradients` refuses.
     """
     p = _simplices(points)
     m, w, _ = p.shape

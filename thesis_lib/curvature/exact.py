@@ -261,7 +261,7 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0
     Raises
     ------
     ValueError
-        As :func:`torus_shape_operator`.
+        Unless 0 < r < R (finite), or if ``u`` and ``v`` are not finite or do not broadcast.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -315,7 +315,7 @@ def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: flo
     Raises
     ------
     ValueError
-        As :func:`torus_uv`.
+        If ``points`` is not (..., 3) or not finite, or the radii are invalid (:func:`torus_uv`).
     """
     return torus_principal_curvatures(*torus_uv(points, R, r), R, r)
 

@@ -211,7 +211,7 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
     Parameters
     ----------
     vertices : array_like, shape (nv, n + 1)
-        Vertex coordinates.
+        Vertex coordinates, as in :func:`~.validate.validate_mesh`.
     simplices : array_like of int, shape (m, n + 1)
         Top simplices (rows in orientation order).
 
