@@ -19,6 +19,7 @@ every point and H only up to sign; K (n even) does not depend on the sign.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 from scipy.spatial import cKDTree
 
 from .._validate import as_points, check_int
@@ -29,7 +30,7 @@ __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS
 KNN_WEIGHTS = ("uniform", "gaussian")
 
 
-def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> ShapeOperator:
+def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "uniform") -> ShapeOperator:
     """Least-squares shape operator at every point from its ``k`` nearest neighbours.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (normal curvatures (3.24) fitted by least
@@ -37,16 +38,25 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
 
     Parameters
     ----------
-    points : ``(N, n + 1)`` samples of a hypersurface (n >= 1), no duplicates.
-    k : number of neighbours (at least n (n + 1) / 2 + n, enough to determine S and the normal).
-    weights : ``"uniform"`` or ``"gaussian"`` (exp(−‖x_j − x_i‖² / h²), h the distance to the k-th
-        neighbour).
+    points : array_like, shape (N, n + 1)
+        Samples of a hypersurface (n >= 1), at least 3, finite, no duplicates.
+    k : int, default 16
+        Number of neighbours: at least n (n + 1) / 2 + n (enough to determine S and the normal) and
+        fewer than N.
+    weights : {"uniform", "gaussian"}, default "uniform"
+        Weights w_ij of the neighbours in the least-squares fit (not point weights):
+        ``"gaussian"`` is exp(−‖x_j − x_i‖² / h²), h the distance to the k-th neighbour.
 
     Returns
     -------
     ShapeOperator
         ``tensor`` (N, n, n) symmetric S in the tangent ``basis`` (N, n, n + 1), and the unit
         ``normal`` (N, n + 1) (sign arbitrary: S changes sign with it).
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, points in R^1, a ``k`` out of range or unknown ``weights``.
     """
     pts = as_points(points, min_points=3, allow_duplicates=False)
     npts, d = pts.shape
@@ -88,15 +98,32 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
     return ShapeOperator(tensor, basis, normal)
 
 
-def knn_curvature(points, *, kind: str = "mean", k: int = 16, weights: str = "uniform") -> np.ndarray:
+def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, weights: str = "uniform") -> np.ndarray:
     """|H| = |tr S| / n (``kind="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
     :func:`knn_shape_operator`.
 
     Thesis: §3.3.4 (the shape operator's trace and determinant: H = tr S / n, K = det S).
 
+    Parameters
+    ----------
+    points : array_like, shape (N, n + 1)
+        Samples of a hypersurface (n >= 1), at least 3, finite, no duplicates.
+    kind : {"mean", "gaussian"}, default "mean"
+        Which curvature; ``"gaussian"`` needs n = 2.
+    k : int, default 16
+        Number of neighbours, as in :func:`knn_shape_operator`.
+    weights : {"uniform", "gaussian"}, default "uniform"
+        Weights of the neighbours in the fit, as in :func:`knn_shape_operator`.
+
     Returns
     -------
-    ndarray, shape (N,)
+    ndarray of float64, shape (N,)
+        |H| (unsigned, the normal's sign being arbitrary) or K at each point.
+
+    Raises
+    ------
+    ValueError
+        As :func:`knn_shape_operator`; also on an unknown ``kind`` or ``"gaussian"`` with n ≠ 2.
     """
     so = knn_shape_operator(points, k=k, weights=weights)
     n = so.tensor.shape[1]
@@ -109,12 +136,31 @@ def knn_curvature(points, *, kind: str = "mean", k: int = 16, weights: str = "un
     raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
 
 
-def neighbour_mean(points, values, *, k: int = 16) -> np.ndarray:
+def neighbour_mean(points: npt.ArrayLike, values: npt.ArrayLike, *, k: int = 16) -> np.ndarray:
     """The mean of ``values`` over each point and its ``k - 1`` nearest neighbours: a local average
     of a noisy per-point curvature estimate.
 
     Thesis: §3.3.1–§3.3.2 (an integrated curvature is turned into a value at p by averaging over a
     region around p).
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        The points.
+    values : array_like, shape (N,)
+        One value per point.
+    k : int, default 16
+        Size of each neighbourhood, the point itself included; 1 <= k <= N.
+
+    Returns
+    -------
+    ndarray of float64, shape (N,)
+        The mean of ``values`` over each point's k nearest points (itself among them).
+
+    Raises
+    ------
+    ValueError
+        On invalid points, ``values`` not of shape (N,), or ``k`` out of range.
     """
     pts = as_points(points)
     v = np.asarray(values, dtype=np.float64)
