@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy.spatial import cKDTree
 
-from .._validate import as_points, check_int
+from .._validate import as_points, check_int, resolve_alias
 from .shape import ShapeOperator
 
 __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS"]
@@ -30,7 +30,8 @@ __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS
 KNN_WEIGHTS = ("uniform", "gaussian")
 
 
-def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "uniform") -> ShapeOperator:
+def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights: str | None = None,
+                       weights: str | None = None) -> ShapeOperator:
     """Least-squares shape operator at every point from its ``k`` nearest neighbours.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (normal curvatures (3.24) fitted by least
@@ -43,9 +44,12 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "un
     k : int, default 16
         Number of neighbours: at least n (n + 1) / 2 + n (enough to determine S and the normal) and
         fewer than N.
-    weights : {"uniform", "gaussian"}, default "uniform"
-        Weights w_ij of the neighbours in the least-squares fit (not point weights):
-        ``"gaussian"`` is exp(−‖x_j − x_i‖² / h²), h the distance to the k-th neighbour.
+    neighbour_weights : {"uniform", "gaussian"}, default "uniform"
+        Weights w_ij of the neighbours in the least-squares fit: ``"gaussian"`` is
+        exp(−‖x_j − x_i‖² / h²), h the distance to the k-th neighbour.
+    weights : str, optional
+        Deprecated alias of ``neighbour_weights`` (FutureWarning; ``weights`` are the points'
+        weights everywhere else).
 
     Returns
     -------
@@ -56,8 +60,11 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "un
     Raises
     ------
     ValueError
-        On invalid or duplicate points, points in R^1, a ``k`` out of range or unknown ``weights``.
+        On invalid or duplicate points, points in R^1, a ``k`` out of range or unknown
+        ``neighbour_weights``.
     """
+    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
+                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
     pts = as_points(points, min_points=3, allow_duplicates=False)
     npts, d = pts.shape
     n = d - 1
@@ -67,8 +74,8 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "un
     k = check_int(k, "k", minimum=need)
     if k >= npts:
         raise ValueError(f"k = {k} neighbours need more than {k} points, got {npts}")
-    if weights not in KNN_WEIGHTS:
-        raise ValueError(f"weights must be one of {KNN_WEIGHTS}, got {weights!r}")
+    if not isinstance(neighbour_weights, str) or neighbour_weights not in KNN_WEIGHTS:
+        raise ValueError(f"neighbour_weights must be one of {KNN_WEIGHTS}, got {neighbour_weights!r}")
     dist, nb = cKDTree(pts).query(pts, k=k + 1)
     diff = pts[nb[:, 1:]] - pts[:, None, :]  # (N, k, d): x_j - x_i
     centred = pts[nb] - pts[nb].mean(axis=1, keepdims=True)
@@ -84,7 +91,7 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "un
     iu = np.triu_indices(n)
     scale = np.where(iu[0] == iu[1], 1.0, np.sqrt(2.0))
     phi = coords[:, :, iu[0]] * coords[:, :, iu[1]] * scale  # (N, k, n(n+1)/2)
-    if weights == "gaussian":
+    if neighbour_weights == "gaussian":
         h2 = dist[:, -1:] ** 2
         w = np.exp(-dist[:, 1:] ** 2 / h2)
     else:
@@ -98,7 +105,8 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, weights: str = "un
     return ShapeOperator(tensor, basis, normal)
 
 
-def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, weights: str = "uniform") -> np.ndarray:
+def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, neighbour_weights: str | None = None,
+                  weights: str | None = None) -> np.ndarray:
     """|H| = |tr S| / n (``kind="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
     :func:`knn_shape_operator`.
 
@@ -112,8 +120,10 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, wei
         Which curvature; ``"gaussian"`` needs n = 2.
     k : int, default 16
         Number of neighbours, as in :func:`knn_shape_operator`.
-    weights : {"uniform", "gaussian"}, default "uniform"
+    neighbour_weights : {"uniform", "gaussian"}, default "uniform"
         Weights of the neighbours in the fit, as in :func:`knn_shape_operator`.
+    weights : str, optional
+        Deprecated alias of ``neighbour_weights`` (FutureWarning).
 
     Returns
     -------
@@ -125,7 +135,9 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, wei
     ValueError
         As :func:`knn_shape_operator`; also on an unknown ``kind`` or ``"gaussian"`` with n ≠ 2.
     """
-    so = knn_shape_operator(points, k=k, weights=weights)
+    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
+                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
+    so = knn_shape_operator(points, k=k, neighbour_weights=neighbour_weights)
     n = so.tensor.shape[1]
     if kind == "mean":
         return np.abs(np.trace(so.tensor, axis1=1, axis2=2)) / n
