@@ -114,16 +114,24 @@ def provenance(topic: str) -> str:
     Returns
     -------
     str
-        Commit, date, cores and the load average at the start and end of the run, in Markdown; for
-        an older file without provenance, a sentence saying so.
+        Commit, date, cores and the load average at the start and end of the run, in Markdown (and
+        the same for each row re-run later, which carries its own run); for an older file without
+        provenance, a sentence saying so.
     """
     m = meta(topic)
     if not m:
         return f"`{topic}`: stored without provenance (an older harness): re-run `make bench`."
     load_avg = m.get("load_average", [None])[0]
     end = m.get("load_average_end", [None])[0]
-    return (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "
+    text = (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "
             f"load average {load_avg} at the start and {end} at the end of the run.")
+    for row in load(topic):
+        run = row.get("run")
+        if isinstance(run, dict):  # a row re-run later (harness --update) carries its own run
+            text += (f" Row `{row.get('case')}`: commit `{str(run.get('commit'))[:10]}`, {run.get('date')}, "
+                     f"load average {(run.get('load_average') or [None])[0]} at the start and "
+                     f"{(run.get('load_average_end') or [None])[0]} at the end.")
+    return text
 
 
 def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
