@@ -25,6 +25,7 @@ weights and their lexicographic ranks, and answers the predicates for arrays of 
 from __future__ import annotations
 
 from itertools import combinations
+from math import factorial
 
 import numpy as np
 import numpy.typing as npt
@@ -81,11 +82,23 @@ def _signs(values: np.ndarray) -> np.ndarray:
 
 
 def _dyadic(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each float as m · 2^(−e) with m an int64 (53 bits) and e >= 0 where needed: (m, e)."""
+    """Each float as m · 2^(−e) exactly, m an odd int64 (or 0, with e = 0): (m, e).
+
+    Odd mantissas keep the common scale of a batch small: integer coordinates stay themselves.
+    """
     mant, ex = np.frexp(values)
     m = (mant * 2.0**53).astype(np.int64)
     e = np.where(m == 0, 0, 53 - ex.astype(np.int64))
-    return m, e
+    low = m & -m  # the lowest set bit: 2^(trailing zeros)
+    zeros = np.where(m == 0, 0, np.frexp(low.astype(np.float64))[1] - 1)
+    return m >> zeros, e - zeros
+
+
+def _signs_of(values: np.ndarray) -> np.ndarray:
+    """Signs of exact integers: an int64 array or an object array of Python integers."""
+    if values.dtype == object:
+        return _signs(values)
+    return np.sign(values).astype(np.int8)
 
 
 def _det_perm_scalar(m: list[list[float]], a: list[list[float]]) -> tuple[float, float]:
@@ -384,6 +397,28 @@ class Geometry:
         w = self.weight_mantissas[idx].astype(object) * np.power(2, (2 * k - we).astype(object))
         return x, w, k
 
+    def small_ints(self, idx: np.ndarray, degree: int, terms: float) -> tuple[np.ndarray, np.ndarray] | None:
+        """:meth:`ints` as int64 arrays when a polynomial of the coordinates (degree ``degree`` in
+        coordinates and weights counted twice, at most ``terms`` terms of coefficient 1, each factor
+        a difference of two values) is exact in int64; else None (use :meth:`ints`).
+
+        Grids and other data on a coarse dyadic lattice take this path: their exact predicates run as
+        vectorised integer arithmetic instead of Python integers.
+        """
+        idx = np.asarray(idx, dtype=np.int64)
+        pe, we = self.exponents[idx], self.weight_exponents[idx]
+        k = int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
+        if k > 60:
+            return None
+        scale = 2.0**k
+        big = max(float(np.abs(self.points[idx]).max(initial=0.0)) * scale,
+                  float(np.sqrt(np.abs(self.weights[idx]).max(initial=0.0))) * scale, 1.0)
+        if terms * (2.0 * big) ** degree >= 2.0**60:  # margin for the float estimate of the bound
+            return None
+        x = self.mantissas[idx] << (k - pe)
+        w = self.weight_mantissas[idx] << (2 * k - we)
+        return x, w
+
     # -------------------------------------------------------------------------- orientation
     def orientation(self, simplices: np.ndarray) -> np.ndarray:
         """Exact signs (+1, 0, −1) of det[x_i − x_0] for full simplices ``(m, d + 1)``.
@@ -418,8 +453,10 @@ class Geometry:
             The signs +1, 0 or −1.
         """
         self.exact_rows += len(simplices)
-        x, _, _ = self.ints(simplices)
-        return _signs(expand_det(x[:, 1:, :] - x[:, :1, :]))
+        d = self.d
+        small = self.small_ints(simplices, d, float(factorial(d)))
+        x = self.ints(simplices)[0] if small is None else small[0]
+        return _signs_of(expand_det(x[:, 1:, :] - x[:, :1, :]))
 
     # -------------------------------------------------------------------------- power test
     def outside(self, simplices: np.ndarray, y: np.ndarray, orient: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -479,10 +516,13 @@ class Geometry:
         """
         self.exact_rows += len(simplices)
         allp = np.column_stack([simplices, y])
-        x, w, _ = self.ints(allp)
+        d = self.d
+        # the lifted determinant: (d + 1)! terms of degree d + 2, the lift a sum of d + 2 squares
+        small = self.small_ints(allp, d + 2, float(factorial(d + 1) * (d + 2)))
+        x, w = self.ints(allp)[:2] if small is None else small
         diff = x[:, :-1, :] - x[:, -1:, :]
         lift = (diff * diff).sum(axis=2) - (w[:, :-1] - w[:, -1:])
-        p = _signs(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
+        p = _signs_of(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
         out = p * cof_y > 0
         tie = p == 0
         rows = np.flatnonzero(tie)
@@ -493,7 +533,7 @@ class Geometry:
             cof = np.empty((len(rows), self.d + 2), dtype=np.int8)
             for j in range(self.d + 2):
                 rest = np.delete(xt, j, axis=1)
-                cof[:, j] = (-1) ** j * _signs(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
+                cof[:, j] = (-1) ** j * _signs_of(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
             by_rank = np.argsort(-self.rank[allp[rows]], axis=1)
             ordered = np.take_along_axis(cof, by_rank, axis=1)
             first = ordered[np.arange(len(rows)), np.argmax(ordered != 0, axis=1)]
