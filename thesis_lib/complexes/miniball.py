@@ -17,6 +17,7 @@ import numpy.typing as npt
 
 from .._validate import as_points, check_seed
 from ..jit import njit
+from ._pivot import pivot_row
 from .scaling import scaled
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
@@ -114,12 +115,7 @@ def _solve_small(a, b, k):
     if scale == 0.0:
         return x, False
     for col in range(k):
-        piv = col
-        best = abs(m[col, col])
-        for r in range(col + 1, k):
-            if abs(m[r, col]) > best:
-                best = abs(m[r, col])
-                piv = r
+        piv, best = pivot_row(m, col, k)
         if best <= 1e-13 * scale:
             return x, False
         if piv != col:
