@@ -96,7 +96,7 @@ def euler_characteristic(simplices: Filtration | Iterable[Sequence[int]] | np.nd
     Parameters
     ----------
     simplices : Filtration, iterable of sequences of int, or numpy.ndarray
-        A complex (see :func:`homology`); all faces are added, values are ignored.
+        The complex, in any form :func:`homology` accepts.
 
     Returns
     -------
@@ -169,7 +169,7 @@ def betti_numbers(simplices: Filtration | Iterable[Sequence[int]] | np.ndarray, 
     Parameters
     ----------
     simplices : Filtration, iterable of sequences of int, or numpy.ndarray
-        A complex (see :func:`homology`); all faces are added, values are ignored.
+        The complex (its faces are added; filtration values play no part).
     coefficients : int
         0 for the integers Z, or a prime p for the field Z/p.
 

@@ -433,7 +433,7 @@ def high_contrast(X: npt.ArrayLike, top: float = 0.2) -> np.ndarray:
     Parameters
     ----------
     X : array_like, shape (n, size²)
-        Finite patches as rows (row-major pixels), n >= 1, size >= 2.
+        Patches as for :func:`contrast_norm`.
     top : float
         The fraction kept, in (0, 1]; at least one patch is kept.
 
@@ -445,8 +445,7 @@ def high_contrast(X: npt.ArrayLike, top: float = 0.2) -> np.ndarray:
     Raises
     ------
     ValueError
-        Patches that are not a non-empty finite ``(n, size²)`` array.
-        Also a ``top`` outside (0, 1].
+        Bad patches (as :func:`contrast_norm`), or a ``top`` outside (0, 1].
     """
     arr, _ = _as_patch_rows(X)
     if not (0 < top <= 1):
@@ -464,7 +463,7 @@ def normalise(X: npt.ArrayLike) -> np.ndarray:
     Parameters
     ----------
     X : array_like, shape (n, size²)
-        Finite patches as rows (row-major pixels), n >= 1, size >= 2.
+        Patches as rows, none of them constant.
 
     Returns
     -------
@@ -474,8 +473,7 @@ def normalise(X: npt.ArrayLike) -> np.ndarray:
     Raises
     ------
     ValueError
-        Patches that are not a non-empty finite ``(n, size²)`` array.
-        Also a constant patch (it has no direction).
+        Bad patches (as :func:`contrast_norm`), or a constant patch (it has no direction).
     """
     arr, _ = _as_patch_rows(X)
     centred = arr - arr.mean(axis=1, keepdims=True)
@@ -650,17 +648,12 @@ def gradient_projection(X: npt.ArrayLike) -> np.ndarray:
     Parameters
     ----------
     X : array_like, shape (n, size²)
-        Finite patches as rows (row-major pixels), n >= 1, size >= 2.
+        Patches as rows; unit ones (:func:`normalise`) give coordinates in [−1, 1].
 
     Returns
     -------
     numpy.ndarray of float64, shape (n, 2)
         (horizontal, vertical) coordinates of each patch.
-
-    Raises
-    ------
-    ValueError
-        Patches that are not a non-empty finite ``(n, size²)`` array.
     """
     arr, size = _as_patch_rows(X)
     basis = dct_basis(size)

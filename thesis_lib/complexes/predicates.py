@@ -204,17 +204,17 @@ class ScalarPredicates:
         return got
 
     def w(self, i: int) -> float:
-        """The weight of point ``i`` as a Python float (cached).
+        """The weight of point ``i`` as a Python float (cached with its coordinates, :meth:`x`).
 
         Parameters
         ----------
         i : int
-            A point index of the geometry.
+            The point.
 
         Returns
         -------
         float
-            Its (scaled) weight.
+            Its weight, scaled by the square of the coordinates' power of two.
         """
         self.x(i)
         return self._w[i]
@@ -404,6 +404,21 @@ class Geometry:
 
         Grids and other data on a coarse dyadic lattice take this path: their exact predicates run as
         vectorised integer arithmetic instead of Python integers.
+
+        Parameters
+        ----------
+        idx : numpy.ndarray of int
+            Point indices, any shape.
+        degree : int
+            Degree of the polynomial to be evaluated exactly.
+        terms : float
+            A bound on its number of terms.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            ``(x, w)``: int64 coordinates ×2^K (shape ``idx.shape + (d,)``) and weights ×4^K (shape
+            ``idx.shape``); None when K > 60 or the polynomial could overflow int64.
         """
         idx = np.asarray(idx, dtype=np.int64)
         pe, we = self.exponents[idx], self.weight_exponents[idx]
@@ -445,12 +460,12 @@ class Geometry:
         Parameters
         ----------
         simplices : numpy.ndarray of int, shape (m, d + 1)
-            Full simplices (point indices).
+            As for :meth:`orientation`.
 
         Returns
         -------
-        numpy.ndarray of int8, shape (m,)
-            The signs +1, 0 or −1.
+        numpy.ndarray of int8
+            One sign (+1, 0 or −1) per row, each decided exactly.
         """
         self.exact_rows += len(simplices)
         d = self.d
@@ -499,20 +514,16 @@ class Geometry:
 
         Parameters
         ----------
-        simplices : numpy.ndarray of int, shape (m, d + 1)
-            Full simplices (point indices).
-        y : numpy.ndarray of int, shape (m,)
-            One point index per simplex.
+        simplices, y : numpy.ndarray of int
+            As for :meth:`outside`.
         cof_y : numpy.ndarray of int, shape (m,)
             ``(−1)^(d+1)`` times each simplex's orientation sign: the sign with which the
             determinant grows with y's lift.
 
         Returns
         -------
-        outside : numpy.ndarray of bool, shape (m,)
-            π_y > r² after the perturbation.
-        tie : numpy.ndarray of bool, shape (m,)
-            The rows that were exact ties before it.
+        outside, tie : numpy.ndarray of bool
+            As for :meth:`outside`.
         """
         self.exact_rows += len(simplices)
         allp = np.column_stack([simplices, y])
