@@ -157,8 +157,10 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
 
     Parameters
     ----------
-    simplices : (m, n + 1) int64 vertex indices in 0..n_vertices-1, no repeated vertex in a row.
-    n_vertices : number of vertices.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Top simplices: vertex indices in 0..n_vertices-1, no repeated vertex in a row (trusted).
+    n_vertices : int
+        Number of vertices.
 
     Raises
     ------
@@ -179,6 +181,20 @@ def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.nd
     the Crust of random samples (§3.4.1) have a few; the curvature functions give no estimate (NaN)
     there, as on boundary vertices.
 
+    Parameters
+    ----------
+    simplices : ndarray of int64, shape (m, n + 1)
+        Top simplices with vertex indices in ``range(n_vertices)`` (trusted: validate first, e.g.
+        with :func:`~.validate.validate_mesh`).
+    n_vertices : int
+        Number of vertices nv.
+
+    Returns
+    -------
+    ndarray of bool, shape (nv,)
+        True at the pinched vertices; all False for curves (n = 1), whose vertex links are never
+        checked.
+
     Raises
     ------
     ValueError
@@ -194,13 +210,16 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
 
     Parameters
     ----------
-    vertices : (nv, n + 1) array of points.
-    simplices : (m, n + 1) top simplices (rows in orientation order).
+    vertices : array_like, shape (nv, n + 1)
+        Vertex coordinates, as in :func:`~.validate.validate_mesh`.
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices (rows in orientation order).
 
     Returns
     -------
     Mesh
-        The validated mesh; ``mesh.pinched`` marks the vertices whose star is not one fan.
+        The validated mesh, its ``boundary`` counted; ``mesh.pinched`` marks the vertices whose star
+        is not one fan.
 
     Raises
     ------

@@ -106,7 +106,21 @@ def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cov
 def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
     """Corner dot products, squared opposite edge lengths and twice the areas of triangles in R^3.
 
-    One compiled pass over the triangles (numba); ``v`` float64 (nv, 3), ``s`` int64 (m, 3), in range.
+    One compiled pass over the triangles (numba); no validation.
+    Thesis: Theorem 3.18 and §3.3.2 (the Gram matrices and corner cotangents of triangles).
+
+    Parameters
+    ----------
+    v : ndarray of float64, shape (nv, 3)
+        Vertex coordinates.
+    s : ndarray of int64, shape (m, 3)
+        Triangles, vertex indices in range (trusted).
+
+    Returns
+    -------
+    TriangleGeometry
+        ``dot`` and ``edge_sq`` (3, m), ``twice_area`` (m,), the corner ``coords`` (3, 3, m), and
+        ``edge_lo``, ``edge_hi`` (m, 3), the ends of the edge opposite each corner.
     """
     return _checked_triangle_geometry(v, s)[0]
 
@@ -150,6 +164,18 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
 
     Thesis: Theorem 3.18 (the Gram determinant G^2 = det(G-hat), G = n! A).
     No validation: use on arrays that passed :func:`validate_mesh`.
+
+    Parameters
+    ----------
+    vertices : ndarray of float64, shape (nv, d)
+        Vertex coordinates.
+    simplices : ndarray of int, shape (m, n + 1)
+        Simplices (vertex indices in range), d >= n.
+
+    Returns
+    -------
+    ndarray of float64, shape (m,)
+        The n-dimensional hyperarea of each simplex (1 for n = 0).
     """
     p = vertices[simplices]
     n = simplices.shape[1] - 1
@@ -209,25 +235,46 @@ def _rows(keys: np.ndarray, nv: int, width: int, integral: bool) -> np.ndarray:
     return np.frombuffer(np.ascontiguousarray(keys).tobytes(), dtype=np.int64).reshape(-1, width)
 
 
-def ridges(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
+def ridges(simplices: npt.ArrayLike, nv: int) -> tuple[np.ndarray, np.ndarray]:
     """The ridges ((n-1)-faces) of the top simplices and how many top simplices hold each.
 
     Thesis: §3.3 (a triangulated hypersurface: every ridge in one or two top simplices).
 
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices, vertex indices in ``range(nv)`` (trusted).
+    nv : int
+        Number of vertices.
+
     Returns
     -------
-    (ridges, counts)
-        ``ridges`` is ``(r, n)`` with sorted rows, ``counts`` is ``(r,)``.
+    ridges : ndarray of int64, shape (r, n)
+        The distinct ridges, rows sorted.
+    counts : ndarray of int, shape (r,)
+        How many top simplices hold each ridge.
     """
     simplices = np.asarray(simplices, dtype=np.int64)
     keys, counts, integral = _ridge_counts(simplices, nv)
     return _rows(keys, nv, simplices.shape[1] - 1, integral), counts
 
 
-def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
+def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     """Boolean mask of the vertices on a boundary ridge (a ridge lying in one top simplex).
 
     Thesis: §3.1.2 (Theorem 3.5: surfaces with boundary carry a boundary term).
+
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices of a validated mesh (trusted, as in :func:`ridges`).
+    nv : int
+        Number of vertices: the length of the mask.
+
+    Returns
+    -------
+    ndarray of bool, shape (nv,)
+        True at the vertices of the ridges that lie in exactly one top simplex.
     """
     r, counts = ridges(np.asarray(simplices, dtype=np.int64), nv)
     mask = np.zeros(nv, dtype=bool)
@@ -254,8 +301,10 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
     Returns
     -------
     Mesh
-        The mesh with float64 vertices, int64 simplices, simplex hyperareas, the boundary and
-        isolated vertex masks and, for n = 2, the per-corner :class:`TriangleGeometry`.
+        The vertices (float64) and simplices (int64, rows as given), the hyperarea of each simplex,
+        the boundary (None without ``count_ridges``) and isolated vertex masks, and for n = 2 the
+        per-corner :class:`TriangleGeometry`; ``pinched`` is left None (see
+        :func:`~.manifold.checked_mesh`).
 
     Raises
     ------
@@ -352,11 +401,21 @@ def _boundary(s: np.ndarray, nv: int, tri: TriangleGeometry | None) -> np.ndarra
     return boundary
 
 
-def check_orientation(simplices: np.ndarray) -> None:
+def check_orientation(simplices: npt.ArrayLike) -> None:
     """Raise ``ValueError`` if neighbouring simplices are not coherently oriented.
 
     Thesis: §3.1.1 (the normal N = X_u ∧ X_v / W needs an orientation); for n = 2 two faces
     sharing an edge must traverse it in opposite directions.
+
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, 3)
+        Triangles with non-negative vertex indices, rows in orientation order.
+
+    Raises
+    ------
+    ValueError
+        If two faces traverse an edge in the same direction, or the simplices are not triangles.
     """
     s = np.asarray(simplices, dtype=np.int64)
     if s.shape[1] != 3:

@@ -19,7 +19,7 @@ from . import atomic
 from .paths import project_root, shared_dir
 from .registry import read_tables
 
-__all__ = ["DataError", "Entry", "manifest", "path", "verify", "fetch", "sha256_of", "check", "inside"]
+__all__ = ["DataError", "Entry", "manifest", "manifest_path", "path", "verify", "fetch", "sha256_of", "check", "inside"]
 
 
 class DataError(ValueError):
@@ -44,7 +44,14 @@ _SHA = re.compile(r"[0-9a-f]{64}")
 _SCHEMES = ("https://", "http://", "file://")
 
 
-def _manifest_path() -> Path:
+def manifest_path() -> Path:
+    """The project's data manifest.
+
+    Returns
+    -------
+    Path
+        ``data/manifest.toml`` below the project root (it need not exist).
+    """
     return project_root() / "data" / "manifest.toml"
 
 
@@ -132,7 +139,7 @@ def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
         If the file is missing or is not valid TOML, or an entry is malformed (wrong keys or types,
         a ``file`` outside ``data/``, a repeated name).
     """
-    path = Path(manifest_file) if manifest_file else _manifest_path()
+    path = Path(manifest_file) if manifest_file else manifest_path()
     items = read_tables(path, "file", DataError)
     entries: dict[str, Entry] = {}
     for item in items:

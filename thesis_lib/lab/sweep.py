@@ -146,7 +146,7 @@ def data_bundle() -> dict[str, object]:
     from . import data
 
     try:
-        manifest_file = data._manifest_path()
+        manifest_file = data.manifest_path()
         entries = data.manifest(manifest_file)
     except (data.DataError, OSError):
         return {"manifest": b"", "files": {}}
