@@ -79,14 +79,14 @@ def write_bytes(path: str | Path, data: bytes) -> Path:
 
 
 def write_text(path: str | Path, text: str) -> Path:
-    """Write ``text`` (UTF-8) to ``path`` atomically.
+    """:func:`write_bytes` of ``text`` encoded as UTF-8.
 
     Parameters
     ----------
     path : str or pathlib.Path
-        The file to write; its parent folders are created.
+        As for :func:`write_bytes`.
     text : str
-        The new contents, encoded as UTF-8.
+        The new contents.
 
     Returns
     -------

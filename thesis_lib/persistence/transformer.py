@@ -70,12 +70,8 @@ class RipsDiagrams:
         Returns
         -------
         RipsDiagrams
-            This transformer.
-
-        Raises
-        ------
-        ValueError
-            On a name that is not a parameter.
+            This transformer with the new values (so ``set_params(...).fit_transform(X)`` chains);
+            unknown names raise ``ValueError``.
         """
         valid = self.get_params()
         for name, value in params.items():
