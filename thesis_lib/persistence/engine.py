@@ -20,11 +20,14 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from typing import Any
+
 import numpy as np
 
 from .._unionfind import find as _find
 from .._validate import resolve_coefficients
-from ..filtration import as_complex
+from ..filtration import Filtration, as_complex
 from ..jit import njit
 from .barcode import Barcode
 from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
@@ -293,18 +296,37 @@ def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared,
 
 
 # ---------------------------------------------------------------------------- driver
-def persistence(filtration, coefficients: int | None = None, *, stats: dict | None = None,
-                p: int | None = None) -> Barcode:
+def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
+                stats: dict[int, dict[str, int]] | None = None, p: int | None = None) -> Barcode:
     """Barcode of a filtration over Z/p by the fast engine (same result as :func:`compute_intervals`).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.complexes.Filtration` or an iterable of ``(simplex, value)`` pairs.
-    coefficients : a prime p, the field Z/p (default 2).
-    stats : optional dict, filled with counts (columns reduced, column additions) per dimension.
-    p : deprecated alias of ``coefficients``.
+    filtration : Filtration or iterable of (simplex, value) pairs
+        A :class:`~thesis_lib.filtration.Filtration` (e.g. from :func:`~thesis_lib.complexes.rips`),
+        or anything :func:`~thesis_lib.filtration.as_complex` takes.
+    coefficients : int, optional
+        A prime p: the field Z/p (default 2).
+    stats : dict, optional
+        Filled per dimension d < dim K with ``{"columns": ..., "additions": ...}`` (columns of the
+        reduction after clearing, column additions).
+    p : int, optional
+        Deprecated alias of ``coefficients`` (warns).
+
+    Returns
+    -------
+    Barcode
+        Dimensions 0 .. dim K with the creating and killing simplices of every interval (for
+        :meth:`~Barcode.representative`); the top dimension is listed as complete unless the
+        filtration is ``truncated``.
+
+    Raises
+    ------
+    ValueError
+        A complex :func:`~thesis_lib.filtration.as_complex` refuses, ``coefficients`` not a prime, a
+        triangle with a missing edge, or more than 2³¹ − 1 simplices in one dimension.
 
     Notes
     -----

@@ -21,6 +21,19 @@ def inverse(a: int, p: int) -> int:
     """a⁻¹ in Z/p for a prime p (Python integers; Fermat: a^(p−2)).
 
     Thesis: Algorithm 1 (Reduce), the factor q⁻¹ of ``d = d − q⁻¹ T[i]``.
+
+    Parameters
+    ----------
+    a : int
+        The element to invert; any integer not divisible by ``p`` (reduced mod ``p`` first).
+    p : int
+        A prime: the field Z/p.
+
+    Returns
+    -------
+    int
+        The residue b in ``1 .. p − 1`` with ``a · b ≡ 1 (mod p)`` (0 when ``p`` divides ``a``, which
+        has no inverse: callers never ask for it).
     """
     return pow(int(a) % p, p - 2, p)
 

@@ -62,7 +62,25 @@ class Representatives:
         return rank
 
     def finite(self, tau: int) -> dict[int, int]:
-        """R_τ: the reduced boundary of the killing (dim+1)-simplex τ (a cycle of dim-simplices)."""
+        """R_τ: the reduced boundary of the killing (dim+1)-simplex τ (a cycle of dim-simplices).
+
+        Thesis: Theorem 2.39 (z_i for a finite interval: a boundary from deg τ on).
+
+        Parameters
+        ----------
+        tau : int
+            Index of τ in ``K.simplices[dim + 1]``; one of ``deaths_up``.
+
+        Returns
+        -------
+        dict of int to int
+            ``{index of a dim-simplex: coefficient in 1 .. p − 1}``; its latest simplex creates the class.
+
+        Raises
+        ------
+        KeyError
+            τ is not one of ``deaths_up``.
+        """
         if self._finite is None:
             K, d, p = self.K, self.dim, self.p
             rank_up, rank = self._rank(d + 1), self._rank(d)
@@ -85,7 +103,25 @@ class Representatives:
         return self._finite[int(tau)]
 
     def essential(self, sigma: int) -> dict[int, int]:
-        """V_σ: a cycle ∂V_σ = 0 whose latest simplex is the dim-simplex σ (an essential class)."""
+        """V_σ: a cycle ∂V_σ = 0 whose latest simplex is the dim-simplex σ (an essential class).
+
+        Thesis: Theorem 2.39 (z_i for an infinite interval).
+
+        Parameters
+        ----------
+        sigma : int
+            Index of σ in ``K.simplices[dim]``; σ must create a class that never dies.
+
+        Returns
+        -------
+        dict of int to int
+            ``{index of a dim-simplex: coefficient in 1 .. p − 1}``, σ among them.
+
+        Raises
+        ------
+        RuntimeError
+            σ's boundary does not reduce to zero (σ does not create a class).
+        """
         K, d, p = self.K, self.dim, self.p
         sigma = int(sigma)
         if self._vstate is not None:
@@ -128,7 +164,22 @@ class Representatives:
         return v
 
     def cycle(self, sigma: int, tau: int) -> list[tuple[tuple[int, ...], int]]:
-        """The representative of the interval created by σ and killed by τ (``-1``: essential)."""
+        """The representative of the interval created by σ and killed by τ (``-1``: essential).
+
+        Thesis: Theorem 2.39 (the basis cycles z_i).
+
+        Parameters
+        ----------
+        sigma : int
+            Index of the creating simplex in ``K.simplices[dim]``.
+        tau : int
+            Index of the killing simplex in ``K.simplices[dim + 1]``, ``-1`` for an essential class.
+
+        Returns
+        -------
+        list of (tuple of int, int)
+            ``(simplex as a vertex tuple, coefficient in 1 .. p − 1)`` in filtration order.
+        """
         chain = self.essential(sigma) if tau < 0 else self.finite(tau)
         rank = self._rank(self.dim)
         S = self.K.simplices[self.dim]
