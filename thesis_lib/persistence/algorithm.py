@@ -1,7 +1,8 @@
 """The thesis's persistence algorithm, literally: Reduce (Algorithm 1) and ComputeIntervals (Algorithm 2).
 
 Readable pure Python on sparse chains ``{index: coefficient}``; meant for small complexes, the
-notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.
+notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.  The field
+arithmetic is the library's one modular inverse, :func:`~thesis_lib.persistence.kernels.inverse`.
 """
 
 from __future__ import annotations
@@ -15,13 +16,9 @@ import numpy as np
 from .._validate import resolve_coefficients
 from ..filtration import Filtration, as_complex
 from .barcode import Barcode
+from .kernels import inverse
 
 __all__ = ["compute_intervals", "trace_matrices"]
-
-
-def _inverse(q: int, p: int) -> int:
-    """q^{-1} in Z/p (Fermat: q^{p-2})."""
-    return pow(q, p - 2, p)
 
 
 def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
@@ -114,7 +111,7 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
             q = Ti[i]
             # d = d − q^{-1} T[i];   (the thesis's line assumes the coefficient of σ^i in d is 1; in
             # general we subtract d_i q^{-1} T[i], which clears the term σ^i over Z/p)
-            factor = d[i] * _inverse(q, p) % p
+            factor = d[i] * inverse(q, p) % p
             for k, c in Ti.items():
                 v = (d.get(k, 0) - factor * c) % p
                 if v:

@@ -834,6 +834,8 @@ def _record(wk, wc, wd, wn, s, c, d):
 def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, D, dnbr, dlen, B, p):
     """Reduce the coboundary columns of the k-simplices ``col_i`` (latest first) over Z/p.
 
+    The implicit kernel: the library's one reduction loop over coboundaries enumerated on the fly
+    (the stored-matrix one is :func:`~thesis_lib.persistence.kernels.reduce_columns`).
     ``col_tau``/``col_sign``: each column's earliest coface when it has the column's diameter (else
     −1) and its sign; ``app_keys``/``app_vals``: the table τ → σ of the zero apparent pairs (σ, τ)
     of this dimension.  Returns (births, deaths, essential births, pivot table keys, number of

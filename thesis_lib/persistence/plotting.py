@@ -170,11 +170,11 @@ def plot_diagram(
     Parameters
     ----------
     barcode : Barcode
-        The barcode to draw.
+        Each of its intervals becomes one point.
     dims : sequence of int, optional
-        Dimensions to draw (default: the complete ones), one colour each, in one panel.
+        The dimensions shown, one colour each, all in one panel (default: the complete ones).
     ax : matplotlib Axes, optional
-        The axes to draw into; a new figure otherwise.
+        Where to draw; without it, in a new figure.
     max_value : float, optional
         Where the line of essential classes (∞) is drawn and the axes end (default: a little past
         the largest finite value).
