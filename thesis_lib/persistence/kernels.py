@@ -62,6 +62,14 @@ def mod_inverse(a: np.int64, p: np.int64) -> np.int64:
     return t % p
 
 
+@njit(cache=True, inline="always")
+def _put(hv, hk, hc, i, v, k, c):
+    """Write the entry ``(v, k, c)`` at position i of the heap (sift-up and sift-down move entries so)."""
+    hv[i] = v
+    hk[i] = k
+    hc[i] = c
+
+
 @njit(cache=True)
 def heap_push(hv, hk, hc, n, v, k, c):
     """Push ``(value v, key k, coefficient c)`` on the heap of size ``n`` (arrays large enough); returns n + 1."""
@@ -69,15 +77,11 @@ def heap_push(hv, hk, hc, n, v, k, c):
     while i > 0:
         par = (i - 1) >> 1
         if v < hv[par] or (v == hv[par] and k < hk[par]):
-            hv[i] = hv[par]
-            hk[i] = hk[par]
-            hc[i] = hc[par]
+            _put(hv, hk, hc, i, hv[par], hk[par], hc[par])
             i = par
         else:
             break
-    hv[i] = v
-    hk[i] = k
-    hc[i] = c
+    _put(hv, hk, hc, i, v, k, c)
     return n + 1
 
 
@@ -103,15 +107,11 @@ def heap_replace_top(hv, hk, hc, n, v, k, c):
         if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and hk[right] < hk[left])):
             m = right
         if hv[m] < v or (hv[m] == v and hk[m] < k):
-            hv[i] = hv[m]
-            hk[i] = hk[m]
-            hc[i] = hc[m]
+            _put(hv, hk, hc, i, hv[m], hk[m], hc[m])
             i = m
         else:
             break
-    hv[i] = v
-    hk[i] = k
-    hc[i] = c
+    _put(hv, hk, hc, i, v, k, c)
 
 
 @njit(cache=True)
