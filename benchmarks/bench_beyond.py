@@ -9,32 +9,24 @@ Usage: ``python benchmarks/bench_beyond.py [--quick]``.  Prints Markdown tables 
   ours from the :class:`Bifiltration`, multipers from inserting the simplices into its simplex tree
   to the invariant on the grid (the Hilbert function integrated from its signed measure).  multipers
   runs with ``n_jobs=1`` (ours is single-threaded too).  The outputs are compared for equality.
-* ``crust4d``: the Crust of 3-sphere samples in R⁴ (radius 2), with Qhull's 4-D Delaunay alone, the
-  peak RSS of a fresh process, and whether the result is a closed 3-manifold.  No reference library
-  reconstructs hypersurfaces of R⁴; the 3-D case is compared with ``thesis_lib.meshes.crust``.
+* ``crust4d``: the Crust of 3-sphere samples in R⁴ (radius 2), interleaved with Qhull's 4-D Delaunay
+  of the samples alone (its first step, for scale), the peak memory of a fresh process above its
+  import baseline, and whether the result is a closed 3-manifold.  No reference library
+  reconstructs hypersurfaces of R⁴; the 3-D case is compared with ball pivoting in bench_crust.
 
-Times are the best of a few runs after a warm-up (numba compilation excluded).
+Every case interleaves its contenders (harness.compare: a warm-up each, then at least 5 rounds,
+15 under 0.1 s; medians and the median of paired ratios); memory from fresh processes
+(harness.memory_fields).
 """
 
 from __future__ import annotations
 
-import json
+import importlib.metadata
 import sys
-import time
 import warnings
 
 import harness
 import numpy as np
-
-QUICK = {"invariants": ["torus-300"], "crust": [1000]}
-FULL = {"invariants": ["torus-1000", "circles-100"], "crust": [1000, 10000, 30000]}
-
-INV_COLUMNS = [("case", "{case}"), ("invariant", "{invariant}"), ("grid", "{grid}"), ("simplices", "{n_simplices}"),
-               ("ours (s)", "{ours_s:.3f}"), ("multipers (s)", "{ref_s:.3f}"), ("ratio", "{ratio:.2f}"),
-               ("equal", "{equal}")]
-CRUST_COLUMNS = [("case", "{case}"), ("Crust (s)", "{ours_s:.1f}"), ("Qhull 4-D Delaunay (s)", "{delaunay_s:.1f}"),
-                 ("peak RSS (MB)", "{ours_mb:.0f}"), ("tetrahedra", "{n_simplices}"),
-                 ("closed 3-manifold", "{closed}"), ("samples used", "{vertex_fraction:.3f}")]
 
 
 def _bifiltration(case: str):
@@ -126,80 +118,122 @@ def _same_lines(ours, theirs, dims) -> bool:
     return True
 
 
-def invariant_rows(case: str, repeat: int) -> list[dict]:
+INVARIANTS = {"hilbert": ("Hilbert function", "40 × 40"), "rank": ("rank invariant (H₁)", "8 × 8"),
+              "lines": ("fibered barcodes", "32 lines")}
+
+
+def _invariant_contenders(data: str, invariant: str) -> tuple[object, dict]:
+    """(bifiltration, {"ours": ..., "multipers": ...}) for one invariant of one data set."""
     from thesis_lib.multiparameter import hilbert_function, rank_invariant
 
-    bif = _bifiltration(case)
+    bif = _bifiltration(data)
     dims = list(range(bif.max_homology_dim + 1))
-    rows = []
-    eps, kappa = _grid(bif, 40, 40)
-    ours_s, ours = harness.best_of(lambda: hilbert_function(bif, eps, kappa, dims=dims), repeat)
-    ref_s, ref = harness.best_of(lambda: _mp_hilbert(bif, eps, kappa, dims), repeat)
-    rows.append(dict(invariant="Hilbert function", grid="40 × 40", ours_s=ours_s, ref_s=ref_s,
-                     equal=bool(np.array_equal(ours, ref))))
-    eps, kappa = _grid(bif, 8, 8)
-    ours_s, ours = harness.best_of(lambda: rank_invariant(bif, eps, kappa, dim=1), repeat)
-    ref_s, ref = harness.best_of(lambda: _mp_rank(bif, eps, kappa, 1), repeat)
-    rows.append(dict(invariant="rank invariant (H₁)", grid="8 × 8", ours_s=ours_s, ref_s=ref_s,
-                     equal=bool(np.array_equal(ours, ref))))
+    if invariant == "hilbert":
+        eps, kappa = _grid(bif, 40, 40)
+        return bif, {"ours": lambda: hilbert_function(bif, eps, kappa, dims=dims),
+                     "multipers": lambda: _mp_hilbert(bif, eps, kappa, dims)}
+    if invariant == "rank":
+        eps, kappa = _grid(bif, 8, 8)
+        return bif, {"ours": lambda: rank_invariant(bif, eps, kappa, dim=1),
+                     "multipers": lambda: _mp_rank(bif, eps, kappa, 1)}
     base, dirs = _lines(bif, 32)
-    ours_s, ours = harness.best_of(lambda: _ours_lines(bif, base, dirs), repeat)
-    ref_s, ref = harness.best_of(lambda: _mp_lines(bif, base, dirs), repeat)
-    rows.append(dict(invariant="fibered barcodes", grid="32 lines", ours_s=ours_s, ref_s=ref_s,
-                     equal=_same_lines(ours, ref, dims)))
-    for row in rows:
-        row.update(topic="multiparameter", case=case, n_simplices=len(bif), ratio=row["ours_s"] / row["ref_s"])
-    return rows
+    return bif, {"ours": lambda: _ours_lines(bif, base, dirs), "multipers": lambda: _mp_lines(bif, base, dirs)}
 
 
-def crust_worker(n: int) -> dict:
-    """One S³ reconstruction in this fresh process: times, peak RSS, the manifold check."""
-    from thesis_lib.meshes import sample_sphere
-    from thesis_lib.meshes.crust_nd import _delaunay, crust_nd
+def invariant_row(case: str, rounds: int | None) -> dict:
+    data, invariant = case.split("/")
+    bif, contenders = _invariant_contenders(data, invariant)
+    dims = list(range(bif.max_homology_dim + 1))
+    same = {}
 
-    crust_nd(sample_sphere(300, 4, 2.0, seed=1))  # numba compilation
-    pts = sample_sphere(n, 4, 2.0, seed=0)
-    t0 = time.perf_counter()
-    _delaunay(pts)
-    delaunay_s = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    res = crust_nd(pts)
-    return dict(ours_s=time.perf_counter() - t0, delaunay_s=delaunay_s, ours_mb=harness.status_mb("VmHWM"),
-                n_simplices=int(res.report.n_simplices), closed=bool(res.report.is_closed_manifold),
-                vertex_fraction=float(res.report.vertex_fraction))
+    def check(results):
+        ours, ref = results["ours"], results["multipers"]
+        same["equal"] = _same_lines(ours, ref, dims) if invariant == "lines" else bool(np.array_equal(ours, ref))
 
-
-def crust_row(n: int) -> dict:
-    row = harness.run_worker(__file__, "crust", n)
-    row.update(topic="crust4d", case=f"S³ (radius 2), {n} samples", n_samples=n)
+    res = harness.compare(contenders, rounds=rounds, check=check)
+    name, grid = INVARIANTS[invariant]
+    row = {"topic": "multiparameter", "case": case, "invariant": name, "grid": grid, "n_simplices": len(bif),
+           "rounds": res["rounds"], "ours_s": res["median_s"]["ours"], "ref_s": res["median_s"]["multipers"],
+           "ratio": harness.paired_ratio(res, "ours", "multipers"), "equal": same["equal"],
+           "reference": "multipers " + importlib.metadata.version("multipers") + " (n_jobs=1)"}
+    for tool in ("ours", "multipers"):
+        row.update(harness.memory_fields(__file__, tool, case, tool))
     return row
 
 
-def main(argv=None) -> None:
-    args = harness.arguments(__doc__, argv, worker=("TOOL", "CASE"))
-    if args.worker:
-        print(json.dumps(crust_worker(int(args.worker[1]))))
+def _sphere(n: int):
+    from thesis_lib.meshes import sample_sphere
+
+    return sample_sphere(n, 4, 2.0, seed=0)
+
+
+def crust_row(case: str, rounds: int | None) -> dict:
+    """The Crust of S³ samples, interleaved with Qhull's 4-D Delaunay of the same points (its first step)."""
+    from scipy.spatial import Delaunay
+
+    from thesis_lib.meshes.crust_nd import crust_nd
+
+    n = int(case.split("-")[1])
+    pts = _sphere(n)
+    report = {}
+
+    def check(results):
+        report["r"] = results["crust"].report
+
+    res = harness.compare({"crust": lambda: crust_nd(pts), "delaunay": lambda: Delaunay(pts, qhull_options="QJ")},
+                          rounds=rounds, check=check)
+    r = report["r"]
+    row = {"topic": "crust4d", "case": case, "n_samples": n, "rounds": res["rounds"],
+           "ours_s": res["median_s"]["crust"], "delaunay_s": res["median_s"]["delaunay"],
+           "n_simplices": int(r.n_simplices), "closed": bool(r.is_closed_manifold),
+           "vertex_fraction": float(r.vertex_fraction)}
+    row.update(harness.memory_fields(__file__, "ours", case, "ours"))
+    return row
+
+
+def memory_child(case: str, tool: str) -> None:
+    if case.startswith("crust4d"):
+        from thesis_lib.meshes.crust_nd import crust_nd
+
+        def setup():
+            crust_nd(_sphere(300))  # imports and compiled code (the baseline)
+            return _sphere(int(case.split("-")[1]))
+
+        harness.memory_worker(setup, crust_nd)
         return
+
+    def setup():
+        data, invariant = case.split("/")
+        _invariant_contenders("torus-100", invariant)[1][tool]()  # imports and compiled code
+        return _invariant_contenders(data, invariant)[1][tool]
+
+    harness.memory_worker(setup, lambda run: run())
+
+
+def run_case(case: str, rounds: int | None) -> dict:
+    return crust_row(case, rounds) if case.startswith("crust4d") else invariant_row(case, rounds)
+
+
+QUICK = [f"torus-300/{inv}" for inv in INVARIANTS] + ["crust4d-1000"]
+FULL = QUICK + [f"{data}/{inv}" for data in ("torus-1000", "circles-100") for inv in INVARIANTS] + \
+    ["crust4d-3000", "crust4d-10000"]
+COLUMNS = [("case", "{case}"), ("simplices", "{n_simplices}"), ("rounds", "{rounds}"), ("ours (s)", "{ours_s:.3f}"),
+           ("peer (s)", lambda r: f"{r['ref_s']:.3f}" if "ref_s" in r else f"{r['delaunay_s']:.3f} (Delaunay)"),
+           ("ratio", lambda r: f"{r['ratio']:.2f}" if "ratio" in r else "—"),
+           ("ours (MB)", "{ours_mb:.0f}"), ("equal / closed", lambda r: str(r.get("equal", r.get("closed"))))]
+
+
+def main(argv: list[str] | None = None) -> list[dict]:
     warnings.filterwarnings("ignore")
-    cases = QUICK if args.quick else FULL
-    repeat = 1 if args.quick else 3
-    rows = []
     try:
         import multipers  # noqa: F401
     except ImportError:
-        print("multipers is not installed (pip install 'multipers>=2.3.2,<2.4'): invariants not compared",
-              file=sys.stderr)
-    else:
-        invariant_rows(cases["invariants"][0], 1)  # warm-up: numba compilation
-        print(harness.table_header(INV_COLUMNS), flush=True)
-        for case in cases["invariants"]:
-            for row in invariant_rows(case, repeat):
-                print(harness.table_row(INV_COLUMNS, row), flush=True)
-                rows.append(row)
-    print()
-    rows += harness.stream_table(CRUST_COLUMNS, cases["crust"], crust_row)
-    harness.write_rows("beyond", rows, args.quick)
+        print("multipers is not installed (pip install multipers==2.3.2): bench_beyond needs it", file=sys.stderr)
+        return []
+    return harness.run_cases("beyond", __doc__, argv, cases=FULL, quick=QUICK, full=FULL, columns=COLUMNS,
+                             run_case=run_case, memory_child=memory_child, memory=("CASE", "TOOL"),
+                             quick_help="the small torus and the smallest Crust (make bench-check)")
 
 
 if __name__ == "__main__":
-    main()
+    main(sys.argv[1:])

@@ -246,6 +246,30 @@ def write_results(topic: str, rows: list[dict], quick: bool = False, output: str
     return out
 
 
+def update_results(topic: str, row: Mapping, meta: Mapping, order: Sequence[str] = ()) -> Path:
+    """Replace (or add) the row of ``row["case"]`` in the stored ``results/<topic>.json``, atomically.
+
+    The file's ``meta`` stays that of the run that stored the other rows; the new row carries its own
+    run's provenance under ``"run"`` (commit, date, load at start and end) and is listed in
+    ``meta["updated"]``.  Rows are kept in the order of ``order`` (the benchmark's full case list).
+    """
+    path = RESULTS / f"{topic}.json"
+    stored_meta, rows = read_results(path) if path.exists() else (environment(), [])
+    new = dict(row)
+    new["run"] = {k: meta.get(k) for k in ("commit", "date", "load_average")}
+    new["run"]["load_average_end"] = [round(x, 2) for x in os.getloadavg()]
+    rows = [r for r in rows if r.get("case") != new["case"]] + [new]
+    rank = {name: i for i, name in enumerate(order)}
+    rows.sort(key=lambda r: rank.get(r.get("case"), len(rank)))
+    info = dict(stored_meta)
+    info["updated"] = sorted({*info.get("updated", []), str(new["case"])}, key=lambda c: rank.get(c, len(rank)))
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps({"meta": info, "rows": rows}, indent=1) + "\n")
+    os.replace(tmp, path)
+    print(f"updated {path} ({new['case']})")
+    return path
+
+
 def read_results(path: str | Path) -> tuple[dict, list[dict]]:
     """``(meta, rows)`` of a stored result file (a bare list of rows has empty meta)."""
     data = json.loads(Path(path).read_text())
@@ -341,6 +365,10 @@ def arguments(
                         help="run only these cases: " + ", ".join(cases))
     if output:
         ap.add_argument("--output", default=None, help="JSON file for the rows (default: benchmarks/results)")
+    if cases and output:
+        ap.add_argument("--update", action="store_true",
+                        help="with --cases: replace (or add) those rows in the stored results, each with "
+                             "its own run's provenance under 'run'")
     return ap.parse_args(argv)
 
 
@@ -496,6 +524,8 @@ def run_cases(topic: str, doc: str, argv: list[str] | None, *, cases: Sequence[s
     storing the rows after each case (an interrupted long run keeps the finished ones; a partial
     run goes to ``--output`` or ``<topic>_partial.json``)."""
     args = arguments(doc, argv, quick_help=quick_help, output=True, memory=memory, cases=list(cases))
+    if args.update and (not args.cases or args.quick or args.output):
+        raise SystemExit("--update needs --cases (and neither --quick nor --output)")
     if args.memory:
         memory_child(*args.memory)
         return []
@@ -506,7 +536,10 @@ def run_cases(topic: str, doc: str, argv: list[str] | None, *, cases: Sequence[s
 
     def row(name: str) -> dict:
         rows.append(run_case(name, args.rounds))
-        write_results(topic, rows, args.quick, output, meta)
+        if args.update:
+            update_results(topic, rows[-1], meta, order=list(full))
+        else:
+            write_results(topic, rows, args.quick, output, meta)
         return rows[-1]
 
     stream_table(columns, names, row)

@@ -81,6 +81,30 @@ def test_results_carry_provenance_and_ratio_changes_are_caught(tmp_path):
     assert "no stored figure" in h.ratio_changes(stored, [{"case": "c", "ratio_new": 1.0}])[0]
 
 
+def test_update_replaces_one_row_and_keeps_both_provenances(tmp_path, monkeypatch):
+    h = _harness()
+    results = tmp_path / "benchmarks" / "results"
+    results.mkdir(parents=True)
+    monkeypatch.setattr(h, "RESULTS", results)
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    first = {"commit": "aaa", "date": "2026-01-01T00:00:00Z", "load_average": [0.1, 0.1, 0.1]}
+    h.write_results("t", [{"case": "a", "ratio": 1.0}, {"case": "c", "ratio": 3.0}], meta=first)
+    later = {"commit": "bbb", "date": "2026-02-01T00:00:00Z", "load_average": [0.2, 0.2, 0.2]}
+    h.update_results("t", {"case": "b", "ratio": 2.0}, later, order=["a", "b", "c"])
+    h.update_results("t", {"case": "c", "ratio": 4.0}, later, order=["a", "b", "c"])
+    meta, rows = h.read_results(results / "t.json")
+    assert [r["case"] for r in rows] == ["a", "b", "c"] and [r["ratio"] for r in rows] == [1.0, 2.0, 4.0]
+    assert meta["commit"] == "aaa" and meta["updated"] == ["b", "c"]  # the file's run, and what came later
+    assert "run" not in rows[0] and rows[2]["run"]["commit"] == "bbb" and len(rows[2]["run"]["load_average_end"]) == 3
+    assert not list(results.glob("*.tmp"))
+    text = bench.provenance("t")
+    assert text.startswith("`t`: commit `aaa`") and "Row `c`: commit `bbb`, 2026-02-01" in text
+    assert "Row `a`" not in text
+    with pytest.raises(SystemExit, match="--update needs --cases"):
+        h.run_cases("t", "doc", ["--update"], cases=["a"], quick=["a"], full=["a"], columns=[],
+                    run_case=lambda name, rounds: {}, memory_child=lambda *a: None)
+
+
 def test_memory_worker_subtracts_the_baseline():
     # in a fresh process, as the harness runs it: a long-lived test worker may serve the array from
     # pages it already holds, and then its resident set does not grow

@@ -37,6 +37,13 @@ def grid_triangles(n: int) -> list[tuple[int, int, int]]:
     return out
 
 
+def lower_star_grid(seed: int, n: int) -> tuple[list[tuple[int, int, int]], np.ndarray, Filtration]:
+    """The triangulated n × n grid, random vertex values and their lower-star filtration."""
+    values = np.random.default_rng(seed).random(n * n)
+    tris = grid_triangles(n)
+    return tris, values, lower_star_filtration(tris, values)
+
+
 def full_barcode(filt: Filtration, p: int) -> Barcode:
     """Our column reduction on the unreduced complex (a second reference)."""
     bds = [np.zeros((0, filt.simplices[0].shape[0]))]
@@ -61,10 +68,7 @@ def test_rips_reduction_keeps_the_barcode(seed, p):
 @settings(deadline=None, max_examples=10)
 @given(seeds)
 def test_lower_star_reduction_is_small_and_exact(seed):
-    rng = np.random.default_rng(seed)
-    n = 7
-    tris = grid_triangles(n)
-    filt = lower_star_filtration(tris, rng.random(n * n))
+    _, _, filt = lower_star_grid(seed, 7)
     red = morse_reduce(filt, 2)
     assert reduced_persistence(red) == persistence(filt, 2)
     # a lower-star matching leaves few cells: here less than half
@@ -75,11 +79,7 @@ def test_lower_star_reduction_is_small_and_exact(seed):
 @given(seeds)
 def test_reduction_with_lower_star_pairs(seed):
     """ProcessLowerStars pairs lie in one lower star, so they are filtration-compatible."""
-    rng = np.random.default_rng(seed)
-    n = 6
-    tris = grid_triangles(n)
-    values = rng.random(n * n)
-    filt = lower_star_filtration(tris, values)
+    tris, values, filt = lower_star_grid(seed, 6)
     pairs = morse_matching(tris, "lower-star", values=values)
     red = morse_reduce(filt, 3, pairs=pairs)
     assert red.n_critical == sum(critical_counts(tris, pairs))

@@ -96,6 +96,20 @@ def mod_inverse(v, p):
     return x0 % p
 
 
+@numba.njit(cache=True, inline="always")
+def _drop_stale(heap, size, dead, blocked, count):
+    """Pop the tops of a heap of ``(count << _SHIFT) | line`` keys that are stale (the line is dead or
+    blocked, its count changed or is 0) until a live key is on top; return the new size."""
+    while size > 0:
+        key = heap[0]
+        line = key & _LOW
+        if dead[line] or blocked[line] or count[line] != (key >> _SHIFT) or count[line] == 0:
+            _, size = _pop(heap, size)
+        else:
+            break
+    return size
+
+
 @numba.njit(cache=True)
 def _locate(pool_c, start, length, col):
     """Offset of ``col`` in the sorted run ``pool_c[start:start+length]``, or -1."""
@@ -233,21 +247,8 @@ def _markowitz_kernel(indptr, indices, data, n_rows, skip, p, lim, search, densi
         n_exam = 0
         n_stash = 0
         while n_exam < search:
-            # drop stale heap tops
-            while csize > 0:
-                key = cheap[0]
-                j = key & _LOW
-                if col_dead[j] or col_blocked[j] or cnt[j] != (key >> _SHIFT) or cnt[j] == 0:
-                    _, csize = _pop(cheap, csize)
-                else:
-                    break
-            while rsize > 0:
-                key = rheap[0]
-                i = key & _LOW
-                if row_dead[i] or row_blocked[i] or rl[i] != (key >> _SHIFT) or rl[i] == 0:
-                    _, rsize = _pop(rheap, rsize)
-                else:
-                    break
+            csize = _drop_stale(cheap, csize, col_dead, col_blocked, cnt)
+            rsize = _drop_stale(rheap, rsize, row_dead, row_blocked, rl)
             if csize == 0 and rsize == 0:
                 break
             use_col = rsize == 0 or (csize > 0 and (cheap[0] >> _SHIFT) <= (rheap[0] >> _SHIFT))

@@ -108,17 +108,23 @@ def check_max_dim(max_dim, name: str = "max_dim") -> int:
 
 
 # ---------------------------------------------------------------------------------------- points
+def _float_array(value, kind: str, message: str) -> np.ndarray:
+    """``value`` as a float64 array; :class:`InvalidTypeError` ``"<message>: <reason>"`` for complex
+    numbers (``kind``: what they are not) or anything that is not numeric."""
+    try:
+        if np.iscomplexobj(value):
+            raise TypeError(f"complex numbers are not {kind}")
+        return np.asarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as err:
+        raise InvalidTypeError(f"{message}: {err}") from None
+
+
 def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> np.ndarray:
     """Return ``points`` as a finite ``(n, d)`` float64 array, or raise naming the problem.
 
     Thesis: §2.1.2 (a point set X in R^d).
     """
-    try:
-        if np.iscomplexobj(points):
-            raise TypeError("complex numbers are not coordinates")
-        arr = np.asarray(points, dtype=np.float64)
-    except (TypeError, ValueError) as err:
-        raise InvalidTypeError(f"{name} must be an (n, d) array of numbers: {err}") from None
+    arr = _float_array(points, "coordinates", f"{name} must be an (n, d) array of numbers")
     if arr.ndim != 2:
         raise ValueError(f"{name} must be an (n, d) array, got shape {arr.shape}")
     if arr.shape[0] < min_points:
@@ -138,12 +144,7 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
 
 def check_weights(weights, n: int) -> np.ndarray:
     """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
-    try:
-        if np.iscomplexobj(weights):
-            raise TypeError("complex numbers are not weights")
-        w = np.asarray(weights, dtype=np.float64)
-    except (TypeError, ValueError) as err:
-        raise InvalidTypeError(f"weights must be an array of numbers: {err}") from None
+    w = _float_array(weights, "weights", "weights must be an array of numbers")
     if w.ndim != 1 or w.shape[0] != n:
         raise ValueError(f"weights must be a 1-D array with one weight per point ({n}), got shape {w.shape}")
     if not np.all(np.isfinite(w)):

@@ -81,6 +81,18 @@ def facet_indices(lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
 
     Thesis: Definition 2.18 (the faces in the boundary of a simplex).
 
+    Parameters
+    ----------
+    lower : numpy.ndarray, shape (m0, d)
+        The ``(d−1)``-simplices, sorted rows without duplicates.
+    upper : numpy.ndarray, shape (m, d + 1)
+        The ``d``-simplices, sorted rows.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (m, d + 1)
+        ``lower[out[r, i]]`` is ``upper[r]`` without its vertex ``i``.
+
     Raises
     ------
     ValueError

@@ -14,16 +14,34 @@ from __future__ import annotations
 
 import functools
 import os
+from collections.abc import Callable, Mapping
 from pathlib import Path
+from types import ModuleType
+from typing import Any
 
 __all__ = ["njit", "prange", "numba_cache_dir", "load_numba"]
 
 _done_modules: set[int] = set()
 
 
-def numba_cache_dir(package_dir: str | os.PathLike | None = None, environ=None) -> str | None:
-    """The folder numba should cache compiled kernels in: None (numba's default, beside the sources)
-    when ``package_dir`` is writable or the user set ``NUMBA_CACHE_DIR``, else a per-user cache folder."""
+def numba_cache_dir(package_dir: str | os.PathLike | None = None,
+                    environ: Mapping[str, str] | None = None) -> str | None:
+    """The folder numba should cache compiled kernels in.
+
+    Parameters
+    ----------
+    package_dir : str or os.PathLike, optional
+        The folder of the compiled sources; None: the installed ``thesis_lib`` package.
+    environ : mapping of str to str, optional
+        The environment to read ``NUMBA_CACHE_DIR`` and ``XDG_CACHE_HOME`` from; None: ``os.environ``.
+
+    Returns
+    -------
+    str or None
+        None (numba's default, beside the sources) when ``package_dir`` is writable or the user set
+        ``NUMBA_CACHE_DIR``, else the per-user folder ``$XDG_CACHE_HOME/thesis-lab/numba`` (default
+        ``~/.cache/thesis-lab/numba``).
+    """
     env = os.environ if environ is None else environ
     if env.get("NUMBA_CACHE_DIR"):
         return None
@@ -34,8 +52,16 @@ def numba_cache_dir(package_dir: str | os.PathLike | None = None, environ=None) 
     return str(base / "thesis-lab" / "numba")
 
 
-def load_numba():
-    """Import numba with the cache folder of :func:`numba_cache_dir` in force; returns the module."""
+def load_numba() -> ModuleType:
+    """Import numba with the cache folder of :func:`numba_cache_dir` in force.
+
+    Sets ``NUMBA_CACHE_DIR`` (unless the user did) when the package folder is read-only.
+
+    Returns
+    -------
+    types.ModuleType
+        The ``numba`` module.
+    """
     import sys
 
     folder = numba_cache_dir()
@@ -53,7 +79,18 @@ def prange(*args: int) -> range:
 
     A plain ``range`` until numba is loaded; when a module's kernels are compiled, :func:`njit`'s proxy
     replaces this name in the module by ``numba.prange`` (so that importing the module does not import
-    numba, and the loop is parallel once compiled with ``parallel=True``)."""
+    numba, and the loop is parallel once compiled with ``parallel=True``).
+
+    Parameters
+    ----------
+    *args : int
+        As for ``range``: ``stop``, or ``start, stop[, step]``.
+
+    Returns
+    -------
+    range
+        ``range(*args)``.
+    """
     return range(*args)
 
 
@@ -92,8 +129,24 @@ class _LazyKernel:
         return f"<lazy numba kernel {self.fn.__module__}.{self.fn.__qualname__}>"
 
 
-def njit(fn=None, **options):
-    """``numba.njit`` compiled on first call (``@njit(cache=True)`` or ``@njit``)."""
+def njit(fn: Callable[..., Any] | None = None,
+         **options: Any) -> _LazyKernel | Callable[[Callable[..., Any]], _LazyKernel]:
+    """``numba.njit`` compiled on first call (``@njit(cache=True)`` or ``@njit``).
+
+    Parameters
+    ----------
+    fn : callable, optional
+        The Python function to compile; None when used as ``@njit(**options)``.
+    **options : Any
+        Passed to ``numba.njit`` when the kernel is first called (``cache``, ``parallel``,
+        ``inline``, ...).
+
+    Returns
+    -------
+    _LazyKernel or callable
+        The lazy kernel standing in for ``fn`` (called like it), or, without ``fn``, a decorator
+        that makes one.
+    """
     if fn is None:
         return lambda f: _LazyKernel(f, options)
     return _LazyKernel(fn, options)

@@ -30,6 +30,19 @@ def as_simplex_array(rows: np.ndarray | Sequence[Sequence[int]], dim: int | None
 
     Thesis: Definition 2.1 (a p-simplex has p + 1 distinct vertices).
 
+    Parameters
+    ----------
+    rows : array_like, shape (m, k + 1)
+        Vertex indices, one simplex per row, in any order within a row; an empty sequence gives an
+        empty array.
+    dim : int, optional
+        The dimension every row must have (``k``); ``None`` accepts any width.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (m, k + 1)
+        The rows, each sorted ascending (a new array unless ``rows`` already was sorted int64).
+
     Raises
     ------
     ValueError
@@ -61,7 +74,23 @@ def group_by_dimension(simplices: Iterable[Sequence[int]]) -> list[np.ndarray]:
     """Split an iterable of simplices of mixed dimension into one sorted-row array per dimension.
 
     Thesis: Definition 2.4 (abstract simplicial complex as a collection of vertex sets).
-    Duplicates are kept; see :func:`closure` for the complex they generate.
+
+    Parameters
+    ----------
+    simplices : iterable of sequences of int
+        Vertex tuples of any dimensions (non-negative integer labels, no empty simplex).
+
+    Returns
+    -------
+    list of numpy.ndarray
+        Entry ``d`` is an ``(m_d, d + 1)`` int64 array of the given ``d``-simplices, rows sorted
+        ascending, in input order (empty where no simplex has that dimension); ``[]`` for no input.
+        Duplicates are kept; see :func:`closure` for the complex they generate.
+
+    Raises
+    ------
+    ValueError
+        For an empty simplex, a vertex that is not a non-negative integer or a repeated vertex.
     """
     by_dim: dict[int, list[tuple[int, ...]]] = {}
     for s in simplices:
@@ -79,6 +108,16 @@ def facets(arr: np.ndarray) -> np.ndarray:
     """Facets of each ``k``-simplex: array ``(m, k + 1, k)``; facet ``i`` omits vertex ``i``.
 
     Thesis: Definition 2.18 (the i-th term of the boundary omits x_i).
+
+    Parameters
+    ----------
+    arr : numpy.ndarray, shape (m, k + 1)
+        ``k``-simplices as sorted rows.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m, k + 1, k)
+        ``out[r, i]`` is simplex ``r`` without its vertex ``i`` (rows stay sorted).
     """
     k1 = arr.shape[1]
     idx = np.array([[j for j in range(k1) if j != i] for i in range(k1)], dtype=np.int64).reshape(k1, k1 - 1)
@@ -86,7 +125,21 @@ def facets(arr: np.ndarray) -> np.ndarray:
 
 
 def row_keys(arr: np.ndarray, base: int) -> np.ndarray | None:
-    """Encode sorted rows as int64 keys ``sum v_j base^(k-j)``; ``None`` if that could overflow."""
+    """Encode sorted rows as int64 keys ``sum v_j base^(k-j)``; ``None`` if that could overflow.
+
+    Parameters
+    ----------
+    arr : numpy.ndarray, shape (m, k)
+        Integer rows with entries in ``[0, base)``.
+    base : int
+        One more than the largest entry.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (m,), or None
+        One key per row (equal rows, equal keys; the order of keys is the lexicographic order of the
+        rows), or ``None`` when ``k == 0`` or ``base ** k >= 2**62``.
+    """
     width = arr.shape[1]
     if width == 0 or base ** width >= 2**62:
         return None
@@ -108,9 +161,22 @@ def find_rows(haystack: np.ndarray, needles: np.ndarray, *, missing: str = "rais
 
     Parameters
     ----------
-    haystack : (m, k) int array, no duplicate rows.
-    needles : (n, k) int array.
-    missing : ``"raise"`` (ValueError naming the first missing row) or ``"mark"`` (index -1).
+    haystack : numpy.ndarray, shape (m, k)
+        Integer rows, no duplicate rows.
+    needles : numpy.ndarray, shape (n, k)
+        Integer rows to look up.
+    missing : {"raise", "mark"}
+        ``"raise"``: a ValueError naming the first missing row; any other value: index -1 for it.
+
+    Returns
+    -------
+    numpy.ndarray of int64, shape (n,)
+        ``haystack[out[i]]`` equals ``needles[i]`` (or ``out[i] == -1`` for a missing row).
+
+    Raises
+    ------
+    ValueError
+        If ``missing == "raise"`` and a row of ``needles`` is not in ``haystack``.
     """
     if needles.shape[0] == 0:
         return np.empty(0, dtype=np.int64)
@@ -151,8 +217,22 @@ def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.nd
 
     Thesis: Definition 2.3 / 2.4 (a complex contains every face of its simplices).
 
-    ``simplices`` is either an iterable of vertex tuples of any dimensions or a list of per-dimension
-    arrays (as produced by :func:`group_by_dimension`).
+    Parameters
+    ----------
+    simplices : iterable of sequences of int, or list of numpy.ndarray
+        Either vertex tuples of any dimensions, or a list of per-dimension arrays (entry ``d`` of
+        shape ``(m_d, d + 1)``, as produced by :func:`group_by_dimension`).
+
+    Returns
+    -------
+    list of numpy.ndarray
+        Entry ``d`` is the ``(n_d, d + 1)`` int64 array of all ``d``-simplices of the complex they
+        generate, rows sorted ascending, lexicographically sorted, without duplicates.
+
+    Raises
+    ------
+    ValueError
+        If there are no simplices, or a simplex is not valid (see :func:`as_simplex_array`).
     """
     if isinstance(simplices, list) and simplices and all(isinstance(a, np.ndarray) and a.ndim == 2 for a in simplices):
         groups = [as_simplex_array(a, d) for d, a in enumerate(simplices)]
@@ -175,8 +255,24 @@ def boundary_matrix(lower: np.ndarray, upper: np.ndarray, coefficients: int = 0)
 
     Thesis: Definition 2.18, ∂[x_0, ..., x_p] = Σ_i (-1)^i [x_0, ..., x̂_i, ..., x_p].
 
-    Rows follow the order of ``lower``, columns that of ``upper``; entries are int64 (reduced mod p
-    when ``coefficients`` is a prime p).  Every facet must be present in ``lower``.
+    Parameters
+    ----------
+    lower : numpy.ndarray, shape (n, k)
+        The ``(k-1)``-simplices, sorted rows without duplicates: the row basis.
+    upper : numpy.ndarray, shape (m, k + 1)
+        The ``k``-simplices, sorted rows: the column basis.  Every facet must be a row of ``lower``.
+    coefficients : int
+        0 for Z (entries ±1); a prime p for Z/p (entries reduced mod p).
+
+    Returns
+    -------
+    scipy.sparse.csc_matrix of int64, shape (n, m)
+        Rows follow the order of ``lower``, columns that of ``upper``, indices sorted.
+
+    Raises
+    ------
+    ValueError
+        If a facet of ``upper`` is missing from ``lower``.
     """
     m, width = upper.shape
     if width < 2:

@@ -154,22 +154,34 @@ def _symmetric(mat: sp.csc_matrix, p: int) -> sp.csc_matrix:
     return out
 
 
-def reduce_matrix(matrix, coefficients: int = 0, skip_columns: npt.ArrayLike | None = None) -> Reduction:
+def reduce_matrix(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, coefficients: int = 0,
+                  skip_columns: npt.ArrayLike | None = None) -> Reduction:
     """Rank and torsion invariants of an integer matrix: sparse unit-pivot elimination, then an exact dense core.
 
     Thesis: §2.2.1 (Smith normal form of boundary matrices, torsion from diagonal entries ≥ 2).
 
     Parameters
     ----------
-    matrix : dense array or scipy sparse matrix with integer entries (an object array of Python ints
-        for entries beyond int64).
-    coefficients : 0 for Z, a prime p for Z/p.
-    skip_columns : optional boolean mask of columns to ignore (clearing: columns known to become
-        zero after a unimodular change of basis).
+    matrix : array_like or scipy sparse matrix, shape (m, n)
+        Integer entries (an object array of Python ints for entries beyond int64; a sparse matrix
+        must fit in int64).
+    coefficients : int
+        0 for Z, a prime p for Z/p.
+    skip_columns : array_like of bool, shape (n,), optional
+        Columns to ignore (clearing: columns known to become zero after a unimodular change of
+        basis); None keeps every column.
 
     Returns
     -------
     Reduction
+        The rank over Z (or Z/p), the invariant factors ``>= 2`` (over Z only), the rows carrying a
+        unit pivot of the sparse stage, and the shape of the dense core.
+
+    Raises
+    ------
+    ValueError
+        A matrix that is not 2-D or has non-integer entries, coefficients neither 0 nor a prime, or a
+        ``skip_columns`` mask of the wrong length.
     """
     p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     mat = _as_matrix(matrix)
@@ -199,7 +211,7 @@ def reduce_matrix(matrix, coefficients: int = 0, skip_columns: npt.ArrayLike | N
     return _result(rank, dense_invariants(core), mask, core.shape, p)
 
 
-def smith_normal_form(matrix) -> np.ndarray:
+def smith_normal_form(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray) -> np.ndarray:
     """Diagonal of the Smith normal form over Z: the nonzero invariant factors a_1 | a_2 | ... .
 
     Thesis: Theorem 2.20 and §2.2.1 (PAQ = diag(a_1, ..., a_k, 0, ..., 0) with a_i | a_{i+1}).
@@ -209,12 +221,15 @@ def smith_normal_form(matrix) -> np.ndarray:
 
     Parameters
     ----------
-    matrix : 2-D integer array (numpy of any integer dtype, nested lists, object array of Python
-        ints) or scipy sparse.
+    matrix : array_like or scipy sparse matrix, shape (m, n)
+        Integer entries: numpy of any integer dtype, nested lists, an object array of Python ints,
+        or scipy sparse.
 
     Returns
     -------
-    numpy array of the positive invariant factors (int64, or object dtype if one exceeds int64).
+    numpy.ndarray, shape (rank,)
+        The positive invariant factors, ascending by divisibility (int64, or object dtype if one
+        exceeds int64).
 
     Raises
     ------
@@ -228,13 +243,28 @@ def smith_normal_form(matrix) -> np.ndarray:
     return np.array(values, dtype=np.int64)
 
 
-def dense_smith_diagonal(matrix) -> list[int]:
+def dense_smith_diagonal(matrix: npt.ArrayLike) -> list[int]:
     """Invariant factors (nonzero Smith normal form diagonal, ascending by divisibility) of a dense matrix.
 
     Thesis: Theorem 2.20 (Smith normal form by elementary row and column operations).
 
     The modular stage alone (no sparse elimination): rank profile mod p, determinants of two
     minors by Chinese remaindering, Smith form modulo their gcd.  Exact at any entry size.
+
+    Parameters
+    ----------
+    matrix : array_like, shape (m, n)
+        Integer entries (an object array of Python ints for entries beyond int64).
+
+    Returns
+    -------
+    list of int
+        The nonzero invariant factors as Python ints, each dividing the next.
+
+    Raises
+    ------
+    ValueError
+        If the matrix is not 2-D or has non-integer, NaN or infinite entries.
     """
     a = np.asarray(matrix)
     if a.ndim != 2:
@@ -242,10 +272,27 @@ def dense_smith_diagonal(matrix) -> list[int]:
     return dense_invariants(_checked_entries(a))
 
 
-def rank_mod_p(matrix, p: int) -> int:
+def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, p: int) -> int:
     """Rank of an integer matrix over the field Z/p (p prime) by sparse elimination mod p.
 
     Thesis: §2.2.1 (working over Z_p, where every nonzero pivot is invertible).
+
+    Parameters
+    ----------
+    matrix : array_like or scipy sparse matrix, shape (m, n)
+        Integer entries (as for :func:`reduce_matrix`).
+    p : int
+        The prime.
+
+    Returns
+    -------
+    int
+        The rank of ``matrix`` mod p.
+
+    Raises
+    ------
+    ValueError
+        If ``p`` is not a prime, or the matrix is not a 2-D integer matrix.
     """
     if check_coefficients(p, max_prime=MAX_EXACT_PRIME) == 0:
         raise ValueError("rank_mod_p needs a prime p, got 0")

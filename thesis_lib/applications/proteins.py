@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import numpy.typing as npt
 
 from ..filtration import Filtration
 from ..lab.paths import shared_dir
@@ -87,7 +88,23 @@ class Atoms:
         return int(self.coords.shape[0])
 
     def select(self, mask: np.ndarray) -> Atoms:
-        """The atoms where boolean ``mask`` is true."""
+        """The atoms where boolean ``mask`` is true.
+
+        Parameters
+        ----------
+        mask : array_like of bool, shape (n,)
+            One entry per atom.
+
+        Returns
+        -------
+        Atoms
+            A new record with the selected rows of every field, in order.
+
+        Raises
+        ------
+        ValueError
+            If ``mask`` does not have one entry per atom.
+        """
         mask = np.asarray(mask, dtype=bool)
         if mask.shape != (len(self),):
             raise ValueError(f"mask must have shape ({len(self)},), got {mask.shape}")
@@ -100,8 +117,22 @@ def resolve_structure(path_or_name: str | Path) -> Path:
 
     Thesis: §2.2.2 (the coordinates come from the Protein Data Bank).
 
-    An id is looked up through the data layer :func:`thesis_lib.lab.data.path` (checked by sha256); when
-    the manifest has no entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
+    Parameters
+    ----------
+    path_or_name : str or pathlib.Path
+        A file path, or a PDB id (a digit and three letters or digits).  An id is looked up through
+        the data layer :func:`thesis_lib.lab.data.path` (checked by sha256); when the manifest has no
+        entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
+
+    Returns
+    -------
+    pathlib.Path
+        An existing file.
+
+    Raises
+    ------
+    ValueError
+        No file at the path, an unknown id, or a data file whose sha256 does not match the manifest.
     """
     if isinstance(path_or_name, Path) or not _PDB_ID.match(str(path_or_name)):
         path = Path(path_or_name)
@@ -204,6 +235,11 @@ def read_pdb(
     waters : keep water molecules (HOH, WAT, DOD, ...).
     altloc : ``"first"``, ``"occupancy"`` or ``"all"`` alternate locations (as biotite).
     hydrogens : keep hydrogen/deuterium atoms (none of the thesis's entries has any).
+
+    Returns
+    -------
+    Atoms
+        One row per atom kept, in file order.
 
     Raises
     ------
@@ -345,13 +381,34 @@ def vdw_radii(
     return (radii, fallback) if return_fallback else radii
 
 
-def weighted_points(atoms, radii, r_c: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+def weighted_points(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike,
+                    r_c: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """Centres and alpha-complex weights w = r² − r_c² of the atoms' balls.
 
     Thesis: §2.4.2 (w = r² − r_c², so the filtration value ε² = r_c² gives every atom its radius r;
     r_c = 0 gives the weights of §2.2.2, the squared van der Waals radii).
 
-    ``atoms`` is an :class:`Atoms` record or an ``(n, 3)`` array of centres.
+    Parameters
+    ----------
+    atoms : Atoms or array_like, shape (n, 3)
+        An :class:`Atoms` record or the atoms' centres (Å).
+    radii : array_like, shape (n,)
+        Positive radii (Å), one per atom (e.g. :func:`vdw_radii`).
+    r_c : float
+        The radius offset r_c >= 0 (Å).
+
+    Returns
+    -------
+    points : numpy.ndarray of float64, shape (n, 3)
+        A copy of the centres.
+    weights : numpy.ndarray of float64, shape (n,)
+        r² − r_c² (negative where r < r_c).
+
+    Raises
+    ------
+    ValueError
+        Centres not ``(n, 3)``, not one radius per atom, a non-finite or non-positive radius, or
+        a negative or non-finite ``r_c``.
     """
     coords = atoms.coords if isinstance(atoms, Atoms) else np.asarray(atoms, dtype=np.float64)
     if coords.ndim != 2 or coords.shape[1] != 3:
@@ -369,11 +426,30 @@ def weighted_points(atoms, radii, r_c: float = 0.0) -> tuple[np.ndarray, np.ndar
 
 
 # --------------------------------------------------------------------------- filtrations and bars
-def protein_filtration(atoms: Atoms, radii: np.ndarray, r_c: float = 0.0) -> Filtration:
+def protein_filtration(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike, r_c: float = 0.0) -> Filtration:
     """Weighted alpha filtration of the atoms' balls with weights w = r² − r_c² (values ε²).
 
     Thesis: §2.2.2 and §2.4.2 (the union of the balls B(x, sqrt(w + ε²)) is homotopy equivalent to
     the weighted alpha complex; at ε² = r_c² every atom has its van der Waals radius).
+
+    Parameters
+    ----------
+    atoms : Atoms or array_like, shape (n, 3)
+        The atoms, or their centres (Å).
+    radii : array_like, shape (n,)
+        Positive radii (Å), one per atom.
+    r_c : float
+        The radius offset, at most the smallest radius (so every weight is >= 0).
+
+    Returns
+    -------
+    Filtration
+        The weighted alpha filtration (:func:`~thesis_lib.complexes.alpha`), values ε² in Å².
+
+    Raises
+    ------
+    ValueError
+        As :func:`weighted_points`, or ``r_c`` larger than the smallest radius.
     """
     from ..complexes.alpha import alpha
 
@@ -415,6 +491,25 @@ def discretise_intervals(
     ``[lo, hi)`` are kept, clipped to it (a class alive at ``hi`` ends there, like a finite stream).
     Since persistence pairs do not change under a monotone re-indexing of a filtration, this is the
     barcode of the sampled filtration.
+
+    Parameters
+    ----------
+    intervals : numpy.ndarray, shape (k, 2)
+        ``(birth, death)`` rows, birth <= death, no NaN (death may be ``inf``).
+    increment : float
+        The sampling step, > 0.
+    window : tuple of float
+        ``(lo, hi)``, finite ``lo < hi`` (``hi`` may be ``inf``).
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (j, 2)
+        The intervals seen on the grid, snapped and clipped, in input order.
+
+    Raises
+    ------
+    ValueError
+        A non-positive increment, a bad window or bad intervals.
     """
     snapped, seen = _snap(intervals, increment, window)
     return snapped[seen]
@@ -431,6 +526,27 @@ def sample_barcode(
     ``grid="radius"`` samples at ε = sqrt(lo), sqrt(lo) + Δ, ... (the thesis does not say which of the
     two its increments step), then maps the sample values back to ε².  Values below 0 are clipped
     to 0 under the radius grid (ε² < 0 has no radius).
+
+    Parameters
+    ----------
+    intervals : numpy.ndarray, shape (k, 2)
+        ``(birth, death)`` rows, birth <= death, values ε².
+    increment : float
+        The sampling step Δ (of ε² or of ε), > 0.
+    window : tuple of float
+        ``(lo, hi)`` in ε² units.
+    grid : {"squared", "radius"}
+        What the increments step.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (j, 2)
+        The sampled bars, in ε² units.
+
+    Raises
+    ------
+    ValueError
+        An unknown ``grid``, or as :func:`discretise_intervals`.
     """
     if grid == "squared":
         return discretise_intervals(intervals, increment, window)
@@ -454,6 +570,22 @@ def invisible_bars(
     seen on the finer grid but born and dead between two samples of the coarser one is a hole that
     only the finer increments detect.  The count is 0 when refining detects nothing new (and when
     the two increments are equal).
+
+    Parameters
+    ----------
+    intervals : numpy.ndarray, shape (k, 2)
+        ``(birth, death)`` rows, birth <= death, no NaN (death may be ``inf``).
+    increment : float
+        The coarse sampling step, > 0.
+    finer : float
+        The fine sampling step, > 0.
+    window : tuple of float
+        ``(lo, hi)``, finite ``lo < hi``.
+
+    Returns
+    -------
+    int
+        The number of such bars.
     """
     _, seen_fine = _snap(intervals, finer, window)
     _, seen_coarse = _snap(intervals, increment, window)
@@ -479,6 +611,25 @@ def void_count_readings(
     row holds the reading and the counts ``n_<increment>`` of bars at each increment and
     ``long`` (bars at the last increment at least ``min_length`` long, by
     :func:`thesis_lib.persistence.long_bars`).
+
+    Parameters
+    ----------
+    intervals : numpy.ndarray, shape (k, 2)
+        The dimension-2 bars of the alpha filtration, values ε².
+    window_ends : numpy.ndarray of float
+        The ends ``t`` of the windows ``[lo, t]``.
+    increments : tuple of float
+        The three sampling steps; the last one's bars are also counted by length.
+    min_length : float
+        The length a bar must reach to count as ``long``.
+    lo : float
+        The start of every window.
+
+    Returns
+    -------
+    list of dict
+        One row per (grid, length unit, window end): keys ``grid``, ``length``, ``window_end``,
+        ``n_<increment>`` for each increment, and ``long``.
     """
     from ..persistence import Barcode, long_bars
 
@@ -512,6 +663,29 @@ def space_filling_image(
     """RGB picture (h, w, 3) of the atoms as balls of radius ``scale × radius`` rendered off-screen.
 
     Thesis: §2.2.2 and Figure 2.18 (space-filling diagram; 1ECA with 15 % and 100 % of the radii).
+
+    Parameters
+    ----------
+    atoms : Atoms
+        The atoms, coloured by element (:data:`ELEMENT_COLORS`).
+    radii : numpy.ndarray, shape (n,)
+        One radius per atom (Å).
+    scale : float
+        The factor applied to every radius, > 0.
+    window_size : tuple of int
+        ``(width, height)`` of the picture in pixels.
+    resolution : int
+        Angular resolution of each sphere.
+
+    Returns
+    -------
+    numpy.ndarray of uint8, shape (height, width, 3)
+        The rendered picture, viewed along z.
+
+    Raises
+    ------
+    ValueError
+        Not an Atoms record with one radius per atom, or a non-positive scale.
     """
     from ..graphics.render import pyvista_offscreen
 

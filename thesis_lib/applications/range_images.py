@@ -35,6 +35,7 @@ import warnings
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "synthetic_range_image",
@@ -153,6 +154,35 @@ def synthetic_range_image(
     pixel) with 3 % range noise standing in for surface roughness (grass, bark, leaves).  Without
     that roughness the smooth ground and surfaces give dense clusters of near-linear gradients that
     dominate the high-contrast patches; the experiment ``range-patches`` records this sensitivity.
+
+    Parameters
+    ----------
+    seed : int
+        Seed of the random scene, camera and noise.
+    size : tuple of int
+        ``(height, width)`` in pixels.
+    n_boxes, n_cylinders, n_spheres, n_rocks : int
+        How many objects of each kind (>= 0).
+    fov_degrees : float
+        Horizontal field of view, in (0, 170).
+    camera_height : float
+        Height of the camera above the ground (m), > 0.
+    max_range : float
+        The scanner's range (m), > 0: farther hits are out of range.
+    noise : float
+        Relative standard deviation of the multiplicative range noise, >= 0.
+    min_grazing_degrees : float
+        Smallest angle of incidence on the ground that gives a return, in [0, 90).
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (height, width)
+        Distances (m); NaN for out-of-range pixels.  Row 0 is the top of the picture.
+
+    Raises
+    ------
+    ValueError
+        Any argument outside the ranges above.
     """
     h, w = _check_size(size)
     counts = (("n_boxes", n_boxes), ("n_cylinders", n_cylinders), ("n_spheres", n_spheres), ("n_rocks", n_rocks))
@@ -243,11 +273,30 @@ def _check_size(size) -> tuple[int, int]:
 
 
 # =========================================================================== patches
-def patches(image: np.ndarray, size: int = 5, log: bool = True) -> np.ndarray:
+def patches(image: npt.ArrayLike, size: int = 5, log: bool = True) -> np.ndarray:
     """All ``size × size`` patches of a range image as rows of length size² (row-major pixels).
 
     Thesis: §2.4.3 (5 × 5 patches thought of as vectors in R^25; Adams–Carlsson 2009 use the
     logarithm of the range).  Patches touching a NaN (out-of-range) or non-positive pixel are dropped.
+
+    Parameters
+    ----------
+    image : array_like, shape (h, w)
+        A range image, NaN where out of range (no infinite values).
+    size : int
+        The patch side, >= 2 (5 in the thesis).
+    log : bool
+        Use the logarithm of the range (Adams–Carlsson) instead of the range itself.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (m, size²)
+        The valid patches, by their top-left corner in row-major order.
+
+    Raises
+    ------
+    ValueError
+        An image that is not 2-D, smaller than a patch or has infinite values; a bad ``size``.
     """
     size = _check_patch_size(size)
     img, valid = _valid_windows(image, size, log)
@@ -274,11 +323,36 @@ def _valid_windows(image: np.ndarray, size: int, log: bool) -> tuple[np.ndarray,
     return img, count == 0
 
 
-def sample_patches(images: Sequence[np.ndarray], n: int, size: int = 5, seed: int = 0, log: bool = True) -> np.ndarray:
+def sample_patches(images: Sequence[npt.ArrayLike], n: int, size: int = 5, seed: int = 0,
+                   log: bool = True) -> np.ndarray:
     """``n`` patches drawn uniformly without replacement from the valid patches of all ``images``.
 
     Thesis: §2.4.3 (4·10⁵ random 5 × 5 patches from about 200 range images).  The same rows, in
     the same order, as drawing ``n`` rows from the concatenated :func:`patches` of the images.
+
+    Parameters
+    ----------
+    images : sequence of array_like
+        Range images (as for :func:`patches`).
+    n : int
+        The number of patches, at most the number of valid ones.
+    size : int
+        The patch side, >= 2 (5 in the thesis).
+    seed : int
+        Seed of the draw.
+    log : bool
+        Use the logarithm of the range (Adams–Carlsson) instead of the range itself.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (n, size²)
+        The drawn patches, ordered by image and then by top-left corner.
+
+    Raises
+    ------
+    ValueError
+        ``n`` not a positive integer or larger than the number of valid patches, no images, or an
+        invalid image or ``size``.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
@@ -322,12 +396,27 @@ def _as_patch_rows(X) -> tuple[np.ndarray, int]:
     return arr, size
 
 
-def contrast_norm(X: np.ndarray) -> np.ndarray:
+def contrast_norm(X: npt.ArrayLike) -> np.ndarray:
     """D-norm of each patch: sqrt of the sum of squared differences of 4-adjacent pixels.
 
     Thesis: §2.4.3 ("a notion of contrast"); the D-norm of Lee–Pedersen–Mumford (2003) used by
     Adams–Carlsson (2009), ``‖x‖_D² = Σ_{i~j} (x_i − x_j)² = xᵀ D x`` with D the graph Laplacian of
     the patch's 4-neighbour grid.
+
+    Parameters
+    ----------
+    X : array_like, shape (n, size²)
+        Finite patches as rows (row-major pixels), n >= 1, size >= 2.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (n,)
+        The D-norm of each patch.
+
+    Raises
+    ------
+    ValueError
+        Patches that are not a non-empty finite ``(n, size²)`` array.
     """
     arr, size = _as_patch_rows(X)
     p = arr.reshape(-1, size, size)
@@ -336,10 +425,27 @@ def contrast_norm(X: np.ndarray) -> np.ndarray:
     return np.sqrt(np.sum(dh * dh, axis=(1, 2)) + np.sum(dv * dv, axis=(1, 2)))
 
 
-def high_contrast(X: np.ndarray, top: float = 0.2) -> np.ndarray:
+def high_contrast(X: npt.ArrayLike, top: float = 0.2) -> np.ndarray:
     """The fraction ``top`` of patches with the largest D-norm (ties broken by position).
 
     Thesis: §2.4.3 (high-contrast patches; Adams–Carlsson keep the top 20 %).
+
+    Parameters
+    ----------
+    X : array_like, shape (n, size²)
+        Patches as for :func:`contrast_norm`.
+    top : float
+        The fraction kept, in (0, 1]; at least one patch is kept.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (round(top · n), size²)
+        The kept patches, in their input order.
+
+    Raises
+    ------
+    ValueError
+        Bad patches (as :func:`contrast_norm`), or a ``top`` outside (0, 1].
     """
     arr, _ = _as_patch_rows(X)
     if not (0 < top <= 1):
@@ -349,11 +455,25 @@ def high_contrast(X: np.ndarray, top: float = 0.2) -> np.ndarray:
     return arr[np.sort(order)]
 
 
-def normalise(X: np.ndarray) -> np.ndarray:
+def normalise(X: npt.ArrayLike) -> np.ndarray:
     """Subtract each patch's mean and divide by its Euclidean norm (points on the unit sphere).
 
     Thesis: §2.4.3 ("mapped to the unit sphere by dividing each vector by its Euclidean norm").
-    Constant patches cannot be normalised: ValueError.
+
+    Parameters
+    ----------
+    X : array_like, shape (n, size²)
+        Patches as rows, none of them constant.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (n, size²)
+        Mean-zero rows of Euclidean norm 1.
+
+    Raises
+    ------
+    ValueError
+        Bad patches (as :func:`contrast_norm`), or a constant patch (it has no direction).
     """
     arr, _ = _as_patch_rows(X)
     centred = arr - arr.mean(axis=1, keepdims=True)
@@ -365,10 +485,27 @@ def normalise(X: np.ndarray) -> np.ndarray:
 
 
 # =========================================================================== density
-def kth_neighbour_distance(X: np.ndarray, k: int) -> np.ndarray:
+def kth_neighbour_distance(X: npt.ArrayLike, k: int) -> np.ndarray:
     """ρ_k(x): the distance from each point to its k-th nearest other point.
 
     Thesis: §2.4.3 (density is determined by the distance to the k-th closest neighbour).
+
+    Parameters
+    ----------
+    X : array_like, shape (n, d)
+        Finite points, n >= 1.
+    k : int
+        Which neighbour, ``1 <= k < n`` (the point itself is not counted).
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (n,)
+        ρ_k of each point.
+
+    Raises
+    ------
+    ValueError
+        Points that are not a non-empty finite ``(n, d)`` array, or a bad ``k``.
     """
     from scipy.spatial import cKDTree
 
@@ -417,7 +554,7 @@ def _resolve_percent(percent, p, default: float | None) -> float:
 
 
 def density_filter(
-    X: np.ndarray, k: int, percent: float | None = None, return_index: bool = False, *, p: float | None = None
+    X: npt.ArrayLike, k: int, percent: float | None = None, return_index: bool = False, *, p: float | None = None
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """X(k, percent): the ``percent`` % of points with the smallest distance to their k-th nearest neighbour.
 
@@ -426,11 +563,28 @@ def density_filter(
 
     Parameters
     ----------
-    X : ``(n, d)`` points.
-    k : the neighbour whose distance measures density (the point itself is not counted).
-    percent : the percentage of points kept, in (0, 100].
-    return_index : also return the indices of the kept points.
-    p : deprecated alias of ``percent`` (one release; warns).
+    X : array_like, shape (n, d)
+        Finite points.
+    k : int
+        The neighbour whose distance measures density (the point itself is not counted), ``k < n``.
+    percent : float
+        The percentage of points kept, in (0, 100]; required.
+    return_index : bool
+        Also return the indices of the kept points.
+    p : float, optional
+        Deprecated alias of ``percent`` (one release; warns with a ``FutureWarning``).
+
+    Returns
+    -------
+    kept : numpy.ndarray of float64, shape (round(percent / 100 · n), d)
+        The kept points (at least one), in their input order.
+    index : numpy.ndarray of int
+        Their row numbers in ``X``, increasing (only if ``return_index``).
+
+    Raises
+    ------
+    ValueError
+        A missing or bad ``percent``, both ``percent`` and ``p``, or as :func:`kth_neighbour_distance`.
     """
     percent = _resolve_percent(percent, p, None)
     rho = kth_neighbour_distance(X, k)
@@ -447,6 +601,21 @@ def dct_basis(size: int = 5) -> np.ndarray:
     Thesis: §2.4.3 (normalised discrete cosine transform, Figure 2.23).  ``c_k(m) =
     a_k cos(π (2m + 1) k / (2 size))`` with a_0 = sqrt(1/size), a_k = sqrt(2/size); c_i varies down
     the rows of the patch and c_j along the columns.  Row 0 is the constant patch.
+
+    Parameters
+    ----------
+    size : int
+        The patch side, >= 2.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (size², size²)
+        An orthogonal matrix whose rows are the basis vectors (row-major pixels).
+
+    Raises
+    ------
+    ValueError
+        If ``size`` is not an integer >= 2.
     """
     size = _check_patch_size(size)
     m = np.arange(size)
@@ -460,16 +629,31 @@ def dct_basis_5x5() -> np.ndarray:
     """The 25 orthonormal DCT basis vectors of 5 × 5 patches (rows), as :func:`dct_basis`.
 
     Thesis: §2.4.3, Figure 2.23.
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (25, 25)
+        ``dct_basis(5)``.
     """
     return dct_basis(5)
 
 
-def gradient_projection(X: np.ndarray) -> np.ndarray:
+def gradient_projection(X: npt.ArrayLike) -> np.ndarray:
     """Coordinates of patches on the two linear-gradient DCT vectors: (horizontal, vertical).
 
     Thesis: §2.4.3, Figure 2.23 (projection onto the horizontal and vertical gradients).
     Column 0 uses the vector c_0 ⊗ c_1 (varies along a row: a horizontal gradient), column 1 uses
     c_1 ⊗ c_0 (varies down a column: a vertical gradient).  For unit patches both lie in [−1, 1].
+
+    Parameters
+    ----------
+    X : array_like, shape (n, size²)
+        Patches as rows; unit ones (:func:`normalise`) give coordinates in [−1, 1].
+
+    Returns
+    -------
+    numpy.ndarray of float64, shape (n, 2)
+        (horizontal, vertical) coordinates of each patch.
     """
     arr, size = _as_patch_rows(X)
     basis = dct_basis(size)
@@ -478,7 +662,7 @@ def gradient_projection(X: np.ndarray) -> np.ndarray:
 
 # =========================================================================== pipeline
 def range_patch_space(
-    images: Sequence[np.ndarray],
+    images: Sequence[npt.ArrayLike],
     n_patches: int,
     k: int = 300,
     percent: float | None = None,
@@ -492,9 +676,35 @@ def range_patch_space(
 
     Thesis: §2.4.3 (the point set X⁵(300, 30) of Figure 2.22).
 
-    ``percent`` defaults to 30 (the thesis's X⁵(300, 30)); ``p=`` is its deprecated alias.
-    Returns a dict with ``patches`` (the sampled log-range patches), ``high`` (the normalised
-    high-contrast patches, on the unit sphere) and ``dense`` (X(k, percent)).
+    Parameters
+    ----------
+    images : sequence of array_like
+        Range images, NaN where out of range.
+    n_patches : int
+        The number of patches sampled (:func:`sample_patches`).
+    k : int
+        The density neighbour (:func:`density_filter`).
+    percent : float, optional
+        The percentage of densest patches kept; None: 30 (the thesis's X⁵(300, 30)).
+    size : int
+        The patch side.
+    top : float
+        The fraction of highest-contrast patches kept (:func:`high_contrast`).
+    seed : int
+        Seed of the patch sample.
+    p : float, optional
+        Deprecated alias of ``percent`` (warns).
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        ``patches`` (the sampled log-range patches), ``high`` (the normalised high-contrast
+        patches, on the unit sphere) and ``dense`` (X(k, percent)).
+
+    Raises
+    ------
+    ValueError
+        As the steps above.
     """
     percent = _resolve_percent(percent, p, 30.0)
     raw = sample_patches(images, n_patches, size=size, seed=seed)

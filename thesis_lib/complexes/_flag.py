@@ -25,6 +25,18 @@ def _grow(buf, vals, count):
     return new_buf, new_vals
 
 
+@njit(cache=True, inline="always")
+def _append_edge(out, out_v, count, i, j, value):
+    """Write edge ``(i, j)`` with ``value`` at row ``count`` of the growing buffers; return them
+    (new arrays when they had to grow).  Inlined: it runs once per edge found."""
+    if count == out.shape[0]:
+        out, out_v = _grow(out, out_v, count)
+    out[count, 0] = i
+    out[count, 1] = j
+    out_v[count] = value
+    return out, out_v
+
+
 @njit(cache=True)
 def lower_bound(arr, lo, hi, x):
     while lo < hi:
@@ -125,11 +137,7 @@ def pairwise_edges(points, threshold):
             if s <= t2 * (1.0 + 1e-12) + 1e-300:
                 length = np.sqrt(s)
                 if length <= threshold:
-                    if count == out.shape[0]:
-                        out, out_v = _grow(out, out_v, count)
-                    out[count, 0] = i
-                    out[count, 1] = j
-                    out_v[count] = length
+                    out, out_v = _append_edge(out, out_v, count, i, j, length)
                     count += 1
     return out[:count].copy(), out_v[:count].copy()
 
@@ -146,11 +154,7 @@ def matrix_edges(matrix, threshold):
         for j in range(i + 1, n):
             v = matrix[i, j]
             if v <= threshold:
-                if count == out.shape[0]:
-                    out, out_v = _grow(out, out_v, count)
-                out[count, 0] = i
-                out[count, 1] = j
-                out_v[count] = v
+                out, out_v = _append_edge(out, out_v, count, i, j, v)
                 count += 1
     return out[:count].copy(), out_v[:count].copy()
 

@@ -125,8 +125,10 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
 
     Parameters
     ----------
-    points : (n, d) array, n >= d + 1, no duplicates, not all on a hyperplane.
-    weights : optional (n,) squared radii w_x >= 0.
+    points : array_like, shape (n, d)
+        The point cloud X: at least d + 1 distinct points, not all on a hyperplane.
+    weights : array_like, shape (n,), optional
+        The points' weights w_x >= 0 (squared radii of the balls at ε = 0); None: unweighted.
 
     Returns
     -------

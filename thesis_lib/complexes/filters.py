@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..jit import njit
+from ._pivot import pivot_row
 
 __all__ = ["orient_filter", "insphere_filter", "orient_one", "insphere_one", "orthoball_float", "power_filter"]
 
@@ -71,15 +72,17 @@ def _signed(det, perm, k, entry_error):
 
 
 @njit(cache=True)
+def _workspace(m, k):
+    """Zeroed signs for ``m`` rows, and the ``k × k`` matrices and buffers of :func:`_det_perm`."""
+    return np.zeros(m, dtype=np.int8), np.empty((k, k)), np.empty((k, k)), np.empty(1 << k), np.empty(1 << k)
+
+
+@njit(cache=True)
 def orient_filter(points, simplices):
     """Certain signs of det[x_i − x_0] (0 where undecided) for rows of ``simplices`` (m, d + 1)."""
     m = simplices.shape[0]
     d = points.shape[1]
-    out = np.zeros(m, dtype=np.int8)
-    mat = np.empty((d, d))
-    mag = np.empty((d, d))
-    dbuf = np.empty(1 << d)
-    pbuf = np.empty(1 << d)
+    out, mat, mag, dbuf, pbuf = _workspace(m, d)
     for r in range(m):
         o = simplices[r, 0]
         for i in range(d):
@@ -100,11 +103,7 @@ def insphere_filter(points, weights, simplices, y):
     m = simplices.shape[0]
     d = points.shape[1]
     k = d + 1
-    out = np.zeros(m, dtype=np.int8)
-    mat = np.empty((k, k))
-    mag = np.empty((k, k))
-    dbuf = np.empty(1 << k)
-    pbuf = np.empty(1 << k)
+    out, mat, mag, dbuf, pbuf = _workspace(m, k)
     for r in range(m):
         q = y[r]
         for i in range(k):
@@ -144,12 +143,7 @@ def _invert(mat, k, inv, work):
             work[i, j] = mat[i, j]
             inv[i, j] = 1.0 if i == j else 0.0
     for col in range(k):
-        piv = col
-        best = abs(work[col, col])
-        for r in range(col + 1, k):
-            if abs(work[r, col]) > best:
-                best = abs(work[r, col])
-                piv = r
+        piv, best = pivot_row(work, col, k)
         if best == 0.0:
             return False
         if piv != col:

@@ -15,6 +15,7 @@ that putting a point beyond its hull facet in place of −1 gives a positive ori
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from .predicates import Geometry, ScalarPredicates
 
@@ -194,7 +195,7 @@ def _line(geo: Geometry, ids: np.ndarray) -> np.ndarray:
     return np.sort(np.column_stack([arr[:-1], arr[1:]]), axis=1)
 
 
-def exact_triangulation(geo: Geometry, ids) -> tuple[np.ndarray, np.ndarray]:
+def exact_triangulation(geo: Geometry, ids: npt.ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     """The regular triangulation of the points ``ids`` of ``geo``, decided exactly.
 
     Thesis: Definition 2.13 (Delaunay complex) for weighted points (§2.1.2).

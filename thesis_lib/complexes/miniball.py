@@ -17,15 +17,28 @@ import numpy.typing as npt
 
 from .._validate import as_points, check_seed
 from ..jit import njit
+from ._pivot import pivot_row
 from .scaling import scaled
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
 
 
-def circumball(support: np.ndarray) -> tuple[np.ndarray, float]:
+def circumball(support: npt.ArrayLike) -> tuple[np.ndarray, float]:
     """Centre and squared radius of the smallest ball with all of ``support`` on its boundary.
 
     Thesis: §2.1.2 (balls B(x, ε) of the Čech complex); the centre lies in the affine hull.
+
+    Parameters
+    ----------
+    support : array_like, shape (k, d)
+        One to d + 1 points; affinely dependent ones get the least-squares centre.
+
+    Returns
+    -------
+    centre : numpy.ndarray of float64, shape (d,)
+        The circumcentre in the affine hull of ``support``.
+    r2 : float
+        Its squared distance to the first point (the squared radius).
     """
     support = np.asarray(support, dtype=np.float64)
     p0 = support[0]
@@ -102,12 +115,7 @@ def _solve_small(a, b, k):
     if scale == 0.0:
         return x, False
     for col in range(k):
-        piv = col
-        best = abs(m[col, col])
-        for r in range(col + 1, k):
-            if abs(m[r, col]) > best:
-                best = abs(m[r, col])
-                piv = r
+        piv, best = pivot_row(m, col, k)
         if best <= 1e-13 * scale:
             return x, False
         if piv != col:

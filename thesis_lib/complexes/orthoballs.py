@@ -63,6 +63,25 @@ def attached(geo: Geometry, faces: np.ndarray, ball: tuple[np.ndarray, np.ndarra
     """Is π_y(c) < r² for the orthoball (c, r²) of ``faces[face_idx]`` and the points ``y``?  Exact signs.
 
     Thesis: §2.1.2 and Definition 2.14 (an attached simplex enters with a coface).
+
+    Parameters
+    ----------
+    geo : Geometry
+        The points and weights (scaled coordinates).
+    faces : numpy.ndarray of int, shape (m, k + 1)
+        ``k``-simplices.
+    ball : tuple of numpy.ndarray
+        Their orthoballs as returned by :func:`orthoballs` (centre, r2, centre_error, exact).
+    face_idx : numpy.ndarray of int, shape (q,)
+        The rows of ``faces`` to test.
+    y : numpy.ndarray of int, shape (q,)
+        One point index per test (the vertex of a coface opposite the face).
+
+    Returns
+    -------
+    numpy.ndarray of bool, shape (q,)
+        True where π_y(c) < r²: ``y`` lies inside the orthogonal sphere and attaches the face
+        (float filter first, exact signs where it cannot decide).
     """
     centre, r2, err, _ = ball
     sign = power_filter(geo.points, geo.weights, centre, r2, err, np.ascontiguousarray(faces, dtype=np.int64),

@@ -25,6 +25,7 @@ weights and their lexicographic ranks, and answers the predicates for arrays of 
 from __future__ import annotations
 
 from itertools import combinations
+from math import factorial
 
 import numpy as np
 import numpy.typing as npt
@@ -39,8 +40,20 @@ UNIT = 2.0**-53
 
 # ------------------------------------------------------------------------------ determinants
 def expand_det(mat: np.ndarray) -> np.ndarray:
-    """Determinants of ``(m, k, k)`` matrices by Laplace expansion along columns over row subsets
-    (k·2^(k−1) products); works on float arrays and on object arrays of Python integers (exact)."""
+    """Determinants of ``(m, k, k)`` matrices by Laplace expansion along columns over row subsets.
+
+    k·2^(k−1) products; works on float arrays and on object arrays of Python integers (exact).
+
+    Parameters
+    ----------
+    mat : numpy.ndarray, shape (m, k, k)
+        Float or object (Python int) entries.
+
+    Returns
+    -------
+    numpy.ndarray, shape (m,)
+        The determinants, of the dtype of ``mat`` (ones for ``k = 0``).
+    """
     m, k, _ = mat.shape
     if k == 0:
         return np.ones(m, dtype=mat.dtype)
@@ -69,11 +82,23 @@ def _signs(values: np.ndarray) -> np.ndarray:
 
 
 def _dyadic(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each float as m · 2^(−e) with m an int64 (53 bits) and e >= 0 where needed: (m, e)."""
+    """Each float as m · 2^(−e) exactly, m an odd int64 (or 0, with e = 0): (m, e).
+
+    Odd mantissas keep the common scale of a batch small: integer coordinates stay themselves.
+    """
     mant, ex = np.frexp(values)
     m = (mant * 2.0**53).astype(np.int64)
     e = np.where(m == 0, 0, 53 - ex.astype(np.int64))
-    return m, e
+    low = m & -m  # the lowest set bit: 2^(trailing zeros)
+    zeros = np.where(m == 0, 0, np.frexp(low.astype(np.float64))[1] - 1)
+    return m >> zeros, e - zeros
+
+
+def _signs_of(values: np.ndarray) -> np.ndarray:
+    """Signs of exact integers: an int64 array or an object array of Python integers."""
+    if values.dtype == object:
+        return _signs(values)
+    return np.sign(values).astype(np.int8)
 
 
 def _det_perm_scalar(m: list[list[float]], a: list[list[float]]) -> tuple[float, float]:
@@ -160,6 +185,18 @@ class ScalarPredicates:
         self._dyadic: dict[int, tuple[list[int], list[int], int, int]] = {}
 
     def x(self, i: int) -> tuple[float, ...]:
+        """The coordinates of point ``i`` as Python floats (cached).
+
+        Parameters
+        ----------
+        i : int
+            A point index of the geometry.
+
+        Returns
+        -------
+        tuple of float
+            Its ``d`` (scaled) coordinates.
+        """
         got = self._x.get(i)
         if got is None:
             got = self._x[i] = tuple(self.geo.points[i].tolist())
@@ -167,11 +204,36 @@ class ScalarPredicates:
         return got
 
     def w(self, i: int) -> float:
+        """The weight of point ``i`` as a Python float (cached with its coordinates, :meth:`x`).
+
+        Parameters
+        ----------
+        i : int
+            The point.
+
+        Returns
+        -------
+        float
+            Its weight, scaled by the square of the coordinates' power of two.
+        """
         self.x(i)
         return self._w[i]
 
     def ints(self, ids: list[int]) -> tuple[list[list[int]], list[int]]:
-        """Coordinates ×2^K and weights ×4^K of the points as Python integers (common K)."""
+        """Coordinates ×2^K and weights ×4^K of the points as Python integers (common K).
+
+        Parameters
+        ----------
+        ids : list of int
+            Point indices of the geometry.
+
+        Returns
+        -------
+        x : list of list of int
+            The coordinates of each point times 2^K.
+        w : list of int
+            The weight of each point times 4^K (K the smallest that makes every value an integer).
+        """
         data = []
         k = 0
         for i in ids:
@@ -187,7 +249,18 @@ class ScalarPredicates:
         return x, w
 
     def orient(self, v: list[int]) -> int:
-        """Exact sign of det[x_i − x_0] over d + 1 points."""
+        """Exact sign of det[x_i − x_0] over d + 1 points.
+
+        Parameters
+        ----------
+        v : list of int
+            The d + 1 point indices ``x_0, ..., x_d``, in this order.
+
+        Returns
+        -------
+        int
+            +1, 0 or −1 (float filter first, exact integers where it cannot decide).
+        """
         if self.d > 3:  # the compiled filter beats Python's expansion of a 5 x 5 (or larger) determinant
             sign = int(orient_one(self.geo.points, np.array(v, dtype=np.int64)))
             return sign if sign else self.orient_exact(v)
@@ -200,11 +273,37 @@ class ScalarPredicates:
         return self.orient_exact(v)
 
     def orient_exact(self, v: list[int]) -> int:
+        """:meth:`orient` in exact integer arithmetic alone.
+
+        Parameters
+        ----------
+        v : list of int
+            The d + 1 point indices.
+
+        Returns
+        -------
+        int
+            +1, 0 or −1.
+        """
         x, _ = self.ints(list(v))
         return _sign(_int_det([[a - b for a, b in zip(xi, x[0])] for xi in x[1:]]))
 
     def outside(self, v: list[int], y: int) -> bool:
-        """Is y outside the orthogonal sphere of the positively oriented full simplex v (perturbed)?"""
+        """Is y outside the orthogonal sphere of the positively oriented full simplex v (perturbed)?
+
+        Parameters
+        ----------
+        v : list of int
+            The d + 1 point indices of a full simplex with :meth:`orient` ``+1``.
+        y : int
+            The point index tested.
+
+        Returns
+        -------
+        bool
+            True when π_y > r² of the orthogonal sphere of ``v``; exact ties are decided by CGAL's
+            symbolic perturbation.
+        """
         d = self.d
         cof_y = -1 if d % 2 == 0 else 1  # (−1)^(d+1) orient(v), orient(v) = +1
         if d > 3:
@@ -277,8 +376,19 @@ class Geometry:
     def ints(self, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """Coordinates ×2^K and weights ×4^K of the points ``idx`` (any shape) as Python integers.
 
-        Returns ``(x, w, K)``: object arrays of shapes ``idx.shape + (d,)`` and ``idx.shape``, and one
-        K for the whole batch (so every value is an integer).
+        Parameters
+        ----------
+        idx : numpy.ndarray of int
+            Point indices, any shape.
+
+        Returns
+        -------
+        x : numpy.ndarray of object, shape ``idx.shape + (d,)``
+            Coordinates times 2^K (Python ints).
+        w : numpy.ndarray of object, shape ``idx.shape``
+            Weights times 4^K (Python ints).
+        K : int
+            One exponent for the whole batch (so every value is an integer).
         """
         idx = np.asarray(idx, dtype=np.int64)
         pe, we = self.exponents[idx], self.weight_exponents[idx]
@@ -287,9 +397,57 @@ class Geometry:
         w = self.weight_mantissas[idx].astype(object) * np.power(2, (2 * k - we).astype(object))
         return x, w, k
 
+    def small_ints(self, idx: np.ndarray, degree: int, terms: float) -> tuple[np.ndarray, np.ndarray] | None:
+        """:meth:`ints` as int64 arrays when a polynomial of the coordinates (degree ``degree`` in
+        coordinates and weights counted twice, at most ``terms`` terms of coefficient 1, each factor
+        a difference of two values) is exact in int64; else None (use :meth:`ints`).
+
+        Grids and other data on a coarse dyadic lattice take this path: their exact predicates run as
+        vectorised integer arithmetic instead of Python integers.
+
+        Parameters
+        ----------
+        idx : numpy.ndarray of int
+            Point indices, any shape.
+        degree : int
+            Degree of the polynomial to be evaluated exactly.
+        terms : float
+            A bound on its number of terms.
+
+        Returns
+        -------
+        tuple of numpy.ndarray or None
+            ``(x, w)``: int64 coordinates ×2^K (shape ``idx.shape + (d,)``) and weights ×4^K (shape
+            ``idx.shape``); None when K > 60 or the polynomial could overflow int64.
+        """
+        idx = np.asarray(idx, dtype=np.int64)
+        pe, we = self.exponents[idx], self.weight_exponents[idx]
+        k = int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
+        if k > 60:
+            return None
+        scale = 2.0**k
+        big = max(float(np.abs(self.points[idx]).max(initial=0.0)) * scale,
+                  float(np.sqrt(np.abs(self.weights[idx]).max(initial=0.0))) * scale, 1.0)
+        if terms * (2.0 * big) ** degree >= 2.0**60:  # margin for the float estimate of the bound
+            return None
+        x = self.mantissas[idx] << (k - pe)
+        w = self.weight_mantissas[idx] << (2 * k - we)
+        return x, w
+
     # -------------------------------------------------------------------------- orientation
     def orientation(self, simplices: np.ndarray) -> np.ndarray:
-        """Exact signs (+1, 0, −1) of det[x_i − x_0] for full simplices ``(m, d + 1)``."""
+        """Exact signs (+1, 0, −1) of det[x_i − x_0] for full simplices ``(m, d + 1)``.
+
+        Parameters
+        ----------
+        simplices : numpy.ndarray of int, shape (m, d + 1)
+            Full simplices (point indices).
+
+        Returns
+        -------
+        numpy.ndarray of int8, shape (m,)
+            The signs: the float filter, then exact integers for the rows it cannot decide.
+        """
         sign = orient_filter(self.points, np.ascontiguousarray(simplices, dtype=np.int64))
         unsure = np.flatnonzero(sign == 0)
         if unsure.size:
@@ -297,10 +455,23 @@ class Geometry:
         return sign
 
     def orientation_exact(self, simplices: np.ndarray) -> np.ndarray:
-        """:meth:`orientation` in exact integer arithmetic."""
+        """:meth:`orientation` in exact integer arithmetic.
+
+        Parameters
+        ----------
+        simplices : numpy.ndarray of int, shape (m, d + 1)
+            As for :meth:`orientation`.
+
+        Returns
+        -------
+        numpy.ndarray of int8
+            One sign (+1, 0 or −1) per row, each decided exactly.
+        """
         self.exact_rows += len(simplices)
-        x, _, _ = self.ints(simplices)
-        return _signs(expand_det(x[:, 1:, :] - x[:, :1, :]))
+        d = self.d
+        small = self.small_ints(simplices, d, float(factorial(d)))
+        x = self.ints(simplices)[0] if small is None else small[0]
+        return _signs_of(expand_det(x[:, 1:, :] - x[:, :1, :]))
 
     # -------------------------------------------------------------------------- power test
     def outside(self, simplices: np.ndarray, y: np.ndarray, orient: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -310,6 +481,22 @@ class Geometry:
 
         Ties are broken by CGAL's symbolic perturbation (the lift of a lexicographically larger
         point is raised more), so the answer is always decided.
+
+        Parameters
+        ----------
+        simplices : numpy.ndarray of int, shape (m, d + 1)
+            Full simplices (point indices).
+        y : numpy.ndarray of int, shape (m,)
+            One point index per simplex.
+        orient : numpy.ndarray of int, shape (m,)
+            The simplices' orientation signs (nonzero).
+
+        Returns
+        -------
+        outside : numpy.ndarray of bool, shape (m,)
+            π_y > r² after the perturbation.
+        tie : numpy.ndarray of bool, shape (m,)
+            The rows that were exact ties (π_y = r²) before it.
         """
         sign = insphere_filter(self.points, self.weights, np.ascontiguousarray(simplices, dtype=np.int64),
                                np.ascontiguousarray(y, dtype=np.int64))
@@ -323,13 +510,30 @@ class Geometry:
         return out, tie
 
     def outside_exact(self, simplices: np.ndarray, y: np.ndarray, cof_y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`outside` in exact integer arithmetic, with the symbolic perturbation for ties."""
+        """:meth:`outside` in exact integer arithmetic, with the symbolic perturbation for ties.
+
+        Parameters
+        ----------
+        simplices, y : numpy.ndarray of int
+            As for :meth:`outside`.
+        cof_y : numpy.ndarray of int, shape (m,)
+            ``(−1)^(d+1)`` times each simplex's orientation sign: the sign with which the
+            determinant grows with y's lift.
+
+        Returns
+        -------
+        outside, tie : numpy.ndarray of bool
+            As for :meth:`outside`.
+        """
         self.exact_rows += len(simplices)
         allp = np.column_stack([simplices, y])
-        x, w, _ = self.ints(allp)
+        d = self.d
+        # the lifted determinant: (d + 1)! terms of degree d + 2, the lift a sum of d + 2 squares
+        small = self.small_ints(allp, d + 2, float(factorial(d + 1) * (d + 2)))
+        x, w = self.ints(allp)[:2] if small is None else small
         diff = x[:, :-1, :] - x[:, -1:, :]
         lift = (diff * diff).sum(axis=2) - (w[:, :-1] - w[:, -1:])
-        p = _signs(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
+        p = _signs_of(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
         out = p * cof_y > 0
         tie = p == 0
         rows = np.flatnonzero(tie)
@@ -340,7 +544,7 @@ class Geometry:
             cof = np.empty((len(rows), self.d + 2), dtype=np.int8)
             for j in range(self.d + 2):
                 rest = np.delete(xt, j, axis=1)
-                cof[:, j] = (-1) ** j * _signs(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
+                cof[:, j] = (-1) ** j * _signs_of(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
             by_rank = np.argsort(-self.rank[allp[rows]], axis=1)
             ordered = np.take_along_axis(cof, by_rank, axis=1)
             first = ordered[np.arange(len(rows)), np.argmax(ordered != 0, axis=1)]
@@ -372,7 +576,20 @@ class Geometry:
         return num, g
 
     def orthoballs_exact(self, simplices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Centres (m, d) and squared radii (m,) of the smallest orthogonal spheres, exactly rounded."""
+        """Centres and squared radii of the smallest orthogonal spheres, correctly rounded.
+
+        Parameters
+        ----------
+        simplices : numpy.ndarray of int, shape (m, k + 1)
+            ``k``-simplices (k <= d), affinely independent.
+
+        Returns
+        -------
+        centre : numpy.ndarray of float64, shape (m, d)
+            The centres (scaled coordinates).
+        r2 : numpy.ndarray of float64, shape (m,)
+            The squared radii (``−w`` for a vertex).
+        """
         self.exact_rows += len(simplices)
         m = len(simplices)
         if simplices.shape[1] == 1:
@@ -389,7 +606,20 @@ class Geometry:
         return centre.reshape(m, self.d), r2
 
     def power_exact(self, faces: np.ndarray, y: np.ndarray) -> np.ndarray:
-        """Exact signs of π_y(c) − r² for the smallest orthogonal spheres (c, r²) of ``faces``."""
+        """Exact signs of π_y(c) − r² for the smallest orthogonal spheres (c, r²) of ``faces``.
+
+        Parameters
+        ----------
+        faces : numpy.ndarray of int, shape (m, k + 1)
+            ``k``-simplices (point indices), affinely independent.
+        y : numpy.ndarray of int, shape (m,)
+            One point index per face.
+
+        Returns
+        -------
+        numpy.ndarray of int8, shape (m,)
+            +1, 0 or −1 (negative: y attaches the face).
+        """
         self.exact_rows += len(faces)
         allp = np.column_stack([faces, y])
         x, w, _ = self.ints(allp)

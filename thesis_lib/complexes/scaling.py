@@ -21,6 +21,16 @@ def power_of_two_scale(points: npt.NDArray[np.float64]) -> int:
     """The exponent e such that ``points * 2**e`` has its largest |coordinate| in [0.5, 1).
 
     Thesis: §2.1.2 (the complexes depend on the points only up to similarity).
+
+    Parameters
+    ----------
+    points : numpy.ndarray of float64
+        Finite coordinates, any shape.
+
+    Returns
+    -------
+    int
+        The exponent ``e`` (0 when every coordinate is 0 or there are none).
     """
     top = float(np.max(np.abs(points))) if points.size else 0.0
     if top == 0.0:

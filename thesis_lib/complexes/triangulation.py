@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from math import comb
 
 import numpy as np
+import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError, cKDTree
@@ -81,16 +82,48 @@ def estimated_size(n: int, d: int) -> int:
     At least one d-simplex with its 2^(d+1) − 1 faces; for many points about n · c_d top
     simplices (c_d the expected Poisson–Delaunay count per point, extrapolated ×6 per dimension
     beyond d = 8), and never more than C(n, d + 1).
+
+    Parameters
+    ----------
+    n : int
+        The number of points.
+    d : int
+        The dimension of the space, ``d >= 1``.
+
+    Returns
+    -------
+    int
+        The estimate, used to refuse constructions that could not finish.
     """
     per = _CELLS_PER_POINT.get(d, _CELLS_PER_POINT[8] * 6.0 ** max(0, d - 8))
     tops = min(n * per, comb(n, d + 1)) if n <= 10**6 else n * per
     return int(max(2 ** (d + 1) - 1, tops))
 
 
-def prepare_geometry(points, weights=None) -> tuple[Geometry, int]:
+def prepare_geometry(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> tuple[Geometry, int]:
     """Validate the input and return its :class:`Geometry` (points scaled by 2^e) and e.
 
     Thesis: §2.1.2 (a weighted point x with weight w_x ≥ 0).
+
+    Parameters
+    ----------
+    points : array_like, shape (n, d)
+        Finite coordinates of at least d + 1 distinct points.
+    weights : array_like, shape (n,), optional
+        The points' weights w_x >= 0; None: all zero (unweighted).
+
+    Returns
+    -------
+    geo : Geometry
+        Points times 2^e (largest |coordinate| in [0.5, 1)) and weights times 4^e.
+    e : int
+        The scale exponent.
+
+    Raises
+    ------
+    ValueError
+        Too few or duplicate points, invalid weights, a Delaunay complex estimated too large to
+        build, or weights and coordinates too far apart in scale for float64.
     """
     pts = as_points(points)
     n, d = pts.shape
@@ -493,6 +526,21 @@ def triangulate(geo: Geometry) -> Triangulation:
     """The certified regular triangulation of prepared points (see the module docstring).
 
     Thesis: Definition 2.13 (Delaunay complex; weighted points §2.1.2).
+
+    Parameters
+    ----------
+    geo : Geometry
+        Prepared points and weights (:func:`prepare_geometry`).
+
+    Returns
+    -------
+    Triangulation
+        Its top simplices (rows ascending, in no particular row order), neighbours and ties.
+
+    Raises
+    ------
+    ValueError
+        If the points lie on a hyperplane (no full-dimensional triangulation).
     """
     candidate = _qhull_candidate(geo) if geo.d >= 2 else None
     if candidate is None:
@@ -509,7 +557,20 @@ def triangulate(geo: Geometry) -> Triangulation:
 
 
 def lexicographic_order(rows: np.ndarray, n: int) -> np.ndarray:
-    """The permutation sorting sorted-row simplices (vertices < n) lexicographically."""
+    """The permutation sorting sorted-row simplices (vertices < n) lexicographically.
+
+    Parameters
+    ----------
+    rows : numpy.ndarray of int, shape (m, k)
+        Simplices as ascending rows.
+    n : int
+        A bound on the vertex indices (every index below it).
+
+    Returns
+    -------
+    numpy.ndarray of int, shape (m,)
+        ``rows[out]`` is in lexicographic order (stable among equal rows).
+    """
     keys = row_keys(rows, n)
     return np.lexsort(rows.T[::-1]) if keys is None else np.argsort(keys, kind="stable")
 
@@ -518,6 +579,16 @@ def lexicographic(t: Triangulation) -> Triangulation:
     """The same triangulation with its simplices in lexicographic order (neighbours renumbered).
 
     Thesis: Definition 2.13 (simplices listed as DESIGN.md orders them).
+
+    Parameters
+    ----------
+    t : Triangulation
+        Any triangulation.
+
+    Returns
+    -------
+    Triangulation
+        A new one: simplices sorted, ``neighbours`` and ``ties`` renumbered to the new rows.
     """
     order = lexicographic_order(t.simplices, int(t.simplices.max()) + 1 if t.simplices.size else 1)
     inverse = np.empty_like(order)
@@ -527,23 +598,33 @@ def lexicographic(t: Triangulation) -> Triangulation:
     return Triangulation(t.simplices[order], nb, inverse[t.ties] if t.ties.size else t.ties)
 
 
-def regular_triangulation(points, weights=None) -> tuple[np.ndarray, np.ndarray]:
+def regular_triangulation(points: npt.ArrayLike,
+                          weights: npt.ArrayLike | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Top simplices of the regular (weighted Delaunay) triangulation and their neighbours.
 
     Thesis: Definition 2.13 (Delaunay complex) for weighted points (§2.1.2, power distance π_x).
 
+    Decided with exact predicates; d + 2 co-spherical points are triangulated by CGAL's symbolic
+    perturbation (as GUDHI).  Points with an empty weighted Voronoi cell are not vertices.
+
     Parameters
     ----------
-    points : (n, d) array, n >= d + 1, no duplicates, not all on a hyperplane.
-    weights : optional (n,) squared radii w_x >= 0.
+    points : array_like, shape (n, d)
+        The sites; the triangulation needs n >= d + 1 of them, distinct, spanning R^d.
+    weights : array_like, shape (n,), optional
+        Weights w_x >= 0 (squared radii); None gives the Delaunay triangulation.
 
     Returns
     -------
-    simplices : (m, d + 1) int array, rows ascending, in lexicographic order.
-    neighbours : (m, d + 1) index of the simplex across the facet opposite each vertex (−1: none).
+    simplices : numpy.ndarray of int64, shape (m, d + 1)
+        The top simplices, rows ascending, in lexicographic order.
+    neighbours : numpy.ndarray of int64, shape (m, d + 1)
+        Row of the simplex across the facet opposite each vertex (−1 on the convex hull).
 
-    Decided with exact predicates; d + 2 co-spherical points are triangulated by CGAL's symbolic
-    perturbation (as GUDHI).  Points with an empty weighted Voronoi cell are not vertices.
+    Raises
+    ------
+    ValueError
+        As :func:`prepare_geometry`, or for points on a hyperplane.
     """
     geo, _ = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))

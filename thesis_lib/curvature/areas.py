@@ -31,8 +31,26 @@ __all__ = ["vertex_areas", "vertex_areas_of_mesh", "circumcentric_fractions", "A
 AREA_KINDS = ("mixed", "voronoi", "barycentric")
 
 
-def check_area(area) -> str:
-    """The vertex-region name ``area``: one of :data:`AREA_KINDS`."""
+def check_area(area: object) -> str:
+    """The vertex-region name ``area``: one of :data:`AREA_KINDS`.
+
+    Thesis: §3.3.2 (Voronoi and barycentric regions).
+
+    Parameters
+    ----------
+    area : object
+        The name to check: ``"mixed"``, ``"voronoi"`` or ``"barycentric"``.
+
+    Returns
+    -------
+    str
+        ``area`` itself.
+
+    Raises
+    ------
+    ValueError
+        If ``area`` is not one of :data:`AREA_KINDS` (including a non-string).
+    """
     if not isinstance(area, str) or area not in AREA_KINDS:
         raise ValueError(f"unknown area {area!r}: use one of {AREA_KINDS}")
     return area
@@ -124,12 +142,15 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
 
     Parameters
     ----------
-    mesh : a validated mesh.
-    area : {"mixed", "voronoi", "barycentric"}.
+    mesh : Mesh
+        A validated mesh (from :func:`~.manifold.checked_mesh`).
+    area : {"mixed", "voronoi", "barycentric"}, default "mixed"
+        The vertex region; ``"mixed"`` needs n = 2.
 
     Returns
     -------
     ndarray, shape (nv,)
+        The area of each vertex's region; zero at isolated vertices.
     """
     area = check_area(area)
     v, s, areas = mesh.vertices, mesh.simplices, mesh.areas
@@ -147,7 +168,29 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
 
 
 def resolve_area(area: str | None, kind: str | None, *, stacklevel: int = 3) -> str:
-    """The ``area`` argument, honouring the deprecated alias ``kind=`` with a ``FutureWarning``."""
+    """The ``area`` argument, honouring the deprecated alias ``kind=`` with a ``FutureWarning``.
+
+    Thesis: §3.3.2 (Voronoi and barycentric regions).
+
+    Parameters
+    ----------
+    area : {"mixed", "voronoi", "barycentric"} or None
+        The vertex region asked for; None when not given.
+    kind : str or None
+        Deprecated alias of ``area``; giving it warns with a ``FutureWarning``.
+    stacklevel : int, default 3
+        Stack level of the warning, counted from the caller of this function.
+
+    Returns
+    -------
+    str
+        The checked area name; ``"mixed"`` when neither ``area`` nor ``kind`` is given.
+
+    Raises
+    ------
+    ValueError
+        If both ``area`` and ``kind`` are given, or the name is not one of :data:`AREA_KINDS`.
+    """
     return check_area(resolve_alias(area, kind, name="area", alias_name="kind", default="mixed",
                                     stacklevel=stacklevel + 1))
 
@@ -165,7 +208,8 @@ def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | 
         Top simplices of a simplicial pseudo-manifold (checked).
     area : {"mixed", "voronoi", "barycentric"}, default "mixed"
         See the module docstring; ``"mixed"`` needs n = 2.
-    kind : deprecated alias of ``area`` (FutureWarning; removed in the next release).
+    kind : str or None, default None
+        Deprecated alias of ``area`` (FutureWarning; removed in the next release).
 
     Returns
     -------

@@ -52,6 +52,22 @@ def exterior_angles(polygon: ArrayLike) -> NDArray[np.float64]:
     interior angle α_i.  For a simple closed polygon traversed counter-clockwise they add up to 2π
     (the turning number is 1); a sampled smooth curve gives ∫ κ ds = ∫ dψ = 2π (Example 3.6).
     Thesis: Figure 3.1, eq. (3.7) and Example 3.6.
+
+    Parameters
+    ----------
+    polygon : array_like, shape (k, 2)
+        The corners in order, k >= 3; the last corner joins the first.
+
+    Returns
+    -------
+    ndarray of float64, shape (k,)
+        δ_i at corner i, in radians.
+
+    Raises
+    ------
+    ValueError
+        If ``polygon`` is not a (k, 2) array with k >= 3, holds NaN or infinite values, or repeats a
+        corner consecutively.
     """
     p = np.asarray(polygon, dtype=np.float64)
     if p.ndim != 2 or p.shape[1] != 2 or len(p) < 3:
@@ -69,6 +85,25 @@ def random_simplices(n: int, count: int, *, seed: int = 0) -> NDArray[np.float64
     """``count`` random n-simplices in R^{n+1} (vertices standard normal), shape (count, n + 1, n + 1).
 
     Thesis: Theorem 3.18 (an n-simplex of a triangulated hypersurface in R^{n+1}).
+
+    Parameters
+    ----------
+    n : int
+        Dimension of the simplices, n >= 1.
+    count : int
+        How many simplices, count >= 1.
+    seed : int, default 0
+        Seed of ``numpy.random.default_rng``.
+
+    Returns
+    -------
+    ndarray of float64, shape (count, n + 1, n + 1)
+        The vertex coordinates of each simplex.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` or ``count`` is not an integer >= 1.
     """
     for name, value, low in (("n", n, 1), ("count", count, 1)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
@@ -83,6 +118,22 @@ def barycentric_gradients(points: ArrayLike) -> NDArray[np.float64]:
     vertex k and has length 1/(the height of vertex k over that facet).  The interior dihedral angle
     θ_jk at the ridge opposite vertices j and k has cos θ_jk = −∇λ_j·∇λ_k / (|∇λ_j| |∇λ_k|).
     Thesis: Theorem 3.18 and the angle θ defined after it.
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n + 1, d)
+        Vertex coordinates of m non-degenerate n-simplices, d >= n >= 1.
+
+    Returns
+    -------
+    ndarray of float64, shape (m, n + 1, d)
+        ``out[:, k]`` is ∇λ_k of each simplex.
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not an (m, n + 1, d) array with m >= 1 and d >= n >= 1, or holds NaN or
+        infinite values.
     """
     p = _simplices(points)
     e = p[:, 1:] - p[:, :1]  # (m, n, d), rows e_k = v_k − v_0
@@ -98,6 +149,22 @@ def dihedral_cotangent_sum(points: ArrayLike) -> NDArray[np.float64]:
     θ_i the dihedral angle at it between the facets opposite q and opposite p_i: Corollary 3.19's sum
     without its coefficient (the thesis's A_G^i/n!, really A_G^i/(n(n−1))).
     Thesis: Corollary 3.19 and Example 3.20.
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n + 1, d)
+        Vertex coordinates of m non-degenerate n-simplices, d >= n >= 2; vertex 0 is q.
+
+    Returns
+    -------
+    ndarray of float64, shape (m, d)
+        The sum for each simplex.
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not an (m, n + 1, d) array with m >= 1 and d >= n, holds NaN or infinite
+        values, or n < 2.
     """
     p = _simplices(points)
     m, w, _ = p.shape
@@ -120,6 +187,24 @@ def hyperarea_gradient_fd(points: ArrayLike, h: float = 1e-6) -> NDArray[np.floa
     """Central-difference gradient of each simplex's hyperarea with respect to its vertex 0, (m, d).
 
     Thesis: Definition 3.15 (∇_p area), Theorem 3.18.
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n + 1, d)
+        Vertex coordinates of m n-simplices, d >= n >= 1.
+    h : float, default 1e-6
+        The finite-difference step.
+
+    Returns
+    -------
+    ndarray of float64, shape (m, d)
+        (A(p_0 + h e_a) − A(p_0 − h e_a)) / (2h) for each simplex and coordinate a.
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not an (m, n + 1, d) array with m >= 1 and d >= n >= 1, holds NaN or
+        infinite values, or ``h`` is not a positive finite number.
     """
     p = _simplices(points)
     h = float(h)
@@ -141,9 +226,30 @@ def corollary_3_19_coefficient(n: int, count: int = 200, *, seed: int = 0) -> tu
     """Least-squares coefficient c with ∇_q A ≈ c · Σ_i −x_i A_G^i cot θ_i over random n-simplices.
 
     The thesis's Corollary 3.19 has c = 1/n!; the gradient of the hyperarea gives c = 1/(n(n−1))
-    (the two agree for n = 2, 3).  Returns ``(c, residual)``, the residual being
-    ‖∇A − c Σ‖ / ‖∇A‖ over all simplices (about the finite-difference error when the form is right).
+    (the two agree for n = 2, 3).
     Thesis: Corollary 3.19 and Example 3.20.
+
+    Parameters
+    ----------
+    n : int
+        Dimension of the simplices, n >= 2.
+    count : int, default 200
+        How many random simplices (:func:`random_simplices`) enter the fit.
+    seed : int, default 0
+        Seed of the random simplices.
+
+    Returns
+    -------
+    c : float
+        The fitted coefficient.
+    residual : float
+        ‖∇A − c Σ‖ / ‖∇A‖ over all simplices (about the finite-difference error when the form is
+        right), ∇A from :func:`hyperarea_gradient_fd`.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` or ``count`` is not an integer >= 1, or n < 2.
     """
     p = random_simplices(n, count, seed=seed)
     fd = hyperarea_gradient_fd(p).ravel()
@@ -160,6 +266,22 @@ def nearest_vertex_volumes(points: ArrayLike) -> NDArray[np.float64]:
     own n-dimensional coordinates).  Rows sum to the simplex's hyperarea.  On a non-obtuse triangle
     this is the thesis's A_vor = 1/8 Σ (cot α + cot β) ‖x_i − x_j‖²; at the right corner of the
     3-simplex (0, e₁, e₂, e₃) it is 5/48.  Thesis: §3.3.2 (Voronoi regions) and §3.4.2.
+
+    Parameters
+    ----------
+    points : array_like, shape (m, n + 1, d)
+        The m simplices, by the coordinates of their n + 1 vertices (d >= n >= 1, none
+        degenerate).
+
+    Returns
+    -------
+    ndarray of float64, shape (m, n + 1)
+        ``out[s, k]`` is the hyperarea of the part of simplex s nearest to its vertex k.
+
+    Raises
+    ------
+    ValueError
+        On the bad ``points`` that :func:`barycentric_gradients` refuses.
     """
     p = _simplices(points)
     m, w, _ = p.shape
@@ -193,6 +315,23 @@ def thales_obtuse(points: ArrayLike, a: ArrayLike, b: ArrayLike) -> NDArray[np.b
     Figure 3.2: x lies inside the circle on the diameter ab exactly when the angle at x is obtuse
     (Thales: on the circle it is right), so a vertex inside it spoils a non-obtuse triangle.
     Thesis: Figure 3.2, §3.3.2.
+
+    Parameters
+    ----------
+    points : array_like, shape (k, d)
+        The points x.
+    a, b : array_like, shape (d,)
+        The ends of the diameter.
+
+    Returns
+    -------
+    ndarray of bool, shape (k,)
+        True where the angle at x is obtuse, i.e. x is strictly inside the circle (sphere) on ab.
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not (k, d) or ``a``, ``b`` are not points of dimension d.
     """
     x = np.asarray(points, dtype=np.float64)
     a, b = np.asarray(a, dtype=np.float64), np.asarray(b, dtype=np.float64)
@@ -201,7 +340,9 @@ def thales_obtuse(points: ArrayLike, a: ArrayLike, b: ArrayLike) -> NDArray[np.b
     return np.einsum("kd,kd->k", a - x, b - x) < 0
 
 
-def principal_curvatures_from_mean_and_gaussian(vertices, faces, area: str = "voronoi") -> tuple[NDArray, NDArray]:
+def principal_curvatures_from_mean_and_gaussian(
+    vertices: ArrayLike, faces: ArrayLike, area: str = "voronoi"
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """κ₁ ≤ κ₂ = H ∓ sqrt(max(H² − K, 0)) from the discrete H and K of a triangle mesh.
 
     The route that §3.3.4 (after [MDSB02]) prefers to the least-squares shape operator: the signed
@@ -210,6 +351,26 @@ def principal_curvatures_from_mean_and_gaussian(vertices, faces, area: str = "vo
     (faces coherently oriented; a sphere oriented outwards has κ = +1/R), so the result compares
     with :func:`thesis_lib.curvature.principal_curvatures`.
     Thesis: Definition 3.4 and §3.3.4 ("estimating K and H and use this to estimate κ₁ and κ₂").
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (m, 3)
+        Coherently oriented triangles of a surface (checked).
+    area : {"voronoi", "mixed", "barycentric"}, default "voronoi"
+        The vertex region of H and K.
+
+    Returns
+    -------
+    kappa1, kappa2 : ndarray of float64, shape (nv,)
+        The smaller and the larger principal curvature at each vertex; equal (to H) where
+        H² < K.
+
+    Raises
+    ------
+    ValueError
+        On an invalid mesh (see :func:`thesis_lib.curvature.vertex_areas`) or an unknown area.
     """
     vec = mean_curvature_vector(vertices, faces)
     H = np.einsum("ia,ia->i", vec, vertex_normals(vertices, faces)) / (2 * vertex_areas(vertices, faces, area))
@@ -218,7 +379,7 @@ def principal_curvatures_from_mean_and_gaussian(vertices, faces, area: str = "vo
     return H - root, H + root
 
 
-def printed_sum_gradient(vertices, faces) -> NDArray[np.float64]:
+def printed_sum_gradient(vertices: ArrayLike, faces: ArrayLike) -> NDArray[np.float64]:
     """‖∇_S Σ_j (d_ijᵀ S d_ij − κ_ij)‖_F / deg(i) at every vertex i: the sum as §3.3.4 prints it.
 
     The printed sum (no square) is linear in S, with gradient Σ_j d_ij d_ijᵀ whatever the κ_ij, where
@@ -226,8 +387,25 @@ def printed_sum_gradient(vertices, faces) -> NDArray[np.float64]:
     :func:`thesis_lib.curvature.vertex_normals`; weights 1, Voronoi weights change nothing here).
     Its trace is deg(i), so the ratio is at least 1/√2: the gradient never vanishes and the printed
     sum has no minimiser.  With the square it is the least-squares problem of
-    :func:`thesis_lib.curvature.shape_operator`.  NaN at isolated vertices.
+    :func:`thesis_lib.curvature.shape_operator`.
     Thesis: §3.3.4, "Estimating the Shape Operator".
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, 3)
+        Vertex coordinates.
+    faces : array_like of int, shape (m, 3)
+        Triangles of a surface (checked).
+
+    Returns
+    -------
+    ndarray of float64, shape (nv,)
+        The ratio at each vertex; NaN at isolated vertices.
+
+    Raises
+    ------
+    ValueError
+        On an invalid mesh (see :func:`thesis_lib.curvature.normal_curvatures`).
     """
     edges, _ = normal_curvatures(vertices, faces)
     v = np.asarray(vertices, dtype=np.float64)

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from math import factorial
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = [
     "torus_point",
@@ -45,7 +46,28 @@ __all__ = [
 
 def check_torus_radii(R: float, r: float) -> tuple[float, float]:
     """``(R, r)`` as floats, or ValueError unless 0 < r < R (a torus of revolution without
-    self-intersection).  Shared by the torus of §3.4.1 and the upright torus of Example 4.2."""
+    self-intersection).
+
+    Shared by the torus of §3.4.1 and the upright torus of Example 4.2.
+    Thesis: §3.4.1 (the torus with radii R > r).
+
+    Parameters
+    ----------
+    R : float
+        Distance from the centre of the tube to the axis of revolution.
+    r : float
+        Radius of the tube.
+
+    Returns
+    -------
+    R, r : float
+        The radii as Python floats.
+
+    Raises
+    ------
+    ValueError
+        Unless both are finite and 0 < r < R (also when either is not a number).
+    """
     R, r = float(R), float(r)
     if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
         raise ValueError(f"torus radii need 0 < r < R (finite; R > r > 0), got R={R!r}, r={r!r}")
@@ -60,10 +82,32 @@ def _finite(name: str, x) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------------------- torus
-def torus_point(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Points X(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v) of the torus, shape (..., 3).
 
     Thesis: §3.4.1 (parametrisation of the torus in R³).
+
+    Parameters
+    ----------
+    u : array_like
+        Angle around the axis of revolution (the z-axis).
+    v : array_like
+        Angle around the tube, broadcast with ``u``.
+    R : float, default 10.0
+        Distance from the centre of the tube to the axis of revolution.
+    r : float, default 5.0
+        Radius of the tube, 0 < r < R.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., 3)
+        X(u, v), over the broadcast shape of ``u`` and ``v``.
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
+        broadcast.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -71,10 +115,28 @@ def torus_point(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     return np.stack([rho * np.cos(u), rho * np.sin(u), r * np.sin(v)], axis=-1)
 
 
-def torus_uv(points, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
+def torus_uv(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
     """Parameters (u, v) in [0, 2π) of points on (or near) the torus: the nearest point's parameters.
 
     Thesis: §3.4.1 (inverse of the torus parametrisation, used to compare estimates at samples).
+
+    Parameters
+    ----------
+    points : array_like, shape (..., 3)
+        Points on (or near) the torus of :func:`torus_point`.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+        Only R enters the formula; r is checked.
+
+    Returns
+    -------
+    u, v : ndarray of float64, shape (...)
+        The angle around the axis and the angle around the tube, each in [0, 2π).
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R (finite), or if ``points`` is not (..., 3) or holds NaN or infinite values.
     """
     check_torus_radii(R, r)
     p = _finite("points", points)
@@ -85,10 +147,30 @@ def torus_uv(points, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.nd
     return u, v
 
 
-def torus_shape_operator(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Shape operator in the basis (X_u, X_v): diag(-cos v / (R + r cos v), -1/r), shape (..., 2, 2).
 
     Thesis: §3.4.1 (S(X_u) = -cos v/(R + r cos v) X_u, S(X_v) = -X_v / r).
+
+    Parameters
+    ----------
+    u : array_like
+        Angle around the axis; S does not depend on it (it only sets the shape).
+    v : array_like
+        Angle around the tube, broadcast with ``u``.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64, shape (..., 2, 2)
+        The diagonal matrix of S at each parameter pair.
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R (finite); if ``u`` or ``v`` holds NaN or infinite values or they do not
+        broadcast.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -98,20 +180,58 @@ def torus_shape_operator(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     return out
 
 
-def torus_principal_curvatures(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Principal curvatures κ₁ ≤ κ₂ (eigenvalues of S), shape (..., 2).
 
     Thesis: Definition 3.3 and §3.4.1.
+
+    Parameters
+    ----------
+    u : array_like
+        Angle around the axis (the curvatures do not depend on it).
+    v : array_like
+        Angle around the tube: κ = -cos v / (R + r cos v) along the parallel, -1/r along the meridian.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64, shape (..., 2)
+        κ₁ ≤ κ₂ along the last axis (signs for the outward normal).
+
+    Raises
+    ------
+    ValueError
+        As :func:`torus_shape_operator`.
     """
     S = torus_shape_operator(u, v, R, r)
     k = np.stack([S[..., 0, 0], S[..., 1, 1]], axis=-1)
     return np.sort(k, axis=-1)
 
 
-def torus_mean_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Signed mean curvature H = -(R + 2r cos v) / (2r (R + r cos v)) (outward normal).
 
-    Thesis: §3.4.1 (H = tr(S)/2, Definition 3.4).  Zero on the circle cos v = -R/(2r).
+    Thesis: §3.4.1 (H = tr(S)/2, Definition 3.4).
+
+    Parameters
+    ----------
+    u : array_like
+        Angle around the axis (H does not depend on it; it is broadcast with ``v``).
+    v : array_like
+        Angle around the tube.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64
+        H over the broadcast shape of ``u`` and ``v``; zero on the circle cos v = -R/(2r).
+
+    Raises
+    ------
+    ValueError
+        As :func:`torus_shape_operator`.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -119,10 +239,29 @@ def torus_mean_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     return -(R + 2 * r * c) / (2 * r * (R + r * c))
 
 
-def torus_gaussian_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Gaussian curvature K = cos v / (r (R + r cos v)).
 
-    Thesis: §3.4.1 (K = det S, Definition 3.4).  Zero on the circles v = ±π/2.
+    Thesis: §3.4.1 (K = det S, Definition 3.4).
+
+    Parameters
+    ----------
+    u : array_like
+        Angle around the axis (K does not depend on it; it is broadcast with ``v``).
+    v : array_like
+        Angle around the tube: K > 0 on the outer half (cos v > 0), K < 0 on the inner half.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64
+        K over the broadcast shape of ``u`` and ``v``; zero on the circles v = ±π/2.
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R (finite), or if ``u`` and ``v`` are not finite or do not broadcast.
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -130,36 +269,106 @@ def torus_gaussian_curvature(u, v, R: float = 10.0, r: float = 5.0) -> np.ndarra
     return c / (r * (R + r * c))
 
 
-def torus_mean_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_mean_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Signed mean curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
 
     Thesis: §3.4.1, Figure 3.11 (exact |H| at the sampled points).
+
+    Parameters
+    ----------
+    points : array_like, shape (..., 3)
+        Sample points, e.g. the vertices of a reconstruction; each is read at the parameters of the
+        nearest torus point.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64, shape (...)
+        H at each point (outward normal); compare ``abs`` of it with the discrete |H|.
+
+    Raises
+    ------
+    ValueError
+        As :func:`torus_uv`.
     """
     return torus_mean_curvature(*torus_uv(points, R, r), R, r)
 
 
-def torus_principal_curvatures_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Principal curvatures κ₁ ≤ κ₂ of the torus at the parameters of ``points``, shape (..., 2).
 
     Thesis: Definition 3.3 and §3.4.1.
+
+    Parameters
+    ----------
+    points : array_like, shape (..., 3)
+        Points on (or near) the torus, read at their parameters (:func:`torus_uv`).
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64, shape (..., 2)
+        κ₁ ≤ κ₂ at each point along the last axis.
+
+    Raises
+    ------
+    ValueError
+        If ``points`` is not (..., 3) or not finite, or the radii are invalid (:func:`torus_uv`).
     """
     return torus_principal_curvatures(*torus_uv(points, R, r), R, r)
 
 
-def torus_gaussian_curvature_at(points, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_gaussian_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Gaussian curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
 
     Thesis: §3.4.1, Figures 3.6–3.7.
+
+    Parameters
+    ----------
+    points : array_like, shape (..., 3)
+        Sample points; K is taken at the parameters of the nearest torus point.
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5; see :func:`torus_point`).
+
+    Returns
+    -------
+    ndarray of float64, shape (...)
+        K at each point.
+
+    Raises
+    ------
+    ValueError
+        As :func:`torus_uv`.
     """
     return torus_gaussian_curvature(*torus_uv(points, R, r), R, r)
 
 
 # ---------------------------------------------------------------------------------- hypersphere
-def hypersphere_point(angles, radius: float = 2.0) -> np.ndarray:
+def hypersphere_point(angles: npt.ArrayLike, radius: float = 2.0) -> np.ndarray:
     """Hyperspherical coordinates: angles (..., n) = (ψ₁, ..., ψ_{n-1}, φ) to points (..., n+1) on S^n(ρ).
 
     x₁ = ρ cos ψ₁, x₂ = ρ sin ψ₁ cos ψ₂, ..., x_{n+1} = ρ sin ψ₁ ⋯ sin ψ_{n-1} sin φ; for n = 3 these are
     the coordinates (ψ, θ, φ) of the thesis.  Thesis: §3.4.2 (parametrisation of the 3-sphere).
+
+    Parameters
+    ----------
+    angles : array_like, shape (..., n)
+        The angles (ψ₁, ..., ψ_{n-1}, φ), n >= 1.
+    radius : float, default 2.0
+        The radius ρ > 0.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n + 1)
+        The points on S^n(ρ).
+
+    Raises
+    ------
+    ValueError
+        If ``radius`` is not a positive finite number, or ``angles`` is not (..., n) with n >= 1 or
+        holds NaN or infinite values.
     """
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
@@ -181,6 +390,23 @@ def hypersphere_mean_curvature(radius: float = 2.0, n: int = 3) -> float:
     """|H| = 1/ρ of the n-sphere of radius ρ in R^{n+1} (every principal curvature is ±1/ρ).
 
     Thesis: §3.4.2 (mean curvature of the 3-sphere equals 1/r).
+
+    Parameters
+    ----------
+    radius : float, default 2.0
+        The radius ρ > 0.
+    n : int, default 3
+        Dimension of the sphere, n >= 1 (checked; |H| does not depend on it).
+
+    Returns
+    -------
+    float
+        1/ρ.
+
+    Raises
+    ------
+    ValueError
+        If ``radius`` is not a positive finite number or ``n`` not a positive integer.
     """
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
@@ -191,10 +417,25 @@ def hypersphere_mean_curvature(radius: float = 2.0, n: int = 3) -> float:
 
 
 # ------------------------------------------------------------------------------------ catenoid
-def catenoid_point(params) -> np.ndarray:
+def catenoid_point(params: npt.ArrayLike) -> np.ndarray:
     """The n-catenoid (catenoid × R^{n-2}): params (..., n) = (u, v, w₁, ...) to (..., n+1).
 
     X = (cosh v cos u, cosh v sin u, v, w₁, ..., w_{n-2}).  Thesis: §3.4.3 (the n-catenoid).
+
+    Parameters
+    ----------
+    params : array_like, shape (..., n)
+        The parameters (u, v, w₁, ..., w_{n-2}), n >= 2.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n + 1)
+        The points X(params).
+
+    Raises
+    ------
+    ValueError
+        If ``params`` is not (..., n) with n >= 2 or holds NaN or infinite values.
     """
     p = _finite("params", params)
     if p.ndim < 1 or p.shape[-1] < 2:
@@ -206,12 +447,28 @@ def catenoid_point(params) -> np.ndarray:
     )
 
 
-def catenoid_principal_curvatures(params) -> np.ndarray:
+def catenoid_principal_curvatures(params: npt.ArrayLike) -> np.ndarray:
     """Principal curvatures (-1/cosh² v, 1/cosh² v, 0, ..., 0) of the n-catenoid, shape (..., n).
 
     Signs for N = X_u × X_v (n = 2); for n > 2 the normal of eq. (3.9) may be the opposite one, which
     flips every sign.  Thesis: §3.4.3 (N_u = X_u / cosh² v, N_v = -X_v / cosh² v, flat in the extra
     directions).
+
+    Parameters
+    ----------
+    params : array_like, shape (..., n)
+        The parameters (u, v, w₁, ..., w_{n-2}), n >= 2, as in :func:`catenoid_point`; only v
+        enters the curvatures.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n)
+        (-1/cosh² v, 1/cosh² v, 0, ..., 0) at each parameter.
+
+    Raises
+    ------
+    ValueError
+        As :func:`catenoid_point`.
     """
     p = _finite("params", params)
     if p.ndim < 1 or p.shape[-1] < 2:
@@ -223,19 +480,50 @@ def catenoid_principal_curvatures(params) -> np.ndarray:
     return out
 
 
-def catenoid_mean_curvature(params) -> np.ndarray:
+def catenoid_mean_curvature(params: npt.ArrayLike) -> np.ndarray:
     """H = 0 everywhere: the n-catenoid is a minimal hypersurface.
 
     Thesis: Definition 3.10 and §3.4.3.
+
+    Parameters
+    ----------
+    params : array_like, shape (..., n)
+        Where H is wanted: parameters (u, v, w₁, ..., w_{n-2}) of :func:`catenoid_point`, n >= 2.
+
+    Returns
+    -------
+    ndarray of float64, shape (...)
+        H = tr(S)/n, the mean of :func:`catenoid_principal_curvatures` (zero up to rounding).
+
+    Raises
+    ------
+    ValueError
+        As :func:`catenoid_point`.
     """
     return catenoid_principal_curvatures(params).sum(axis=-1) / np.asarray(params).shape[-1]
 
 
 # ------------------------------------------------------------------------ numerical reference
-def hypersurface_normal(jacobian) -> np.ndarray:
+def hypersurface_normal(jacobian: npt.ArrayLike) -> np.ndarray:
     """Unit normal N = X_{u_1} ∧ ... ∧ X_{u_n} / W from Jacobians (..., n+1, n), with det[J | N] > 0.
 
     For n = 2 this is (X_u × X_v)/|X_u × X_v|.  Thesis: eq. (3.9).
+
+    Parameters
+    ----------
+    jacobian : array_like, shape (..., n + 1, n)
+        The columns X_{u_1}, ..., X_{u_n} at each point.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n + 1)
+        The unit normal N at each point.
+
+    Raises
+    ------
+    ValueError
+        If ``jacobian`` is not (..., n + 1, n), holds NaN or infinite values, or has rank < n
+        somewhere (the parametrisation is not regular).
     """
     J = _finite("jacobian", jacobian)
     if J.ndim < 2 or J.shape[-2] != J.shape[-1] + 1:
@@ -266,13 +554,35 @@ def _step(h: float) -> float:
     return h
 
 
-def fundamental_forms(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4):
+def fundamental_forms(
+    X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, h: float = 1e-4
+) -> tuple[np.ndarray, np.ndarray]:
     """First and second fundamental forms g_ij = <X_i, X_j>, B_ij = <N, X_ij> by central differences.
 
-    ``X`` maps parameters (..., n) to points (..., n+1); returns ``(g, B)``, each (..., n, n), in the
-    basis (X_{u_1}, ..., X_{u_n}), with N the normal of eq. (3.9).  A tangent vector with parameter
-    components a has I(a) = aᵀ g a and II(a) = aᵀ B a, and its normal curvature is II(a)/I(a) (eq. 3.1).
+    A tangent vector with parameter components a has I(a) = aᵀ g a and II(a) = aᵀ B a, and its
+    normal curvature is II(a)/I(a) (eq. 3.1).
     Thesis: Definitions 3.1–3.2 and eq. (3.9).
+
+    Parameters
+    ----------
+    X : callable
+        The parametrisation: maps parameters (..., n) to points (..., n + 1), vectorised.
+    w : array_like, shape (..., n)
+        The parameters at which to evaluate.
+    h : float, default 1e-4
+        The finite-difference step.
+
+    Returns
+    -------
+    g, B : ndarray of float64, shape (..., n, n)
+        The first and second fundamental forms in the basis (X_{u_1}, ..., X_{u_n}), with N the
+        normal of eq. (3.9).
+
+    Raises
+    ------
+    ValueError
+        If ``w`` is not (..., n) or holds NaN or infinite values, ``h`` is not positive, ``X`` does
+        not map (..., n) to (..., n + 1), or the parametrisation is not regular at ``w``.
     """
     w, h = _parameters(w), _step(h)
     n = w.shape[-1]
@@ -298,25 +608,67 @@ def fundamental_forms(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4)
     return g, B
 
 
-def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w, h: float = 1e-4) -> np.ndarray:
+def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike,
+                              h: float = 1e-4) -> np.ndarray:
     """Shape operator S = g⁻¹ B of a parametrisation X: (..., n) -> (..., n+1), by central differences.
 
     g_ij = <X_i, X_j> (first fundamental form), B_ij = <N, X_ij> = <S X_i, X_j> (second), so the
-    matrix of S = -N_* in the basis (X_{u_1}, ..., X_{u_n}) is g⁻¹ B; returns (..., n, n).
+    matrix of S = -N_* in the basis (X_{u_1}, ..., X_{u_n}) is g⁻¹ B.
     Thesis: Definitions 3.1–3.2 and eq. (3.10).
+
+    Parameters
+    ----------
+    X : callable
+        Parametrisation (..., n) -> (..., n + 1) of the hypersurface, vectorised.
+    w : array_like, shape (..., n)
+        The parameters at which S is wanted.
+    h : float, default 1e-4
+        Step of the central differences of :func:`fundamental_forms`.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n, n)
+        The matrix of S at each parameter.
+
+    Raises
+    ------
+    ValueError
+        As :func:`fundamental_forms`.
     """
     g, B = fundamental_forms(X, w, h)
     return np.linalg.solve(g, B)
 
 
-def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w, nodes: int = 64, h: float = 1e-4) -> np.ndarray:
+def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, nodes: int = 64,
+                            h: float = 1e-4) -> np.ndarray:
     """Normal curvature II(t)/I(t) of a surface (n = 2) at parameters w in the unit tangent directions
     t(θ_k) = cos θ_k e₁ + sin θ_k e₂, θ_k = 2πk/nodes, with (e₁, e₂) the orthonormal frame that
-    Gram–Schmidt makes of (X_u, X_v); returns (..., nodes).
+    Gram–Schmidt makes of (X_u, X_v).
 
     Definition 3.3 takes κ₁, κ₂ as the minimum and maximum over θ; eq. (3.23) integrates over θ
     (the trapezoid rule is exact here for nodes ≥ 3: κ_n is a trigonometric polynomial of degree 2).
     Thesis: eq. (3.1), Definition 3.3 and eq. (3.23).
+
+    Parameters
+    ----------
+    X : callable
+        The parametrisation of a surface: maps parameters (..., 2) to points (..., 3), vectorised.
+    w : array_like, shape (..., 2)
+        The parameters of the points at which the tangent direction turns.
+    nodes : int, default 64
+        How many directions θ_k, at least 3.
+    h : float, default 1e-4
+        Step of the central differences (see :func:`fundamental_forms`).
+
+    Returns
+    -------
+    ndarray of float64, shape (..., nodes)
+        The normal curvature in direction θ_k at each parameter.
+
+    Raises
+    ------
+    ValueError
+        As :func:`fundamental_forms`; also if n ≠ 2 or ``nodes`` is not an integer >= 3.
     """
     g, B = fundamental_forms(X, w, h)
     if g.shape[-1] != 2:
@@ -335,9 +687,28 @@ def hypersphere_quadrature(n: int, nodes: int = 16) -> tuple[np.ndarray, np.ndar
     """Quadrature over the hyperspherical parameters (ψ₁, ..., ψ_{n−1}, φ) ∈ (0, π)^{n−1} × [0, 2π).
 
     Gauss–Legendre with ``nodes`` points in each ψ, the trapezoid rule with 2·nodes points in φ
-    (periodic, so spectrally accurate).  Returns ``(params (k, n), weights (k,))``: Σ weights·f(params)
-    approximates ∫ f dψ₁ ⋯ dψ_{n−1} dφ (the parameter measure; multiply f by a volume element).
+    (periodic, so spectrally accurate).  Σ weights·f(params) approximates ∫ f dψ₁ ⋯ dψ_{n−1} dφ
+    (the parameter measure; multiply f by a volume element).
     Thesis: §3.4.2 (the hyperspherical coordinates of the 3-sphere), Theorem 3.11.
+
+    Parameters
+    ----------
+    n : int
+        Dimension of the sphere (number of parameters), n >= 1.
+    nodes : int, default 16
+        Gauss–Legendre nodes per ψ (and half the trapezoid nodes in φ), at least 2.
+
+    Returns
+    -------
+    params : ndarray of float64, shape (k, n)
+        The quadrature nodes, k = nodes^{n−1} · 2·nodes.
+    weights : ndarray of float64, shape (k,)
+        Their weights.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is not a positive integer or ``nodes`` not an integer >= 2.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
@@ -354,11 +725,28 @@ def hypersphere_quadrature(n: int, nodes: int = 16) -> tuple[np.ndarray, np.ndar
     return params, np.prod(np.stack([wg.ravel() for wg in wgrid]), axis=0)
 
 
-def ellipsoid_point(angles, axes) -> np.ndarray:
+def ellipsoid_point(angles: npt.ArrayLike, axes: npt.ArrayLike) -> np.ndarray:
     """The ellipsoid Σ x_i²/a_i² = 1 in R^{n+1}: x = a ∘ y with y the unit-sphere point of ``angles``.
 
-    ``angles`` (..., n) as in :func:`hypersphere_point`; ``axes`` the n + 1 positive semi-axes.
     Thesis: Theorem 3.11 (a closed hypersurface that is not a sphere).
+
+    Parameters
+    ----------
+    angles : array_like, shape (..., n)
+        Hyperspherical angles, as in :func:`hypersphere_point`.
+    axes : array_like, shape (n + 1,)
+        The positive semi-axes a_i.
+
+    Returns
+    -------
+    ndarray of float64, shape (..., n + 1)
+        The points on the ellipsoid.
+
+    Raises
+    ------
+    ValueError
+        If ``axes`` is not a 1-D array of positive finite numbers, does not have n + 1 entries, or
+        ``angles`` is invalid (see :func:`hypersphere_point`).
     """
     a = _finite("axes", axes)
     if a.ndim != 1 or np.any(a <= 0):
@@ -370,7 +758,7 @@ def ellipsoid_point(angles, axes) -> np.ndarray:
 
 
 def total_gauss_kronecker_curvature(
-    X: Callable[[np.ndarray], np.ndarray], params, weights, h: float = 1e-4
+    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, weights: npt.ArrayLike, h: float = 1e-4
 ) -> float:
     """∫_X K dVol ≈ Σ weights · det S · sqrt(det g) over quadrature nodes ``params`` (k, n).
 
@@ -378,6 +766,28 @@ def total_gauss_kronecker_curvature(
     For even n, K does not depend on the choice of normal.  Gauss–Bonnet (Theorem 3.8, n = 2) and
     Gauss–Bonnet–Chern (Theorem 3.11, n = 2m) say the result is (π^m 2^n m!/n!) χ.
     Thesis: eq. (3.14), Theorems 3.8 and 3.11.
+
+    Parameters
+    ----------
+    X : callable
+        Parametrisation (..., n) -> (..., n + 1) of a closed hypersurface, vectorised.
+    params : array_like, shape (k, n)
+        Quadrature nodes in parameter space (e.g. from :func:`hypersphere_quadrature`).
+    weights : array_like, shape (k,)
+        Quadrature weights of the nodes (not point weights).
+    h : float, default 1e-4
+        Step of the central differences for g and B.
+
+    Returns
+    -------
+    float
+        The quadrature sum.
+
+    Raises
+    ------
+    ValueError
+        As :func:`fundamental_forms`; also if ``weights`` holds NaN or infinite values or does not
+        match ``params``.
     """
     w = _finite("weights", weights)
     g, B = fundamental_forms(X, params, h)
@@ -392,6 +802,23 @@ def hypersphere_volume(n: int, nodes: int = 64) -> float:
     Computed from the volume element of hyperspherical coordinates, independently of the closed
     form 2π^{(n+1)/2}/Γ((n+1)/2); Theorem 3.11's constant is half of it for even n.
     Thesis: Theorem 3.11 ("volume of S^n / 2 = π^m 2^n m!/n!").
+
+    Parameters
+    ----------
+    n : int
+        Dimension of the sphere, n >= 1.
+    nodes : int, default 64
+        Gauss–Legendre nodes per integral.
+
+    Returns
+    -------
+    float
+        The n-dimensional volume of the unit sphere S^n ⊂ R^{n+1}.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is not a positive integer.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
@@ -404,6 +831,21 @@ def gauss_bonnet_chern_constant(n: int) -> float:
     """The thesis's constant π^m 2^n m!/n! of Theorem 3.11 for even n = 2m.
 
     Thesis: Theorem 3.11.
+
+    Parameters
+    ----------
+    n : int
+        An even dimension n = 2m >= 2.
+
+    Returns
+    -------
+    float
+        π^m 2^n m!/n!.
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is not an even integer >= 2.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2 or n % 2:
         raise ValueError(f"n must be an even integer >= 2, got {n!r}")
@@ -418,6 +860,22 @@ def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
     [∫ |R + 2r cos v| dv / ∫ (R + r cos v) dv]_outer / [same]_inner; for R = 2r it is
     (π + 2)(π − 1)/((π + 1)(π − 2)) ≈ 2.33.  What Figures 3.8–3.10's colour profile should show.
     Thesis: §3.4.1, Figures 3.8–3.10.
+
+    Parameters
+    ----------
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5, where R = 2r); the ratio depends only
+        on R/r.
+
+    Returns
+    -------
+    float
+        The ratio of the area-weighted means of |H| (outer over inner).
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R (finite).
     """
     R, r = check_torus_radii(R, r)
     from scipy.integrate import quad
@@ -433,13 +891,33 @@ def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
     return mean_abs_h(-np.pi / 2, np.pi / 2) / mean_abs_h(np.pi / 2, 3 * np.pi / 2)
 
 
-def relative_error(estimate, exact, zero_tol: float = 1e-3) -> np.ndarray:
+def relative_error(estimate: npt.ArrayLike, exact: npt.ArrayLike, zero_tol: float = 1e-3) -> np.ndarray:
     """|estimate - exact| / |exact| (pass |H| for H, signed K for K), NaN where |exact| < zero_tol · max|exact|.
 
     The thesis plots |real - estimate| / real (Figure 3.5); the real value vanishes on whole circles
     of the torus (H at cos v = -R/(2r), K at v = ±π/2), where the ratio is undefined: those points
     are left out (NaN) and should be reported separately as absolute errors.
     Thesis: §3.4.1, Figures 3.5 and 3.7.
+
+    Parameters
+    ----------
+    estimate : array_like
+        The estimated values.
+    exact : array_like
+        The exact values, same shape, finite.
+    zero_tol : float, default 1e-3
+        Fraction of max|exact| in [0, 1) at or below which |exact| counts as zero.
+
+    Returns
+    -------
+    ndarray of float64
+        The relative error, shape of ``exact``; NaN where |exact| <= zero_tol · max|exact|.
+
+    Raises
+    ------
+    ValueError
+        If the shapes differ, ``exact`` holds NaN or infinite values, or ``zero_tol`` is outside
+        [0, 1).
     """
     est = np.asarray(estimate, dtype=np.float64)
     ex = np.asarray(exact, dtype=np.float64)

@@ -25,24 +25,10 @@ __all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]
 
 
 @njit(cache=True)
-def _edge_codes(s):
-    """:func:`_ridge_codes` for triangles: the two other vertices of each corner, (min, max)."""
-    m = s.shape[0]
-    lo = np.empty(3 * m, dtype=np.int64)
-    hi = np.empty(3 * m, dtype=np.int64)
-    for t in range(m):
-        for i in range(3):
-            a = s[t, (i + 1) % 3]
-            b = s[t, (i + 2) % 3]
-            lo[3 * t + i] = min(a, b)
-            hi[3 * t + i] = max(a, b)
-    return lo, hi
-
-
-@njit(cache=True)
 def _pseudomanifold_kernel(s, lo, key, nv, check_links):
-    """(code, a, b, c, pinched): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+
-    simplices; 3 vertex a pinched between simplices b and c (the first of the ``pinched`` mask).
+    """(code, a, b, c, pinched, boundary): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+
+    simplices; 3 vertex a pinched between simplices b and c (the first of the ``pinched`` mask);
+    ``boundary`` marks the vertices of the ridges in one simplex.
 
     Ridge r = (simplex r // k without its local vertex r % k) has smallest vertex ``lo[r]`` and the
     others encoded injectively in ``key[r]``.
@@ -59,10 +45,11 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
         entries[fill[lo[r]]] = r
         fill[lo[r]] += 1
     parent = np.arange(m * k)
+    boundary = np.zeros(nv, dtype=np.bool_)
     for v in range(nv):
         start, end = counts[v], counts[v + 1]
         size = end - start
-        if size < 2:
+        if size == 0:
             continue
         bucket = entries[start:end]
         if size <= 32:  # insertion sort by key (buckets hold a vertex's few ridges on meshes)
@@ -82,12 +69,17 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
                 y += 1
             run = y - x
             if run > 2:
-                return 2, bucket[x] // k, bucket[x] % k, 0, np.zeros(nv, dtype=np.bool_)
+                return 2, bucket[x] // k, bucket[x] % k, 0, boundary, boundary
+            if run == 1:  # a boundary ridge
+                t1, i1 = bucket[x] // k, bucket[x] % k
+                for j1 in range(k):
+                    if j1 != i1:
+                        boundary[s[t1, j1]] = True
             if run == 2:
                 t1, i1 = bucket[x] // k, bucket[x] % k
                 t2, i2 = bucket[x + 1] // k, bucket[x + 1] % k
                 if s[t1, i1] == s[t2, i2]:
-                    return 1, min(t1, t2), max(t1, t2), 0, np.zeros(nv, dtype=np.bool_)
+                    return 1, min(t1, t2), max(t1, t2), 0, boundary, boundary
                 # glue the corners of the two simplices at each vertex of the common ridge
                 for j1 in range(k):
                     if j1 == i1:
@@ -101,7 +93,7 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
             x = y
     pinched = np.zeros(nv, dtype=np.bool_)
     if not check_links:
-        return 0, 0, 0, 0, pinched
+        return 0, 0, 0, 0, pinched, boundary
     first = np.full(nv, -1, dtype=np.int64)
     where = np.full(nv, -1, dtype=np.int64)
     code, a, b, c = 0, 0, 0, 0
@@ -116,7 +108,7 @@ def _pseudomanifold_kernel(s, lo, key, nv, check_links):
                 pinched[v] = True
                 if code == 0:
                     code, a, b, c = 3, v, where[v], t
-    return code, a, b, c, pinched
+    return code, a, b, c, pinched, boundary
 
 
 def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
@@ -124,7 +116,9 @@ def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
     int64 code of the other ones."""
     m, k = s.shape
     if k == 3:
-        return _edge_codes(s)
+        pairs = [s[:, [1, 2]], s[:, [0, 2]], s[:, [0, 1]]]  # ridge 3t + i omits corner i
+        return (np.stack([p.min(axis=1) for p in pairs], axis=1).ravel(),
+                np.stack([p.max(axis=1) for p in pairs], axis=1).ravel())
     ridges = np.sort(np.stack([np.delete(s, i, axis=1) for i in range(k)], axis=1).reshape(m * k, k - 1), axis=1)
     rest = ridges[:, 1:]
     if rest.shape[1] == 0:
@@ -138,10 +132,13 @@ def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
     return ridges[:, 0], code.ravel().astype(np.int64)
 
 
-def _pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> tuple[int, int, int, int, np.ndarray]:
+def _pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int,
+                    edges: tuple[np.ndarray, np.ndarray] | None = None) -> tuple:
+    """The kernel's (code, a, b, c, pinched, boundary), raising on codes 1 and 2; ``edges`` the
+    triangles' (lo, hi) ridge codes when already known (``TriangleGeometry.edge_lo/edge_hi``)."""
     s = np.ascontiguousarray(simplices, dtype=np.int64)
-    lo, key = _ridge_codes(s, int(n_vertices))
-    code, a, b, c, pinched = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
+    lo, key = _ridge_codes(s, int(n_vertices)) if edges is None else (edges[0].ravel(), edges[1].ravel())
+    code, a, b, c, pinched, boundary = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
     if code == 1:
         raise ValueError(f"simplices {a} and {b} have the same vertices {sorted(s[a].tolist())}: a doubled "
                          "simplex is not a pseudo-manifold")
@@ -149,7 +146,7 @@ def _pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> tuple[
         ridge = sorted(np.delete(s[a], b).tolist())
         raise ValueError(f"the ridge {tuple(ridge)} of simplex {a} lies in three or more top simplices: "
                          "not a pseudo-manifold")
-    return code, a, b, c, pinched
+    return code, a, b, c, pinched, boundary
 
 
 def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> None:
@@ -160,8 +157,10 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
 
     Parameters
     ----------
-    simplices : (m, n + 1) int64 vertex indices in 0..n_vertices-1, no repeated vertex in a row.
-    n_vertices : number of vertices.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Top simplices: vertex indices in 0..n_vertices-1, no repeated vertex in a row (trusted).
+    n_vertices : int
+        Number of vertices.
 
     Raises
     ------
@@ -169,7 +168,7 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
         Naming a repeated simplex, a ridge in three or more simplices, or a pinched vertex (for
         n >= 2: a vertex whose link is disconnected, its star two fans meeting only there).
     """
-    code, a, b, c, _ = _pseudomanifold(simplices, n_vertices)
+    code, a, b, c, _, _ = _pseudomanifold(simplices, n_vertices)
     if code == 3:
         raise ValueError(f"vertex {a} is pinched: its link is disconnected (simplices {b} and {c} meet "
                          "only through it), so it has no single fan; not a pseudo-manifold")
@@ -181,6 +180,20 @@ def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.nd
     Thesis: §3.3 (the estimates sum over the star of a vertex, one fan).  Reconstructions such as
     the Crust of random samples (§3.4.1) have a few; the curvature functions give no estimate (NaN)
     there, as on boundary vertices.
+
+    Parameters
+    ----------
+    simplices : ndarray of int64, shape (m, n + 1)
+        Top simplices with vertex indices in ``range(n_vertices)`` (trusted: validate first, e.g.
+        with :func:`~.validate.validate_mesh`).
+    n_vertices : int
+        Number of vertices nv.
+
+    Returns
+    -------
+    ndarray of bool, shape (nv,)
+        True at the pinched vertices; all False for curves (n = 1), whose vertex links are never
+        checked.
 
     Raises
     ------
@@ -197,18 +210,27 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
 
     Parameters
     ----------
-    vertices : (nv, n + 1) array of points.
-    simplices : (m, n + 1) top simplices (rows in orientation order).
+    vertices : array_like, shape (nv, n + 1)
+        Vertex coordinates, as in :func:`~.validate.validate_mesh`.
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices (rows in orientation order).
 
     Returns
     -------
     Mesh
-        The validated mesh; ``mesh.pinched`` marks the vertices whose star is not one fan.
+        The validated mesh, its ``boundary`` counted; ``mesh.pinched`` marks the vertices whose star
+        is not one fan.
 
     Raises
     ------
     ValueError
         On an invalid mesh, a repeated simplex or a ridge in three or more simplices.
     """
-    mesh = validate_mesh(vertices, simplices)
-    return mesh._replace(pinched=pinched_vertices(mesh.simplices, len(mesh.vertices)))
+    mesh = validate_mesh(vertices, simplices, count_ridges=False)  # ridges are counted below, once
+    edges = None if mesh.tri is None else (mesh.tri.edge_lo, mesh.tri.edge_hi)
+    try:
+        _, _, _, _, pinched, boundary = _pseudomanifold(mesh.simplices, len(mesh.vertices), edges)
+    except ValueError:
+        validate_mesh(vertices, simplices)  # a ridge in three or more simplices: its own message first
+        raise
+    return mesh._replace(boundary=boundary, pinched=pinched)

@@ -19,9 +19,10 @@ every point and H only up to sign; K (n even) does not depend on the sign.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 from scipy.spatial import cKDTree
 
-from .._validate import as_points, check_int
+from .._validate import as_points, check_int, resolve_alias
 from .shape import ShapeOperator
 
 __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS"]
@@ -29,7 +30,8 @@ __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS
 KNN_WEIGHTS = ("uniform", "gaussian")
 
 
-def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> ShapeOperator:
+def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights: str | None = None,
+                       weights: str | None = None) -> ShapeOperator:
     """Least-squares shape operator at every point from its ``k`` nearest neighbours.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (normal curvatures (3.24) fitted by least
@@ -37,17 +39,32 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
 
     Parameters
     ----------
-    points : ``(N, n + 1)`` samples of a hypersurface (n >= 1), no duplicates.
-    k : number of neighbours (at least n (n + 1) / 2 + n, enough to determine S and the normal).
-    weights : ``"uniform"`` or ``"gaussian"`` (exp(−‖x_j − x_i‖² / h²), h the distance to the k-th
-        neighbour).
+    points : array_like, shape (N, n + 1)
+        Samples of a hypersurface (n >= 1), at least 3, finite, no duplicates.
+    k : int, default 16
+        Number of neighbours: at least n (n + 1) / 2 + n (enough to determine S and the normal) and
+        fewer than N.
+    neighbour_weights : {"uniform", "gaussian"}, default "uniform"
+        Weights w_ij of the neighbours in the least-squares fit: ``"gaussian"`` is
+        exp(−‖x_j − x_i‖² / h²), h the distance to the k-th neighbour.
+    weights : str, optional
+        Deprecated alias of ``neighbour_weights`` (FutureWarning; ``weights`` are the points'
+        weights everywhere else).
 
     Returns
     -------
     ShapeOperator
         ``tensor`` (N, n, n) symmetric S in the tangent ``basis`` (N, n, n + 1), and the unit
         ``normal`` (N, n + 1) (sign arbitrary: S changes sign with it).
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, points in R^1, a ``k`` out of range or unknown
+        ``neighbour_weights``.
     """
+    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
+                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
     pts = as_points(points, min_points=3, allow_duplicates=False)
     npts, d = pts.shape
     n = d - 1
@@ -57,8 +74,8 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
     k = check_int(k, "k", minimum=need)
     if k >= npts:
         raise ValueError(f"k = {k} neighbours need more than {k} points, got {npts}")
-    if weights not in KNN_WEIGHTS:
-        raise ValueError(f"weights must be one of {KNN_WEIGHTS}, got {weights!r}")
+    if not isinstance(neighbour_weights, str) or neighbour_weights not in KNN_WEIGHTS:
+        raise ValueError(f"neighbour_weights must be one of {KNN_WEIGHTS}, got {neighbour_weights!r}")
     dist, nb = cKDTree(pts).query(pts, k=k + 1)
     diff = pts[nb[:, 1:]] - pts[:, None, :]  # (N, k, d): x_j - x_i
     centred = pts[nb] - pts[nb].mean(axis=1, keepdims=True)
@@ -74,7 +91,7 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
     iu = np.triu_indices(n)
     scale = np.where(iu[0] == iu[1], 1.0, np.sqrt(2.0))
     phi = coords[:, :, iu[0]] * coords[:, :, iu[1]] * scale  # (N, k, n(n+1)/2)
-    if weights == "gaussian":
+    if neighbour_weights == "gaussian":
         h2 = dist[:, -1:] ** 2
         w = np.exp(-dist[:, 1:] ** 2 / h2)
     else:
@@ -88,17 +105,39 @@ def knn_shape_operator(points, *, k: int = 16, weights: str = "uniform") -> Shap
     return ShapeOperator(tensor, basis, normal)
 
 
-def knn_curvature(points, *, kind: str = "mean", k: int = 16, weights: str = "uniform") -> np.ndarray:
+def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, neighbour_weights: str | None = None,
+                  weights: str | None = None) -> np.ndarray:
     """|H| = |tr S| / n (``kind="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
     :func:`knn_shape_operator`.
 
     Thesis: §3.3.4 (the shape operator's trace and determinant: H = tr S / n, K = det S).
 
+    Parameters
+    ----------
+    points : array_like, shape (N, n + 1)
+        Samples of a hypersurface (n >= 1), at least 3, finite, no duplicates.
+    kind : {"mean", "gaussian"}, default "mean"
+        Which curvature; ``"gaussian"`` needs n = 2.
+    k : int, default 16
+        Number of neighbours, as in :func:`knn_shape_operator`.
+    neighbour_weights : {"uniform", "gaussian"}, default "uniform"
+        Weights of the neighbours in the fit, as in :func:`knn_shape_operator`.
+    weights : str, optional
+        Deprecated alias of ``neighbour_weights`` (FutureWarning).
+
     Returns
     -------
-    ndarray, shape (N,)
+    ndarray of float64, shape (N,)
+        |H| (unsigned, the normal's sign being arbitrary) or K at each point.
+
+    Raises
+    ------
+    ValueError
+        As :func:`knn_shape_operator`; also on an unknown ``kind`` or ``"gaussian"`` with n ≠ 2.
     """
-    so = knn_shape_operator(points, k=k, weights=weights)
+    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
+                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
+    so = knn_shape_operator(points, k=k, neighbour_weights=neighbour_weights)
     n = so.tensor.shape[1]
     if kind == "mean":
         return np.abs(np.trace(so.tensor, axis1=1, axis2=2)) / n
@@ -109,12 +148,31 @@ def knn_curvature(points, *, kind: str = "mean", k: int = 16, weights: str = "un
     raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
 
 
-def neighbour_mean(points, values, *, k: int = 16) -> np.ndarray:
+def neighbour_mean(points: npt.ArrayLike, values: npt.ArrayLike, *, k: int = 16) -> np.ndarray:
     """The mean of ``values`` over each point and its ``k - 1`` nearest neighbours: a local average
     of a noisy per-point curvature estimate.
 
     Thesis: §3.3.1–§3.3.2 (an integrated curvature is turned into a value at p by averaging over a
     region around p).
+
+    Parameters
+    ----------
+    points : array_like, shape (N, d)
+        The points.
+    values : array_like, shape (N,)
+        One value per point.
+    k : int, default 16
+        Size of each neighbourhood, the point itself included; 1 <= k <= N.
+
+    Returns
+    -------
+    ndarray of float64, shape (N,)
+        The mean of ``values`` over each point's k nearest points (itself among them).
+
+    Raises
+    ------
+    ValueError
+        On invalid points, ``values`` not of shape (N,), or ``k`` out of range.
     """
     pts = as_points(points)
     v = np.asarray(values, dtype=np.float64)

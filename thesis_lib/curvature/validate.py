@@ -21,6 +21,7 @@ from math import factorial
 from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
 
 from ..jit import njit
 
@@ -52,15 +53,23 @@ class TriangleGeometry(NamedTuple):
     edge_sq: np.ndarray  #: (3, m)
     twice_area: np.ndarray  #: (m,)
     coords: np.ndarray  #: (3 corners, 3 coordinates, m) vertex coordinates
+    edge_lo: np.ndarray  #: (m, 3) smaller vertex of the edge opposite corner k (raveled: ridge 3t + k)
+    edge_hi: np.ndarray  #: (m, 3) larger vertex of that edge
 
 
 @njit(cache=True)
-def _triangle_kernel(v, s, dot, sq, twice, pts, keys, nv):  # pragma: no cover - compiled
+def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cover - compiled
+    """Fill the corner data; return (first simplex with a repeated vertex, first degenerate one,
+    number of degenerate ones), -1 for none (area <= rtol * longest edge², as in validate_mesh)."""
     m = s.shape[0]
+    first_repeated, first_degenerate, n_degenerate = -1, -1, 0
     for t in range(m):
-        for k in range(3):  # key lo * nv + hi of the edge opposite corner k
+        if first_repeated < 0 and (s[t, 0] == s[t, 1] or s[t, 1] == s[t, 2] or s[t, 0] == s[t, 2]):
+            first_repeated = t
+        for k in range(3):  # the edge opposite corner k is ridge 3t + k: its vertices (min, max)
             i, j = s[t, (k + 1) % 3], s[t, (k + 2) % 3]
-            keys[k * m + t] = min(i, j) * nv + max(i, j)
+            lo[t, k] = min(i, j)
+            hi[t, k] = max(i, j)
         for k in range(3):
             for a in range(3):
                 pts[k, a, t] = v[s[t, k], a]
@@ -87,25 +96,44 @@ def _triangle_kernel(v, s, dot, sq, twice, pts, keys, nv):  # pragma: no cover -
         cy = e1z * e2x - e1x * e2z
         cz = e1x * e2y - e1y * e2x
         twice[t] = np.sqrt(cx * cx + cy * cy + cz * cz)
+        if 0.5 * twice[t] <= rtol * max(s0, s1, s2):
+            n_degenerate += 1
+            if first_degenerate < 0:
+                first_degenerate = t
+    return first_repeated, first_degenerate, n_degenerate
 
 
 def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
     """Corner dot products, squared opposite edge lengths and twice the areas of triangles in R^3.
 
-    One compiled pass over the triangles (numba); ``v`` float64 (nv, 3), ``s`` int64 (m, 3), in range.
+    One compiled pass over the triangles (numba); no validation.
+    Thesis: Theorem 3.18 and §3.3.2 (the Gram matrices and corner cotangents of triangles).
+
+    Parameters
+    ----------
+    v : ndarray of float64, shape (nv, 3)
+        Vertex coordinates.
+    s : ndarray of int64, shape (m, 3)
+        Triangles, vertex indices in range (trusted).
+
+    Returns
+    -------
+    TriangleGeometry
+        ``dot`` and ``edge_sq`` (3, m), ``twice_area`` (m,), the corner ``coords`` (3, 3, m), and
+        ``edge_lo``, ``edge_hi`` (m, 3), the ends of the edge opposite each corner.
     """
-    geometry, _ = _triangle_geometry_and_keys(v, s)
-    return geometry
+    return _checked_triangle_geometry(v, s)[0]
 
 
-def _triangle_geometry_and_keys(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeometry, np.ndarray]:
-    """:func:`triangle_geometry` plus the edge keys lo * nv + hi (corner-major), needs nv^2 < 2^62."""
+def _checked_triangle_geometry(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeometry, int, int, int]:
+    """:func:`triangle_geometry` and the kernel's (first repeated, first degenerate, count degenerate)."""
     m = len(s)
     dot, sq = np.empty((3, m)), np.empty((3, m))
     twice, pts = np.empty(m), np.empty((3, 3, m))
-    keys = np.empty(3 * m, dtype=np.int64)
-    _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts, keys, len(v))
-    return TriangleGeometry(dot, sq, twice, pts), keys
+    lo, hi = np.empty((m, 3), dtype=np.int64), np.empty((m, 3), dtype=np.int64)
+    checks = _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts, lo, hi,
+                              DEGENERATE_RTOL)
+    return (TriangleGeometry(dot, sq, twice, pts, lo, hi), *checks)
 
 
 class Mesh(NamedTuple):
@@ -114,7 +142,7 @@ class Mesh(NamedTuple):
     vertices: np.ndarray  #: ``(nv, n + 1)`` float64
     simplices: np.ndarray  #: ``(m, n + 1)`` int64, rows in the given (oriented) order
     areas: np.ndarray  #: ``(m,)`` hyperarea of each top simplex
-    boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge
+    boundary: np.ndarray  #: ``(nv,)`` bool, vertex lies on a boundary ridge (None: not counted yet)
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
     tri: TriangleGeometry | None = None  #: per-corner data when n = 2, else None
     pinched: np.ndarray | None = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
@@ -136,6 +164,18 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
 
     Thesis: Theorem 3.18 (the Gram determinant G^2 = det(G-hat), G = n! A).
     No validation: use on arrays that passed :func:`validate_mesh`.
+
+    Parameters
+    ----------
+    vertices : ndarray of float64, shape (nv, d)
+        Vertex coordinates.
+    simplices : ndarray of int, shape (m, n + 1)
+        Simplices (vertex indices in range), d >= n.
+
+    Returns
+    -------
+    ndarray of float64, shape (m,)
+        The n-dimensional hyperarea of each simplex (1 for n = 0).
     """
     p = vertices[simplices]
     n = simplices.shape[1] - 1
@@ -195,25 +235,46 @@ def _rows(keys: np.ndarray, nv: int, width: int, integral: bool) -> np.ndarray:
     return np.frombuffer(np.ascontiguousarray(keys).tobytes(), dtype=np.int64).reshape(-1, width)
 
 
-def ridges(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
+def ridges(simplices: npt.ArrayLike, nv: int) -> tuple[np.ndarray, np.ndarray]:
     """The ridges ((n-1)-faces) of the top simplices and how many top simplices hold each.
 
     Thesis: §3.3 (a triangulated hypersurface: every ridge in one or two top simplices).
 
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices, vertex indices in ``range(nv)`` (trusted).
+    nv : int
+        Number of vertices.
+
     Returns
     -------
-    (ridges, counts)
-        ``ridges`` is ``(r, n)`` with sorted rows, ``counts`` is ``(r,)``.
+    ridges : ndarray of int64, shape (r, n)
+        The distinct ridges, rows sorted.
+    counts : ndarray of int, shape (r,)
+        How many top simplices hold each ridge.
     """
     simplices = np.asarray(simplices, dtype=np.int64)
     keys, counts, integral = _ridge_counts(simplices, nv)
     return _rows(keys, nv, simplices.shape[1] - 1, integral), counts
 
 
-def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
+def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     """Boolean mask of the vertices on a boundary ridge (a ridge lying in one top simplex).
 
     Thesis: §3.1.2 (Theorem 3.5: surfaces with boundary carry a boundary term).
+
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, n + 1)
+        Top simplices of a validated mesh (trusted, as in :func:`ridges`).
+    nv : int
+        Number of vertices: the length of the mask.
+
+    Returns
+    -------
+    ndarray of bool, shape (nv,)
+        True at the vertices of the ridges that lie in exactly one top simplex.
     """
     r, counts = ridges(np.asarray(simplices, dtype=np.int64), nv)
     mask = np.zeros(nv, dtype=bool)
@@ -221,7 +282,7 @@ def boundary_vertices(simplices: np.ndarray, nv: int) -> np.ndarray:
     return mask
 
 
-def validate_mesh(vertices, simplices) -> Mesh:
+def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ridges: bool = True) -> Mesh:
     """Check a triangulated hypersurface and return it as a ``Mesh``.
 
     Thesis: Definition 3.13 (a triangulated hypersurface M of dimension n in R^{n+1}).
@@ -232,6 +293,18 @@ def validate_mesh(vertices, simplices) -> Mesh:
         Vertex coordinates.
     simplices : array_like of int, shape (m, n + 1)
         Top simplices (rows in orientation order).
+    count_ridges : bool, default True
+        Count the top simplices at each ridge: raise on a ridge in three or more and mark the
+        boundary vertices.  ``False`` leaves ``boundary`` None, for a caller that counts them in its
+        own pass (:func:`~.manifold.checked_mesh`).
+
+    Returns
+    -------
+    Mesh
+        The vertices (float64) and simplices (int64, rows as given), the hyperarea of each simplex,
+        the boundary (None without ``count_ridges``) and isolated vertex masks, and for n = 2 the
+        per-corner :class:`TriangleGeometry`; ``pinched`` is left None (see
+        :func:`~.manifold.checked_mesh`).
 
     Raises
     ------
@@ -271,24 +344,15 @@ def validate_mesh(vertices, simplices) -> Mesh:
     if lo < 0 or hi >= nv:
         bad = int(np.flatnonzero(np.any((s < 0) | (s >= nv), axis=1))[0])
         raise ValueError(f"simplex {bad} {s[bad].tolist()} has a vertex index outside 0..{nv - 1}")
-    if d == 3:
-        rep = (s[:, 0] == s[:, 1]) | (s[:, 1] == s[:, 2]) | (s[:, 0] == s[:, 2])
+    n = d - 1
+    tri = None
+    if n == 2:  # one compiled pass: geometry, repeated vertices, degenerate triangles
+        tri, repeated, degenerate, n_degenerate = _checked_triangle_geometry(v, s)
+        areas = 0.5 * tri.twice_area
     else:
         ss = np.sort(s, axis=1)
-        rep = np.any(ss[:, 1:] == ss[:, :-1], axis=1)
-    if rep.any():
-        bad = int(np.flatnonzero(rep)[0])
-        raise ValueError(f"simplex {bad} {s[bad].tolist()} has a repeated vertex")
-    n = d - 1
-    tri, key = None, None
-    if n == 2:
-        if float(nv) ** 2 < 2.0**62:
-            tri, key = _triangle_geometry_and_keys(v, s)  # edge keys from the same compiled pass
-        else:
-            tri = triangle_geometry(v, s)
-        areas = 0.5 * tri.twice_area
-        longest = np.sqrt(np.maximum(np.maximum(tri.edge_sq[0], tri.edge_sq[1]), tri.edge_sq[2]))
-    else:
+        rep = np.flatnonzero(np.any(ss[:, 1:] == ss[:, :-1], axis=1))
+        repeated = int(rep[0]) if rep.size else -1
         areas = simplex_hyperareas(v, s)
         p = v[s]
         longest_sq = np.zeros(len(s))
@@ -296,18 +360,27 @@ def validate_mesh(vertices, simplices) -> Mesh:
             for j in range(i):
                 e = p[:, i] - p[:, j]
                 np.maximum(longest_sq, np.einsum("ma,ma->m", e, e), out=longest_sq)
-        longest = np.sqrt(longest_sq)
-    degenerate = areas <= DEGENERATE_RTOL * longest**n
-    if degenerate.any():
-        bad = int(np.flatnonzero(degenerate)[0])
+        flat = np.flatnonzero(areas <= DEGENERATE_RTOL * np.sqrt(longest_sq) ** n)
+        degenerate, n_degenerate = (int(flat[0]) if flat.size else -1), flat.size
+    if repeated >= 0:
+        raise ValueError(f"simplex {repeated} {s[repeated].tolist()} has a repeated vertex")
+    if degenerate >= 0:
         raise ValueError(
-            f"simplex {bad} {s[bad].tolist()} is degenerate (hyperarea {areas[bad]:.3g}); "
-            f"{int(degenerate.sum())} degenerate simplices in all"
+            f"simplex {degenerate} {s[degenerate].tolist()} is degenerate (hyperarea {areas[degenerate]:.3g}); "
+            f"{n_degenerate} degenerate simplices in all"
         )
-    if key is None:
-        key, integral = _ridge_keys(s, nv)
+    isolated = np.ones(nv, dtype=bool)
+    isolated[s.ravel()] = False
+    return Mesh(v, s, areas, _boundary(s, nv, tri) if count_ridges else None, isolated, tri)
+
+
+def _boundary(s: np.ndarray, nv: int, tri: TriangleGeometry | None) -> np.ndarray:
+    """Boundary-vertex mask; raises ``ValueError`` on a ridge in three or more top simplices."""
+    n = s.shape[1] - 1
+    if tri is not None and float(nv) ** 2 < 2.0**62:  # the edges from the compiled pass
+        key, integral = (tri.edge_lo * nv + tri.edge_hi).ravel(), True
     else:
-        integral = True
+        key, integral = _ridge_keys(s, nv)
     ks = np.sort(key)
     eq = ks[1:] == ks[:-1]  # a ridge in k simplices gives a run of k equal keys
     triple = eq[1:] & eq[:-1]
@@ -325,16 +398,24 @@ def validate_mesh(vertices, simplices) -> Mesh:
     boundary = np.zeros(nv, dtype=bool)
     if single.any():
         boundary[_rows(ks[single], nv, n, integral).ravel()] = True
-    isolated = np.ones(nv, dtype=bool)
-    isolated[s.ravel()] = False
-    return Mesh(v, s, areas, boundary, isolated, tri)
+    return boundary
 
 
-def check_orientation(simplices: np.ndarray) -> None:
+def check_orientation(simplices: npt.ArrayLike) -> None:
     """Raise ``ValueError`` if neighbouring simplices are not coherently oriented.
 
     Thesis: §3.1.1 (the normal N = X_u ∧ X_v / W needs an orientation); for n = 2 two faces
     sharing an edge must traverse it in opposite directions.
+
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, 3)
+        Triangles with non-negative vertex indices, rows in orientation order.
+
+    Raises
+    ------
+    ValueError
+        If two faces traverse an edge in the same direction, or the simplices are not triangles.
     """
     s = np.asarray(simplices, dtype=np.int64)
     if s.shape[1] != 3:

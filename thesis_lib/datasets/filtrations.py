@@ -40,6 +40,11 @@ def example_filtration() -> Filtration:
     (deg c_j = deg z_i + β_ij): a, b enter at 0; c, d, ab, cd at 1; e, da, bc at 2; ed, ce at 3;
     ced at 4.  Within a dimension the simplices are listed in the thesis's order
     (a, b, c, d, e; ab, cd, da, bc, ed, ce; ced).
+
+    Returns
+    -------
+    Filtration
+        The 12 simplices with their entry times 0..4, in the thesis's order.
     """
     a, b, c, d, e = range(5)
     pairs = [
@@ -64,9 +69,24 @@ def named_chain(terms: Mapping[str, int], names: str = EXAMPLE_NAMES) -> dict[tu
 
     Thesis: Definition 2.17 ([x_0, ..., x_p] = −[x_τ(0), ..., x_τ(p)] for an odd permutation τ).
 
-    ``terms`` maps oriented simplices named by their vertices (``"da"`` is the edge from d to a) to
-    coefficients; ``names[i]`` is the name of vertex ``i``.  ``named_chain({"da": 1})`` is
-    ``{(0, 3): -1}`` since [d, a] = −[a, d].
+    Parameters
+    ----------
+    terms : mapping of str to int
+        Oriented simplices named by their vertices (``"da"`` is the edge from d to a) to integer
+        coefficients.
+    names : str, default "abcde"
+        ``names[i]`` is the one-letter name of vertex ``i`` (``EXAMPLE_NAMES``, Figure 2.11).
+
+    Returns
+    -------
+    dict of tuple to int
+        The chain on ascending simplices, the signs of odd orderings applied and terms that cancel
+        dropped: ``named_chain({"da": 1})`` is ``{(0, 3): -1}`` since [d, a] = −[a, d].
+
+    Raises
+    ------
+    ValueError
+        A letter not in ``names``, or a repeated vertex.
     """
     chain: dict[tuple[int, ...], int] = {}
     for word, coefficient in terms.items():
@@ -131,6 +151,19 @@ def dense_filtration(n_vertices: int, *, seed: int) -> Filtration:
 
     Thesis: Algorithm 2 / Summary (ComputeIntervals is O(m³) in the number m of simplices): a dense
     input for measuring how the work of the algorithm grows; m = n + C(n, 2) + C(n, 3).
+
+    Parameters
+    ----------
+    n_vertices : int
+        n ≥ 3.
+    seed : int
+        The random order of the edges and of the triangles.
+
+    Returns
+    -------
+    Filtration
+        Vertices at 0, then edges at 1, 2, ..., then triangles, one value each (every edge before
+        every triangle, so faces always come first).
     """
     n = check_int(n_vertices, "n_vertices", minimum=3)
     rng = np.random.default_rng(check_seed(seed))

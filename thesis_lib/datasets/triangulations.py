@@ -25,8 +25,16 @@ def rp2(oriented: bool = False) -> list[tuple[int, ...]]:
 
     Thesis: Example 2.21 / Figure 2.7 (columns abd, adf, afc, bcd, ced, cae, abe, bfe, bcf, def).
 
-    With ``oriented=True`` the triangles keep the thesis's vertex order, i.e. the clockwise
-    orientation of Figure 2.7 that produces the signs of M_2; otherwise they are sorted.
+    Parameters
+    ----------
+    oriented : bool, default False
+        Keep the thesis's vertex order in each triangle, i.e. the clockwise orientation of
+        Figure 2.7 that produces the signs of M_2; otherwise the vertices are sorted.
+
+    Returns
+    -------
+    list of tuple
+        The 10 triangles in the order of the columns of M_2.
     """
     tris = [tuple(RP2_LABELS.index(c) for c in name) for name in _RP2_ORIENTED]
     return tris if oriented else [tuple(sorted(t)) for t in tris]
@@ -37,6 +45,11 @@ def torus() -> list[tuple[int, ...]]:
 
     Thesis: §2.4 / Figure 2.16 (the torus has β = 1, 2, 1; here H_0 = Z, H_1 = Z², H_2 = Z).
     Every pair of the 7 vertices is an edge (21 edges, 14 triangles).
+
+    Returns
+    -------
+    list of tuple
+        The 14 triangles, sorted.
     """
     tris = [(i, (i + 1) % 7, (i + 3) % 7) for i in range(7)]
     tris += [(i, (i + 2) % 7, (i + 3) % 7) for i in range(7)]
@@ -63,7 +76,22 @@ def klein_bottle(n: int = 4, m: int = 4) -> list[tuple[int, ...]]:
     """A triangulated Klein bottle: an ``n × m`` grid of split squares with one side pair reversed.
 
     Thesis: §2.2.1, "Arbitrary Coefficients" (H_1 = Z ⊕ Z_2 has torsion; over Z_2, β = 1, 2, 1).
-    ``n, m >= 3`` (``n * m`` vertices, ``2 n m`` triangles).
+
+    Parameters
+    ----------
+    n, m : int, default 4
+        Squares along the glued-with-a-twist direction and along the other; both at least 3, so
+        that the complex is simplicial (``n * m`` vertices, ``2 n m`` triangles).
+
+    Returns
+    -------
+    list of tuple
+        The triangles, sorted.
+
+    Raises
+    ------
+    ValueError
+        ``n`` or ``m`` not an integer ≥ 3.
     """
     for name, v in (("n", n), ("m", m)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or v < 3:
@@ -78,6 +106,11 @@ def dunce_hat() -> list[tuple[int, ...]]:
     classic contractible complex that admits no collapse).  Vertices 0, 1, 2 lie on the glued edge
     0–1–2–0 (each of its 3 edges is in 3 triangles); every other edge is in exactly 2 triangles.
     Found by link-condition edge contractions of a subdivided triangle with sides a, a, a⁻¹ glued.
+
+    Returns
+    -------
+    list of tuple
+        The 17 triangles, sorted.
     """
     return [
         (0, 1, 3), (0, 1, 4), (0, 1, 7), (0, 2, 4), (0, 2, 5), (0, 2, 6), (0, 3, 7), (0, 5, 6),
@@ -90,6 +123,21 @@ def sphere(n: int) -> list[tuple[int, ...]]:
     """The n-sphere as the boundary of the (n+1)-simplex on vertices 0..n+1 (n + 2 facets).
 
     Thesis: Definition 2.1 (a simplex and its faces); H_0 = H_n = Z, all else 0 (H_0 = Z² for n = 0).
+
+    Parameters
+    ----------
+    n : int
+        The dimension, n ≥ 0.
+
+    Returns
+    -------
+    list of tuple
+        The n + 2 facets, the n-faces of the simplex on 0..n+1, in lexicographic order.
+
+    Raises
+    ------
+    ValueError
+        ``n`` not a non-negative integer.
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
         raise ValueError(f"n must be a non-negative integer, got {n!r}")

@@ -4,12 +4,22 @@ from __future__ import annotations
 
 import os
 import warnings
+from types import ModuleType
 
 __all__ = ["pyvista_offscreen"]
 
 
-def pyvista_offscreen():
-    """Return the ``pyvista`` module set up to render off-screen through EGL into static images."""
+def pyvista_offscreen() -> ModuleType:
+    """Return the ``pyvista`` module set up to render off-screen through EGL into static images.
+
+    Sets ``VTK_DEFAULT_OPENGL_WINDOW`` (unless already set), ``pyvista.OFF_SCREEN``, the static
+    Jupyter backend and a 900 × 700 window on the global theme: a side effect on the process.
+
+    Returns
+    -------
+    types.ModuleType
+        The imported ``pyvista`` module, configured.
+    """
     os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
     with warnings.catch_warnings():
         # pyvista imports tqdm.auto, which warns (with this machine's path) when ipywidgets is absent;

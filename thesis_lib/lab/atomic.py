@@ -33,6 +33,17 @@ def replacing(path: str | Path) -> Iterator[Path]:
     """A temporary file path beside ``path``; once the body succeeds it replaces ``path`` in one step.
 
     If the body raises (or the process dies), ``path`` is left exactly as it was.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file to write; its parent folders are created.
+
+    Yields
+    ------
+    pathlib.Path
+        A hidden temporary sibling of ``path`` (named with this process's id) for the body to write;
+        it is renamed over ``path`` on success and removed otherwise.
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -45,7 +56,20 @@ def replacing(path: str | Path) -> Iterator[Path]:
 
 
 def write_bytes(path: str | Path, data: bytes) -> Path:
-    """Write ``data`` to ``path`` atomically (a reader sees the old file or the new one, never a part)."""
+    """Write ``data`` to ``path`` atomically (a reader sees the old file or the new one, never a part).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file to write; its parent folders are created.
+    data : bytes
+        The new contents, flushed to disk (``fsync``) before the rename.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     with replacing(path) as tmp:
         with open(tmp, "wb") as fh:
             fh.write(data)
@@ -55,7 +79,20 @@ def write_bytes(path: str | Path, data: bytes) -> Path:
 
 
 def write_text(path: str | Path, text: str) -> Path:
-    """Write ``text`` (UTF-8) to ``path`` atomically."""
+    """:func:`write_bytes` of ``text`` encoded as UTF-8.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        As for :func:`write_bytes`.
+    text : str
+        The new contents.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
+    """
     return write_bytes(path, text.encode("utf-8"))
 
 
@@ -78,7 +115,20 @@ def _exchange(a: Path, b: Path) -> bool:
 
 
 def replace_dir(new: str | Path, target: str | Path) -> None:
-    """Put folder ``new`` in place of ``target`` (created or replaced) in one step; ``new`` is consumed."""
+    """Put folder ``new`` in place of ``target`` (created or replaced) in one step; ``new`` is consumed.
+
+    Parameters
+    ----------
+    new : str or pathlib.Path
+        The folder with the new contents, on the same file system as ``target``.
+    target : str or pathlib.Path
+        The folder to create or replace; its old contents are deleted once the new are in place.
+
+    Raises
+    ------
+    OSError
+        If a rename (or ``renameat2``, other than for lack of support) fails.
+    """
     new, target = Path(new), Path(target)
     if not target.exists():
         os.rename(new, target)
@@ -93,7 +143,14 @@ def replace_dir(new: str | Path, target: str | Path) -> None:
 
 
 def recover(target: str | Path) -> None:
-    """Undo an interrupted two-rename :func:`replace_dir`: put the old folder back if ``target`` is gone."""
+    """Undo an interrupted two-rename :func:`replace_dir`: put the old folder back if ``target`` is gone.
+
+    Parameters
+    ----------
+    target : str or pathlib.Path
+        The folder that was being replaced.  Nothing happens if it exists; otherwise the first (by
+        name) ``.old-`` sibling whose writer process is gone is renamed back to it.
+    """
     target = Path(target)
     if target.exists():
         return
@@ -109,6 +166,17 @@ def staging(target: str | Path) -> Iterator[Path]:
 
     If the body raises (or the process is interrupted), ``target`` is left exactly as it was and the
     temporary folder is removed.
+
+    Parameters
+    ----------
+    target : str or pathlib.Path
+        The folder to create or replace; its parent folders are created and an interrupted earlier
+        replacement is first undone (:func:`recover`).
+
+    Yields
+    ------
+    pathlib.Path
+        An empty hidden temporary folder beside ``target`` for the body to fill.
     """
     target = Path(target)
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -138,7 +206,18 @@ def _writer_alive(name: str) -> bool:
 
 
 def clean_stale(folder: str | Path) -> list[Path]:
-    """Remove temporary siblings in ``folder`` left by writers that died; returns what was removed."""
+    """Remove temporary siblings in ``folder`` left by writers that died.
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The folder to clean; a missing folder is not an error.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files and folders removed (hidden ``.tmp-`` siblings whose writer process is gone).
+    """
     folder = Path(folder)
     removed = []
     if not folder.is_dir():

@@ -9,12 +9,19 @@ number of rounds is ``rounds``.  Older files are a bare list of rows (no provena
 from __future__ import annotations
 
 import json
+from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from .paths import repo_root
 from .tables import markdown_table
+
+if TYPE_CHECKING:  # matplotlib is imported only when a figure is drawn
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
 __all__ = ["topics", "load", "meta", "markdown", "ratios", "fit_exponent", "ratio_figure", "scaling_figure",
            "provenance"]
@@ -29,7 +36,13 @@ def _dir() -> Path:
 
 
 def topics() -> list[str]:
-    """Benchmarks with stored full results (``--quick`` smoke runs and partial runs are left out)."""
+    """Benchmarks with stored full results (``--quick`` smoke runs and partial runs are left out).
+
+    Returns
+    -------
+    list of str
+        The topics (file stems of ``benchmarks/results/*.json``), sorted.
+    """
     return sorted(p.stem for p in _dir().glob("*.json")
                   if not p.stem.replace("-", "_").endswith(("_quick", "_partial")))
 
@@ -42,7 +55,25 @@ def _read(topic: str):
 
 
 def load(topic: str) -> list[dict]:
-    """Rows of one benchmark (a list of flat dicts), as ``make bench`` stored them."""
+    """Rows of one benchmark (a list of flat dicts), as ``make bench`` stored them.
+
+    Parameters
+    ----------
+    topic : str
+        The benchmark's name (``benchmarks/results/<topic>.json``).
+
+    Returns
+    -------
+    list of dict
+        The stored rows, in stored order.
+
+    Raises
+    ------
+    FileNotFoundError
+        If no results of ``topic`` are stored.
+    ValueError
+        If the file does not hold a list of dicts.
+    """
     path, data = _read(topic)
     rows = data["rows"] if isinstance(data, dict) else data
     if not isinstance(rows, list) or not all(isinstance(r, dict) for r in rows):
@@ -51,27 +82,86 @@ def load(topic: str) -> list[dict]:
 
 
 def meta(topic: str) -> dict:
-    """Where and when the stored run was made (commit, date, load average, cores); {} for old files."""
+    """Where and when the stored run was made (commit, date, load average, cores).
+
+    Parameters
+    ----------
+    topic : str
+        Whose stored run to describe.
+
+    Returns
+    -------
+    dict
+        The file's ``meta`` table; ``{}`` for an older file (a bare list of rows).
+
+    Raises
+    ------
+    FileNotFoundError
+        If no results of ``topic`` are stored.
+    """
     _, data = _read(topic)
     return data.get("meta", {}) if isinstance(data, dict) else {}
 
 
 def provenance(topic: str) -> str:
-    """One sentence saying where the stored figures of ``topic`` come from."""
+    """One sentence saying where the stored figures of ``topic`` come from.
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark to describe in one sentence.
+
+    Returns
+    -------
+    str
+        Commit, date, cores and the load average at the start and end of the run, in Markdown (and
+        the same for each row re-run later, which carries its own run); for an older file without
+        provenance, a sentence saying so.
+    """
     m = meta(topic)
     if not m:
         return f"`{topic}`: stored without provenance (an older harness): re-run `make bench`."
     load_avg = m.get("load_average", [None])[0]
     end = m.get("load_average_end", [None])[0]
-    return (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "
+    text = (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "
             f"load average {load_avg} at the start and {end} at the end of the run.")
+    for row in load(topic):
+        run = row.get("run")
+        if isinstance(run, dict):  # a row re-run later (harness --update) carries its own run
+            text += (f" Row `{row.get('case')}`: commit `{str(run.get('commit'))[:10]}`, {run.get('date')}, "
+                     f"load average {(run.get('load_average') or [None])[0]} at the start and "
+                     f"{(run.get('load_average_end') or [None])[0]} at the end.")
+    return text
 
 
 def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
-             where=None) -> str:
-    """One benchmark as a Markdown table: the given ``columns``, or all in first-seen order; only the
-    rows of ``cases`` when given (those stored), and with ``where`` (a predicate on a row) only the
-    rows it accepts."""
+             where: Callable[[dict], bool] | None = None) -> str:
+    """One benchmark as a Markdown table.
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark to show (as in ``load``).
+    columns : list of str, optional
+        The columns, in order; by default every scalar (not list or dict) column, in first-seen order.
+    cases : list of str, optional
+        Only the rows whose ``case`` is one of these (those stored); by default every row.
+    where : callable, optional
+        A predicate on a row (a dict): only the rows it accepts.
+
+    Returns
+    -------
+    str
+        The Markdown table (floats to 3 significant digits, missing cells empty), ending with a
+        newline; an italic line saying so when no row is left.
+
+    Raises
+    ------
+    ValueError
+        If a named column is in none of the rows.
+    FileNotFoundError
+        If no results of ``topic`` are stored.
+    """
     rows = [r for r in load(topic)
             if (cases is None or r.get("case") in cases) and (where is None or where(r))]
     if not rows:
@@ -88,7 +178,21 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
 
 
 def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:
-    """``(case, peer, ratio, rounds)`` for every ``ratio_<peer>`` of the stored rows (or of ``cases``)."""
+    """``(case, peer, ratio, rounds)`` for every ``ratio_<peer>`` of the stored rows (or of ``cases``).
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark whose ratios are read.
+    cases : list of str, optional
+        Only the rows whose ``case`` is one of these; by default every row.
+
+    Returns
+    -------
+    list of tuple (str, str, float, int)
+        One entry per numeric ``ratio_<peer>`` key, in row order: the case, the peer key, the ratio
+        (ours / peer) and the row's ``rounds`` (0 when not stored).
+    """
     out = []
     for row in load(topic):
         if cases is not None and row.get("case") not in cases:
@@ -99,18 +203,56 @@ def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, f
     return out
 
 
-def fit_exponent(x, y) -> float:
-    """The exponent a of y ≈ c · x^a, by least squares on log y against log x."""
+def fit_exponent(x: npt.ArrayLike, y: npt.ArrayLike) -> float:
+    """The exponent a of y ≈ c · x^a, by least squares on log y against log x.
+
+    Parameters
+    ----------
+    x, y : array_like, shape (n,)
+        The sizes and the measurements; positive, ``n >= 2``, the same shape.
+
+    Returns
+    -------
+    float
+        The slope of the least-squares line through ``(log x, log y)``.
+
+    Raises
+    ------
+    ValueError
+        If the shapes differ, there are fewer than two points, or a value is not positive.
+    """
     x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
     if x.shape != y.shape or x.size < 2 or (x <= 0).any() or (y <= 0).any():
         raise ValueError("need at least two positive (x, y) points of the same length")
     return float(np.polyfit(np.log(x), np.log(y), 1)[0])
 
 
-def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | None = None, ax=None):
+def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | None = None,
+                 ax: Axes | None = None) -> Figure:
     """Horizontal bars of ours / peer per workload (log scale, 1 marked): one group per case.
 
     The ratios are the stored medians of paired ratios; each label names the peer and the rounds.
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark to draw.
+    cases : list of str, optional
+        Only these cases; by default every stored case.
+    peers : list of str, optional
+        Only the ratios against these peer keys (``"ripser"``, ``"gudhi"``, ...); by default all.
+    ax : matplotlib.axes.Axes, optional
+        The axes to draw on; by default a new figure sized to the number of bars.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure of ``ax``.
+
+    Raises
+    ------
+    ValueError
+        If no ratio is left to draw.
     """
     import matplotlib.pyplot as plt
 
@@ -144,11 +286,34 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
     return ax.figure
 
 
-def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *, x_key: str = "n_per_circle"):
+def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
+                   x_key: str = "n_per_circle") -> tuple[Figure, dict[str, tuple[float, float]]]:
     """Time and memory against ``x_key`` for the rows whose case starts with ``prefix``, log–log,
-    one line per tool (``{row key: label}``) with its fitted exponent in the legend.
+    one line per tool with its fitted exponent in the legend.
 
-    Returns ``(figure, {tool: (time exponent, memory exponent)})``.
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark to draw (its rows with sizes, times and memory).
+    prefix : str
+        Only the rows whose ``case`` starts with this.
+    tools : dict of str to str
+        ``{row key: label}``: the tool's columns are ``<key>_s`` (time) and ``<key>_mb`` (memory; a
+        missing or smaller value is drawn as 0.1 MB so the log scale holds it).
+    x_key : str, default "n_per_circle"
+        The row key of the size on the horizontal axis.
+
+    Returns
+    -------
+    figure : matplotlib.figure.Figure
+        Two log–log panels, time and peak memory.
+    exponents : dict of str to tuple (float, float)
+        ``{tool: (time exponent, memory exponent)}`` for the tools with at least two timed rows.
+
+    Raises
+    ------
+    ValueError
+        If no case starts with ``prefix``.
     """
     import matplotlib.pyplot as plt
 

@@ -186,7 +186,15 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    """The argument parser of ``thesis-lab``."""
+    """The argument parser of ``thesis-lab``.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The parser, with the subcommands ``run``, ``sweep``, ``collect``, ``store``, ``list``,
+        ``report`` and ``data``; each sets ``func`` to its handler.  A command line it cannot read
+        raises ``UsageError`` instead of exiting.
+    """
     parser = _Parser(prog="thesis-lab", description=__doc__.split("\n", 1)[0])
     parser.add_argument("--project", metavar="DIR",
                         help="the project folder (default: $THESIS_LAB_PROJECT, else the current folder or above)")
@@ -240,7 +248,22 @@ def _on_sigterm(signum, frame):
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Entry point of the ``thesis-lab`` console script."""
+    """Entry point of the ``thesis-lab`` console script.
+
+    In the main thread, SIGTERM is turned into a cancellation (like Ctrl-C) while the command runs;
+    errors are printed to stderr as ``error: ...``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments after the program name; by default ``sys.argv[1:]``.
+
+    Returns
+    -------
+    int
+        The exit status: 0 success; 1 a notebook or run failed (or runs are missing); 2 bad input;
+        130 / 143 cancelled by Ctrl-C / SIGTERM; 141 the reader of stdout went away.
+    """
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if _main_thread() else None
     try:
         return _main(argv)

@@ -19,7 +19,7 @@ from . import atomic
 from .paths import project_root, shared_dir
 from .registry import read_tables
 
-__all__ = ["DataError", "Entry", "manifest", "path", "verify", "fetch", "sha256_of", "check", "inside"]
+__all__ = ["DataError", "Entry", "manifest", "manifest_path", "path", "verify", "fetch", "sha256_of", "check", "inside"]
 
 
 class DataError(ValueError):
@@ -44,7 +44,14 @@ _SHA = re.compile(r"[0-9a-f]{64}")
 _SCHEMES = ("https://", "http://", "file://")
 
 
-def _manifest_path() -> Path:
+def manifest_path() -> Path:
+    """The project's data manifest.
+
+    Returns
+    -------
+    Path
+        ``data/manifest.toml`` below the project root (it need not exist).
+    """
     return project_root() / "data" / "manifest.toml"
 
 
@@ -59,7 +66,25 @@ def _relative(file: object) -> str:
 
 
 def inside(base: str | Path, file: str) -> Path:
-    """``base/file`` after checking that it stays inside ``base`` once symlinks are resolved."""
+    """``base/file`` after checking that it stays inside ``base`` once symlinks are resolved.
+
+    Parameters
+    ----------
+    base : str or pathlib.Path
+        The folder ``file`` must stay in.
+    file : str
+        A relative POSIX path (forward slashes; no ``..``, ``.``, empty or absolute parts).
+
+    Returns
+    -------
+    pathlib.Path
+        ``base/file`` with symlinks resolved; it need not exist.
+
+    Raises
+    ------
+    DataError
+        If ``file`` is not such a relative path, or leads outside ``base`` (or to ``base`` itself).
+    """
     base = Path(base).resolve()
     target = (base / _relative(file)).resolve()
     if not target.is_relative_to(base) or target == base:
@@ -98,13 +123,23 @@ def _validated(item: object, source: Path) -> Entry:
 def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
     """All entries of ``data/manifest.toml`` by name, each validated.
 
+    Parameters
+    ----------
+    manifest_file : str or pathlib.Path, optional
+        The manifest to read; by default the project's ``data/manifest.toml``.
+
+    Returns
+    -------
+    dict of str to Entry
+        The entries by name, in the manifest's order.
+
     Raises
     ------
     DataError
         If the file is missing or is not valid TOML, or an entry is malformed (wrong keys or types,
         a ``file`` outside ``data/``, a repeated name).
     """
-    path = Path(manifest_file) if manifest_file else _manifest_path()
+    path = Path(manifest_file) if manifest_file else manifest_path()
     items = read_tables(path, "file", DataError)
     entries: dict[str, Entry] = {}
     for item in items:
@@ -116,7 +151,18 @@ def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
 
 
 def sha256_of(file: Path) -> str:
-    """Hex sha256 of a file's bytes."""
+    """Hex sha256 of a file's bytes.
+
+    Parameters
+    ----------
+    file : pathlib.Path
+        The file, read in chunks of 1 MiB.
+
+    Returns
+    -------
+    str
+        The 64 lowercase hex digits of the digest.
+    """
     h = hashlib.sha256()
     with open(file, "rb") as fh:
         for chunk in iter(lambda: fh.read(1 << 20), b""):
@@ -137,7 +183,25 @@ def _candidates(entry: Entry) -> list[Path]:
 
 
 def check(entry: Entry, file: Path) -> Path:
-    """``file`` if its sha256 is the manifest's, else a DataError saying what to do."""
+    """``file`` if its sha256 is the manifest's, else a DataError saying what to do.
+
+    Parameters
+    ----------
+    entry : Entry
+        The manifest entry with the expected sha256.
+    file : pathlib.Path
+        The file to check.
+
+    Returns
+    -------
+    pathlib.Path
+        ``file``, unchanged.
+
+    Raises
+    ------
+    DataError
+        If the file's sha256 differs from ``entry.sha256``.
+    """
     digest = sha256_of(file)
     if digest != entry.sha256:
         raise DataError(
@@ -150,6 +214,18 @@ def check(entry: Entry, file: Path) -> Path:
 
 def path(name: str, manifest_file: str | Path | None = None) -> Path:
     """Local path of data set ``name`` after checking its sha256.
+
+    Parameters
+    ----------
+    name : str
+        The data set's name in the manifest.
+    manifest_file : str or pathlib.Path, optional
+        The manifest naming the data set (default: the project's ``data/manifest.toml``).
+
+    Returns
+    -------
+    pathlib.Path
+        The first copy that exists: ``data/<file>`` of the project, else ``../shared/data/<file>``.
 
     Raises
     ------
@@ -170,7 +246,24 @@ def path(name: str, manifest_file: str | Path | None = None) -> Path:
 
 
 def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]]:
-    """Check every manifest entry: a list of ``(name, status, detail)`` with status ``ok`` or ``error``."""
+    """Check every manifest entry (that a copy exists and its sha256 matches).
+
+    Parameters
+    ----------
+    manifest_file : str or pathlib.Path, optional
+        The manifest whose entries are checked (default: the project's, see :func:`manifest`).
+
+    Returns
+    -------
+    list of tuple (str, str, str)
+        ``(name, status, detail)`` by name: status ``"ok"`` with the file's path, or ``"error"`` with
+        the message of the DataError.
+
+    Raises
+    ------
+    DataError
+        If the manifest itself is missing or malformed.
+    """
     rows = []
     for name in sorted(manifest(manifest_file)):
         try:
@@ -186,6 +279,26 @@ def fetch(name: str, manifest_file: str | Path | None = None, timeout: float = 6
     The download goes to a temporary file beside the target and replaces it only once its sha256
     is right: an interrupted or wrong download leaves ``data/`` as it was.  This is the only
     function of thesis-lab that touches the network; it runs only when asked.
+
+    Parameters
+    ----------
+    name : str
+        The data set's name in the manifest.
+    manifest_file : str or pathlib.Path, optional
+        The manifest with the data set's URL and sha256 (default: the project's).
+    timeout : float, default 60.0
+        Seconds to wait for the server (``urllib.request.urlopen``).
+
+    Returns
+    -------
+    pathlib.Path
+        The downloaded file, ``data/<file>`` of the project.
+
+    Raises
+    ------
+    DataError
+        If the name is unknown, the entry leads outside ``data/``, the download fails, or its sha256
+        does not match.
     """
     entry = _entry(name, manifest_file)
     target = inside(project_root() / "data", entry.file)

@@ -19,8 +19,10 @@ import socket
 import tempfile
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
 from jupyter_client import AsyncKernelManager
 from traitlets import Dict, Unicode
@@ -28,6 +30,9 @@ from traitlets import Dict, Unicode
 from . import atomic
 from .experiments import OUTPUT_PARAMETER
 from .paths import PROJECT_ENV
+
+if TYPE_CHECKING:  # traitlets.config is imported only when a run is configured
+    from traitlets.config import Config
 
 __all__ = [
     "RunSpec",
@@ -48,6 +53,8 @@ DEFAULT_MAX_OUTPUT_MB = 64.0
 _LIVE: dict[int, int] = {}  # kernel pid -> process group of every kernel this process started
 _LIVE_LOCK = threading.Lock()
 _CANCELLED = threading.Event()  # set while a cancelled sweep winds down: no new kernel may start
+_P = ParamSpec("_P")
+_T = TypeVar("_T")
 
 
 class OutputTooLarge(ValueError):
@@ -63,7 +70,7 @@ class RunSpec:
     notebook: bytes
     timeout: int = 3600
     max_output_mb: float = DEFAULT_MAX_OUTPUT_MB
-    #: a project folder the kernel may use in place (same machine); None: a self-contained scratch project
+    #: a project folder the kernel may use in place (same machine), or None for a self-contained scratch project
     project: str | None = None
 
 
@@ -84,7 +91,23 @@ class LabKernelManager(AsyncKernelManager):
     extra_env = Dict(config=True, help="variables added to the kernel's environment")
     kernel_log = Unicode("", config=True, help="file for the kernel process's own output (its log lines)")
 
-    async def start_kernel(self, **kw):  # noqa: D102 (same as the base class)
+    async def start_kernel(self, **kw: Any) -> None:
+        """Start the kernel as the base class does, with ``extra_env`` added and the kernel registered.
+
+        The kernel's stdout and stderr go to ``kernel_log`` when it is set.
+
+        Parameters
+        ----------
+        **kw : Any
+            Keyword arguments of ``AsyncKernelManager.start_kernel``; ``env`` (default
+            ``os.environ``) is copied and updated with ``extra_env``.
+
+        Raises
+        ------
+        RuntimeError
+            If runs are cancelled (:func:`cancel_runs`) before the kernel starts.  A kernel that
+            started while runs were cancelled is killed at once.
+        """
         if _CANCELLED.is_set():
             raise RuntimeError("the run was cancelled before its kernel started")
         env = dict(kw.pop("env", None) or os.environ)
@@ -102,7 +125,14 @@ class LabKernelManager(AsyncKernelManager):
         if _CANCELLED.is_set():  # cancelled while it started
             kill_kernels()
 
-    async def cleanup_resources(self, restart: bool = False):  # noqa: D102
+    async def cleanup_resources(self, restart: bool = False) -> None:
+        """Forget the kernel (no longer killed by :func:`kill_kernels`), then clean up as the base class.
+
+        Parameters
+        ----------
+        restart : bool, default False
+            Passed on to ``AsyncKernelManager.cleanup_resources``.
+        """
         process = getattr(self.provisioner, "process", None)
         if process is not None:
             with _LIVE_LOCK:
@@ -110,12 +140,25 @@ class LabKernelManager(AsyncKernelManager):
         await super().cleanup_resources(restart=restart)
 
 
-def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | None = None):
+def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | None = None) -> Config:
     """traitlets configuration for a notebook client: :class:`LabKernelManager` with encryption.
 
     ipykernel warns ``Kernel is running over TCP without encryption`` when its manager gives it no
     CurveZMQ keys; ``transport_encryption = "auto"`` makes jupyter_client provision them (the
     kernelspec declares support).  Where pyzmq lacks CurveZMQ, local IPC sockets are used instead.
+
+    Parameters
+    ----------
+    extra_env : dict of str to str, optional
+        Variables added to the kernel's environment (``LabKernelManager.extra_env``).
+    log : str or pathlib.Path, optional
+        File for the kernel process's own output (``LabKernelManager.kernel_log``); by default it
+        goes where the client's does.
+
+    Returns
+    -------
+    traitlets.config.Config
+        The ``LabKernelManager`` settings, for papermill's or nbclient's ``config``.
     """
     import zmq
     from traitlets.config import Config
@@ -133,7 +176,13 @@ def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | Non
 
 
 def cancel_runs(cancelled: bool = True) -> None:
-    """Refuse (``cancelled``) or allow again new kernel starts in this process."""
+    """Refuse (``cancelled``) or allow again new kernel starts in this process.
+
+    Parameters
+    ----------
+    cancelled : bool, default True
+        True: every later :meth:`LabKernelManager.start_kernel` raises; False: kernels may start again.
+    """
     if cancelled:
         _CANCELLED.set()
     else:
@@ -143,7 +192,12 @@ def cancel_runs(cancelled: bool = True) -> None:
 def kill_kernels() -> int:
     """Kill every kernel this process started and has not shut down (their whole process groups).
 
-    Returns how many were killed.  Used when a run or a sweep is cancelled (Ctrl-C, SIGTERM).
+    Used when a run or a sweep is cancelled (Ctrl-C, SIGTERM).
+
+    Returns
+    -------
+    int
+        How many kernels were registered and sent SIGKILL (those already gone included).
     """
     with _LIVE_LOCK:
         live = dict(_LIVE)
@@ -157,9 +211,24 @@ def kill_kernels() -> int:
     return len(live)
 
 
-def cancellable(fn, *args, **kwargs):
+def cancellable(fn: Callable[_P, _T], *args: _P.args, **kwargs: _P.kwargs) -> _T:
     """``fn(*args, **kwargs)`` in a worker thread, so that Ctrl-C or SIGTERM reach this (main) thread
-    at once: then no new kernel may start, the running ones are killed, and the interrupt goes on."""
+    at once: then no new kernel may start, the running ones are killed, and the interrupt goes on.
+
+    Parameters
+    ----------
+    fn : callable
+        The function to call.
+    *args : Any
+        Its positional arguments.
+    **kwargs : Any
+        Its keyword arguments.
+
+    Returns
+    -------
+    object
+        What ``fn`` returns; what it raises is raised here.
+    """
     import concurrent.futures as cf
 
     pool = cf.ThreadPoolExecutor(max_workers=1, thread_name_prefix="thesis-lab-run")
@@ -246,10 +315,13 @@ def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False
 
     Parameters
     ----------
-    spec : the run (experiment name, resolved parameters, the notebook's bytes, limits).
-    bundle : ``{"manifest": bytes, "files": {path below data/: bytes}}``, the input data for a
+    spec : RunSpec
+        The run (experiment name, resolved parameters, the notebook's bytes, limits).
+    bundle : dict, optional
+        ``{"manifest": bytes, "files": {path below data/: bytes}}``, the input data for a
         self-contained run (``spec.project`` None); each file is checked against the manifest's sha256.
-    progress : show papermill's cell progress bar (cell n of m, elapsed time) on stderr.
+    progress : bool, default False
+        Show papermill's cell progress bar (cell n of m, elapsed time) on stderr.
 
     Returns
     -------
@@ -312,6 +384,18 @@ def missing_on_worker(modules: tuple[str, ...] = ("thesis_lib", "papermill", "ip
     """Modules a worker needs that do not import there, and ``kernel python3`` if it has no such kernel.
 
     Sent to every Dask worker before a sweep (by value: it must run where thesis_lib is missing).
+
+    Parameters
+    ----------
+    modules : tuple of str, default ("thesis_lib", "papermill", "ipykernel", "nbformat")
+        The modules to import.
+
+    Returns
+    -------
+    list of str
+        The modules that failed to import, then ``"kernel python3"`` if no ``python3`` kernelspec
+        is found (not looked for when ``jupyter_client`` is listed and failed); empty when the
+        worker can run experiments.
     """
     import importlib
 

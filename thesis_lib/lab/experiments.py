@@ -39,17 +39,39 @@ class ParameterError(ValueError):
 
 
 def experiments_dir() -> Path:
-    """Folder holding the experiment notebooks."""
+    """Folder holding the experiment notebooks.
+
+    Returns
+    -------
+    pathlib.Path
+        ``experiments/`` of the project folder (``thesis_lib.lab.paths.project_root()``).
+    """
     return project_root() / "experiments"
 
 
 def list_experiments() -> list[str]:
-    """Names of all experiments (notebooks in ``experiments/``)."""
+    """Names of all experiments (notebooks in ``experiments/``).
+
+    Returns
+    -------
+    list of str
+        The notebooks' stems, sorted; hidden files are left out.
+    """
     return sorted(p.stem for p in experiments_dir().glob("*.ipynb") if not p.name.startswith("."))
 
 
 def notebook_path(name: object) -> Path:
     """The notebook of experiment ``name``; only names that :func:`list_experiments` shows are accepted.
+
+    Parameters
+    ----------
+    name : object
+        The experiment's name; anything else is refused.
+
+    Returns
+    -------
+    pathlib.Path
+        ``experiments/<name>.ipynb``, resolved.
 
     Raises
     ------
@@ -87,7 +109,25 @@ def _is_scalar_list(value: object) -> bool:
 
 
 def experiment_parameters(name: str) -> dict[str, object]:
-    """Default value of every parameter of experiment ``name``, read from its ``parameters`` cell."""
+    """Default value of every parameter of experiment ``name``, read from its ``parameters`` cell.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name (a notebook stem that :func:`list_experiments` shows).
+
+    Returns
+    -------
+    dict of str to object
+        Each assigned name with its literal value (an int, float, str or bool, or a non-empty list of
+        one of those), in the cell's order; ``output_dir`` included if the cell assigns it.
+
+    Raises
+    ------
+    ParameterError
+        If the experiment is unknown, it has not exactly one ``parameters`` cell, or that cell is not
+        valid Python or does anything but assign such literals to names.
+    """
     nb = nbformat.read(notebook_path(name), as_version=4)
     try:
         tree = ast.parse(_parameters_cell(nb))
@@ -190,9 +230,25 @@ def _coerce(key: str, value: object, default: object) -> object:
 def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None) -> dict[str, object]:
     """Defaults of ``name`` updated with ``overrides`` (strings are converted to the default's type).
 
-    Raises ``ParameterError`` for an unknown experiment, an unknown parameter or a value of the
-    wrong type (NaN and infinity included); ``output_dir`` is set by the runner and cannot be
-    overridden.
+    Parameters
+    ----------
+    name : str
+        The experiment's name (a notebook stem that :func:`list_experiments` shows).
+    overrides : mapping of str to object, optional
+        New values by parameter name.  A string is converted to the default's type (``"yes"`` /
+        ``"no"`` and the like for a bool); a list parameter also takes a JSON list (``"[60, 100]"``),
+        comma-separated text (``"60,100"``) or a tuple.  An int is accepted for a float.
+
+    Returns
+    -------
+    dict of str to object
+        Every parameter with its value, ``output_dir`` left out (the runner sets it).
+
+    Raises
+    ------
+    ParameterError
+        For an unknown experiment, an unknown parameter, ``output_dir``, or a value of the wrong type
+        (NaN and infinity included).
     """
     defaults = experiment_parameters(name)
     if overrides is not None and not isinstance(overrides, Mapping):
@@ -210,6 +266,18 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
 
 
 def run_hash(params: Mapping[str, object]) -> str:
-    """Short stable hash of resolved parameters: the run's folder name."""
+    """Short stable hash of resolved parameters: the run's folder name.
+
+    Parameters
+    ----------
+    params : mapping of str to object
+        Resolved parameters (:func:`resolve_parameters`); JSON-serialisable, finite.
+
+    Returns
+    -------
+    str
+        The first 10 hex digits of the sha256 of the parameters as JSON with sorted keys: the same
+        parameters give the same hash in any order.
+    """
     text = json.dumps(dict(params), sort_keys=True, allow_nan=False)
     return hashlib.sha256(text.encode()).hexdigest()[:10]

@@ -26,13 +26,30 @@ class ProjectError(ValueError):
 
 
 def is_project(folder: str | Path) -> bool:
-    """Whether ``folder`` holds a thesis-lab project (``experiments/`` and ``data/manifest.toml``)."""
+    """Whether ``folder`` holds a thesis-lab project (``experiments/`` and ``data/manifest.toml``).
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The folder to look at; it need not exist.
+
+    Returns
+    -------
+    bool
+        True when ``folder/experiments`` is a directory and ``folder/data/manifest.toml`` a file.
+    """
     folder = Path(folder)
     return (folder / "experiments").is_dir() and (folder / "data" / "manifest.toml").is_file()
 
 
 def project_root() -> Path:
     """The project folder this package works on (see the module docstring for the search order).
+
+    Returns
+    -------
+    pathlib.Path
+        The project folder, resolved.  A folder named by ``THESIS_LAB_PROJECT`` (or
+        ``THESIS_LAB_ROOT``) is returned as named, without checking that it holds a project.
 
     Raises
     ------
@@ -64,7 +81,14 @@ repo_root = project_root
 
 
 def shared_dir() -> Path:
-    """The ``shared/`` folder beside the project (``THESIS_LAB_SHARED`` overrides it)."""
+    """The ``shared/`` folder beside the project (``THESIS_LAB_SHARED`` overrides it).
+
+    Returns
+    -------
+    pathlib.Path
+        ``THESIS_LAB_SHARED`` resolved when set, else ``project_root().parent / "shared"``; its
+        existence is not checked.
+    """
     env = os.environ.get("THESIS_LAB_SHARED")
     if env:
         return Path(env).resolve()

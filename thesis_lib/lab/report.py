@@ -68,8 +68,24 @@ class Claim:
     link: str | None = None
 
     def reference(self, which: str = "thesis") -> list[float]:
-        """The numbers the comparison uses, one per result key: the thesis's (``value`` when the
-        thesis is prose) or, with ``which="correct"``, the corrected value of an erratum."""
+        """The numbers the comparison uses, one per result key.
+
+        Parameters
+        ----------
+        which : str, default "thesis"
+            ``"correct"``: the corrected value of an erratum (``correct``); anything else: the
+            thesis's value (``value`` when the thesis is prose, else ``thesis``).
+
+        Returns
+        -------
+        list of float
+            One number per result key: the list as given, or the one value repeated.
+
+        Raises
+        ------
+        ClaimError
+            If a list has not one value per result key, or a value is not a number.
+        """
         ref = self.correct if which == "correct" else (self.thesis if self.value is None else self.value)
         values = ref if isinstance(ref, list) else [ref] * len(self.result)
         if len(values) != len(self.result):
@@ -81,7 +97,13 @@ class Claim:
 
 
 def claims_dir() -> Path:
-    """Folder of the claim registry."""
+    """Folder of the claim registry.
+
+    Returns
+    -------
+    pathlib.Path
+        ``experiments/claims/`` of the project folder.
+    """
     return project_root() / "experiments" / "claims"
 
 
@@ -133,7 +155,23 @@ def _parse(item: object, source: str) -> Claim:
 
 
 def load_claims(directory: Path | None = None) -> list[Claim]:
-    """Every claim of the registry in the thesis's order (stable); ids must be unique."""
+    """Every claim of the registry in the thesis's order (stable); ids must be unique.
+
+    Parameters
+    ----------
+    directory : pathlib.Path, optional
+        Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
+
+    Returns
+    -------
+    list of Claim
+        The claims of every file (files by name), sorted stably by :func:`place_line`.
+
+    Raises
+    ------
+    ClaimError
+        If a file is not valid TOML, a claim is malformed (schema in CONVENTIONS.md), or an id repeats.
+    """
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
         items = read_tables(file, "claim", ClaimError)
@@ -191,7 +229,23 @@ def _thesis_index() -> dict[tuple[str, str], int]:
 def place_line(where: str, index: dict[tuple[str, str], int] | None = None) -> tuple[float, ...]:
     """Sort key of a thesis place: the line where its first reference is defined in the thesis text
     (``Figure 3.5`` → its caption, ``Example 2.36`` → its statement, ``§3.4.2`` → its heading), else
-    the heading of its section (``Figure 9.1`` → ``9.1``), else its numbers; places with none go last."""
+    the heading of its section (``Figure 9.1`` → ``9.1``), else its numbers; places with none go last.
+
+    Parameters
+    ----------
+    where : str
+        A claim's thesis place, e.g. ``"Figure 3.5"`` or ``"Example 2.36, §2.4"``.
+    index : dict of (str, str) to int, optional
+        Line of each defined place, keyed ``(kind, number)``; by default read from the thesis text
+        in the shared folder (empty when it is missing).
+
+    Returns
+    -------
+    tuple of float
+        ``(line, 0.0)`` for a place defined in the text, ``(line, 0.5)`` for one placed after the
+        nearest place of its kind or at its section's heading, ``(inf, numbers...)`` for a place
+        found nowhere, ``(inf, inf)`` for text with no reference.
+    """
     index = _thesis_index() if index is None else index
     refs = [(_KINDS.get(k, k), n) for k, n in _REF.findall(where)]
     if "Summary" in where:
@@ -278,7 +332,29 @@ def _status(claim: Claim, ours: list[float] | None) -> str:
 
 
 def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, object]:
-    """The report row of one claim: id, where, thesis, ours, status, note, provenance, section, link, correct."""
+    """The report row of one claim: id, where, thesis, ours, status, note, provenance, section, link, correct.
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim to evaluate.
+    cache : dict of str to dict, optional
+        Loaded results by results name, filled as results are read (a missing file is stored as
+        ``{}``); pass one dict to share it between claims.
+
+    Returns
+    -------
+    dict of str to object
+        The row.  ``ours`` is the stored value (a list for several result keys; integral floats as
+        ints) or None; ``status`` one of ``STATUSES``; ``note`` says what to run when no result is
+        stored.
+
+    Raises
+    ------
+    ClaimError
+        If the status is not ``reproduced`` and the claim has no note, or a reference value is not
+        a number.
+    """
     ours = _ours(claim, {} if cache is None else cache)
     status = _status(claim, ours)
     note = claim.note
@@ -297,14 +373,42 @@ def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, ob
 
 
 def report(directory: Path | None = None) -> list[dict[str, object]]:
-    """Rows of the whole report, one per claim, in the thesis's order."""
+    """Rows of the whole report, one per claim, in the thesis's order.
+
+    Parameters
+    ----------
+    directory : pathlib.Path, optional
+        The claim registry to report on, as in :func:`load_claims`.
+
+    Returns
+    -------
+    list of dict
+        One :func:`evaluate` row per claim.
+
+    Raises
+    ------
+    ClaimError
+        If the registry is malformed or a claim that is not reproduced has no note.
+    """
     cache: dict[str, dict] = {}
     return [evaluate(c, cache) for c in load_claims(directory)]
 
 
 def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
-    """Counts of the report: ``total``, ``by_status`` (every status, zeros included), ``by_chapter``
-    (chapter → status → count, thesis section only), ``by_provenance`` and ``beyond`` (new work)."""
+    """Counts of the report.
+
+    Parameters
+    ----------
+    rows : list of dict, optional
+        Report rows (:func:`report`); by default the whole report, from the stored results.
+
+    Returns
+    -------
+    dict of str to object
+        ``total``, ``by_status`` (every status, zeros included), ``by_chapter`` (chapter → status →
+        count, thesis section only, chapters in numeric order), ``by_provenance`` and ``beyond``
+        (new work).
+    """
     rows = report() if rows is None else rows
     thesis = [r for r in rows if r.get("section", "thesis") == "thesis"]
     by_chapter: dict[str, dict[str, int]] = {}
@@ -321,7 +425,19 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
 
 
 def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
-    """The summary as Markdown: one sentence of counts, then claims per chapter by status."""
+    """The summary as Markdown: one sentence of counts, then claims per chapter by status.
+
+    Parameters
+    ----------
+    rows : list of dict, optional
+        The rows to count, as for :func:`summary`.
+
+    Returns
+    -------
+    str
+        The sentence, then (when a chapter has claims) a table with one column per status present
+        and the total, ending with a newline.
+    """
     s = summary(rows)
     counts = ", ".join(f"{n} {status}" for status, n in s["by_status"].items() if n)
     prov = ", ".join(f"{n} {p}" for p, n in sorted(s["by_provenance"].items()))
@@ -354,8 +470,20 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
              link_suffix: str = ".html") -> str:
     """The report as Markdown: the thesis's claims in its order, then new work beyond the thesis.
 
-    ``with_summary`` puts :func:`summary_markdown` first; a claim's thesis place links to
-    ``<page><link_suffix>#<label>`` where the book computes it.
+    Parameters
+    ----------
+    rows : list of dict, optional
+        The rows to show, as for :func:`summary`.
+    with_summary : bool, default False
+        Put :func:`summary_markdown` first.
+    link_suffix : str, default ".html"
+        Added to a claim's page name: its thesis place links to ``<page><link_suffix>#<label>``.
+
+    Returns
+    -------
+    str
+        The Markdown: the summary when asked, the table of the thesis's claims, then a section
+        ``Beyond the thesis`` when there is new work.
     """
     rows = report() if rows is None else rows
     titles = ["claim", "thesis place", "thesis", "ours", "status", "provenance", "note"]
@@ -374,5 +502,16 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
 
 
 def to_json(rows: list[dict[str, object]] | None = None) -> str:
-    """The report as JSON (``thesis-lab report --json``)."""
+    """The report as JSON (``thesis-lab report --json``).
+
+    Parameters
+    ----------
+    rows : list of dict, optional
+        What to write; by default the whole report, from the stored results.
+
+    Returns
+    -------
+    str
+        The rows as a JSON list (indent 1, non-ASCII characters kept).
+    """
     return json.dumps(report() if rows is None else rows, indent=1, ensure_ascii=False)

@@ -11,9 +11,14 @@ import math
 import numbers
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import atomic
 from .paths import project_root
+
+if TYPE_CHECKING:  # matplotlib and IPython are imported only where a figure is saved or shown
+    from IPython.display import Image
+    from matplotlib.figure import Figure
 
 __all__ = [
     "Recorder",
@@ -46,6 +51,18 @@ def round_sig(x: float, digits: int) -> float:
 
     The book's rule (CONVENTIONS.md): counts exact; errors, tolerances and residuals to 2
     significant digits; other measured reals to the digits they are good for.
+
+    Parameters
+    ----------
+    x : float
+        The number (anything ``float`` accepts).
+    digits : int
+        Significant digits to keep.
+
+    Returns
+    -------
+    float
+        ``x`` rounded by Python's ``round`` at its ``digits``-th significant digit.
     """
     x = float(x)
     if x == 0 or not math.isfinite(x):
@@ -58,14 +75,41 @@ class ResultsError(ValueError):
 
 
 def check_name(name: object) -> str:
-    """``name`` if it can name a results folder: a non-empty name with no path separator, never ``..``."""
+    """``name`` if it can name a results folder: a non-empty name with no path separator, never ``..``.
+
+    Parameters
+    ----------
+    name : object
+        The name to check.
+
+    Returns
+    -------
+    str
+        ``name``, unchanged.
+
+    Raises
+    ------
+    ResultsError
+        If ``name`` is not a non-empty string, is ``.`` or ``..``, or holds ``/``, ``\\`` or NUL.
+    """
     if not isinstance(name, str) or not name or name in (".", "..") or any(c in name for c in "/\\\x00"):
         raise ResultsError(f"invalid experiment name {name!r}: a results name has no path separator and is not '..'")
     return name
 
 
 def results_dir(name: str) -> Path:
-    """Folder of the stored default run of experiment ``name`` (committed with the repository)."""
+    """Folder of the stored default run of experiment ``name`` (committed with the repository).
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name (checked by :func:`check_name`).
+
+    Returns
+    -------
+    pathlib.Path
+        ``experiments/results/<name>/`` of the project folder; its existence is not checked.
+    """
     return project_root() / "experiments" / "results" / check_name(name)
 
 
@@ -84,8 +128,10 @@ class Recorder:
 
     Parameters
     ----------
-    name : experiment name (``two-circles-landmarks``, ...).
-    output_dir : folder to write into; ``""`` or ``None`` means the stored default run
+    name : str
+        The experiment's name (``two-circles-landmarks``, ...; checked by :func:`check_name`).
+    output_dir : str or pathlib.Path, optional
+        Folder to write into (created); ``""`` or ``None`` means the stored default run
         ``experiments/results/<name>/`` (``$THESIS_LAB_DEFAULT_RUN_DIR/<name>/`` when that is set).
         Starting a recorder clears the previous ``results.json``.
     """
@@ -99,11 +145,22 @@ class Recorder:
         self.results: dict[str, float | int] = {}
         self._write()
 
-    def record(self, **values) -> None:
+    def record(self, **values: float) -> None:
         """Add flat ``name=number`` results and rewrite ``results.json`` (atomically).
 
         Reals are rounded to ``RESULT_DIGITS`` significant digits.  Returns None, so that a notebook
         cell ending with a ``record`` call shows nothing; read values back from ``rec.results``.
+
+        Parameters
+        ----------
+        **values : float
+            Results by name (identifiers): integers (bools as 0 / 1) are kept exact, other reals
+            rounded; a name recorded before is overwritten.
+
+        Raises
+        ------
+        ValueError
+            If a name is not an identifier or a value is not a real number (nothing is recorded).
         """
         checked = {}
         for key, value in values.items():
@@ -113,15 +170,36 @@ class Recorder:
         self.results.update(checked)
         self._write()
 
-    def timing(self, **seconds) -> None:
-        """Record wall-clock times (``timings.json``): shown to the reader, never compared."""
+    def timing(self, **seconds: float) -> None:
+        """Record wall-clock times (``timings.json``): shown to the reader, never compared.
+
+        Parameters
+        ----------
+        **seconds : float
+            Times in seconds by name, rounded to 4 decimals and merged into the file (atomically).
+        """
         file = self.path / TIMINGS_FILE
         times = json.loads(file.read_text()) if file.exists() else {}
         times.update({k: round(float(v), 4) for k, v in seconds.items()})
         atomic.write_text(file, json.dumps(times, indent=1, sort_keys=True) + "\n")
 
-    def savefig(self, fig, stem: str, dpi: int = 110) -> Path:
-        """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs)."""
+    def savefig(self, fig: Figure, stem: str, dpi: int = 110) -> Path:
+        """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs).
+
+        Parameters
+        ----------
+        fig : matplotlib.figure.Figure
+            The figure, saved with a tight bounding box.
+        stem : str
+            The file name without ``.png`` (checked by :func:`check_name`).
+        dpi : int, default 110
+            Resolution of the image.
+
+        Returns
+        -------
+        pathlib.Path
+            The written file, ``<output folder>/<stem>.png`` (replaced atomically).
+        """
         out = self.path / f"{check_name(stem)}.png"
         with atomic.replacing(out) as tmp:
             fig.savefig(tmp, format="png", dpi=dpi, bbox_inches="tight", metadata={"Software": None})
@@ -134,6 +212,19 @@ class Recorder:
 
 def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | int]:
     """Read the results of experiment ``name`` (default: its stored default run).
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    output_dir : str or pathlib.Path, optional
+        The run folder holding ``results.json``; by default the stored default run
+        (:func:`results_dir`).
+
+    Returns
+    -------
+    dict of str to float or int
+        The stored results by name.
 
     Raises
     ------
@@ -159,8 +250,30 @@ def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | i
     return data
 
 
-def figure(name: str, stem: str, width: int = 640):
-    """A stored figure of experiment ``name``'s default run, for display in a notebook."""
+def figure(name: str, stem: str, width: int = 640) -> Image:
+    """A stored figure of experiment ``name``'s default run, for display in a notebook.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    stem : str
+        The figure's file name without ``.png``.
+    width : int, default 640
+        Display width in pixels.
+
+    Returns
+    -------
+    IPython.display.Image
+        The image of ``experiments/results/<name>/<stem>.png``.
+
+    Raises
+    ------
+    FileNotFoundError
+        If the figure is not stored.
+    ResultsError
+        If ``name`` or ``stem`` is not a valid name.
+    """
     from IPython.display import Image
 
     path = results_dir(name) / f"{check_name(stem)}.png"

@@ -67,7 +67,13 @@ ERROR_FILE = "error.txt"
 
 
 def runs_dir() -> Path:
-    """Folder where ``thesis-lab run`` and ``sweep`` write (not committed)."""
+    """Folder where ``thesis-lab run`` and ``sweep`` write (not committed).
+
+    Returns
+    -------
+    pathlib.Path
+        ``runs/`` of the project folder; its existence is not checked.
+    """
     return project_root() / "runs"
 
 
@@ -90,7 +96,30 @@ def _json(value: object) -> str:
 
 
 def read_run(name: str, params: dict[str, object], root: Path | None = None) -> RunResult:
-    """What ``runs/<name>/<hash>/`` holds for these resolved parameters: ok, failed or missing."""
+    """What ``runs/<name>/<hash>/`` holds for these resolved parameters: ok, failed or missing.
+
+    An interrupted replacement of the folder is undone first (``atomic.recover``).
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    params : dict of str to object
+        Resolved parameters (:func:`resolve_parameters`); their :func:`run_hash` names the run folder.
+    root : pathlib.Path, optional
+        The runs folder; by default ``runs/`` of the project (:func:`runs_dir`).
+
+    Returns
+    -------
+    RunResult
+        ``status`` ``"ok"`` (``complete.json``), ``"failed"`` (``failed.json``, with its error) or
+        ``"missing"``; the stored time, worker and ``results.json`` when there are any.
+
+    Raises
+    ------
+    ResultsError
+        If the run's ``results.json`` is not valid JSON.
+    """
     path = (root or runs_dir()) / name / run_hash(params)
     atomic.recover(path)
     result = RunResult(name, params, path, "missing")
@@ -124,6 +153,31 @@ def write_run(name: str, params: dict[str, object], output: RunOutput, root: Pat
     """Write a run's outputs into ``runs/<name>/<hash>/`` in one step (see the module docstring).
 
     A failed run never replaces a complete one: its outputs go to ``runs/<name>/<hash>.failed/``.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    params : dict of str to object
+        Resolved parameters (:func:`resolve_parameters`); their :func:`run_hash` names the run
+        folder.  Written as ``params.json``.
+    output : RunOutput
+        What ``thesis_lib.lab.execute.execute`` returned; its files are written below the run
+        folder, with ``complete.json`` when ``status`` is ``"ok"``, else ``failed.json`` and
+        ``error.txt``.
+    root : pathlib.Path, optional
+        The runs folder; by default ``runs/`` of the project (:func:`runs_dir`).
+
+    Returns
+    -------
+    RunResult
+        The run as written: its folder, ``output``'s status, error, time and worker, and the
+        results of a complete run.
+
+    Raises
+    ------
+    ValueError
+        If an output file's name leads outside the run folder (absolute or with ``..``).
     """
     folder = (root or runs_dir()) / name
     folder.mkdir(parents=True, exist_ok=True)
@@ -153,8 +207,32 @@ def write_run(name: str, params: dict[str, object], output: RunOutput, root: Pat
 
 def local_spec(name: str, params: dict[str, object], *, timeout: int = 3600,
                max_output_mb: float = DEFAULT_MAX_OUTPUT_MB, self_contained: bool = False) -> RunSpec:
-    """The :class:`RunSpec` of a run of ``name`` with resolved ``params``; the kernel uses this project
-    in place unless ``self_contained`` (then the data must travel with it, see ``sweep.data_bundle``)."""
+    """The :class:`RunSpec` of a run of ``name`` with resolved ``params``.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    params : dict of str to object
+        Resolved parameters (:func:`resolve_parameters`), copied into the spec.
+    timeout : int, default 3600
+        Seconds a cell may run.
+    max_output_mb : float, default 64.0
+        Largest total size of the run's outputs, MB.
+    self_contained : bool, default False
+        False: the kernel uses this project in place.  True: a scratch project (then the data must
+        travel with it, see ``sweep.data_bundle``).
+
+    Returns
+    -------
+    RunSpec
+        The spec, with the notebook's bytes read now.
+
+    Raises
+    ------
+    ParameterError
+        If ``name`` is not a known experiment.
+    """
     return RunSpec(
         name=name,
         params=dict(params),
@@ -178,8 +256,34 @@ def run(
 
     A run that completed before with the same resolved parameters is not repeated unless ``force``.
     Failures of the notebook are returned with ``status="failed"`` and the error text; invalid
-    parameters raise ``ParameterError`` before any kernel starts.  ``progress`` (default: when
-    stderr is a terminal) shows which cell runs and the elapsed time.
+    parameters raise ``ParameterError`` before any kernel starts.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    overrides : dict of str to object, optional
+        Parameter values that differ from the notebook's defaults (see :func:`resolve_parameters`).
+    root : pathlib.Path, optional
+        The runs folder; by default ``runs/`` of the project (:func:`runs_dir`).
+    force : bool, default False
+        Run again even if a complete run exists.
+    timeout : int, default 3600
+        Seconds a cell may run.
+    progress : bool, optional
+        Show which cell runs and the elapsed time; by default when stderr is a terminal.
+
+    Returns
+    -------
+    RunResult
+        ``status`` ``"ok"``, ``"failed"`` or ``"skipped"`` (the complete earlier run, as read).
+
+    Raises
+    ------
+    ParameterError
+        For an unknown experiment or parameter, or a value of the wrong type.
+    KeyboardInterrupt
+        When cancelled (Ctrl-C): running kernels are killed and nothing is written.
     """
     params = resolve_parameters(name, overrides)
     atomic.clean_stale((root or runs_dir()) / name)
@@ -218,6 +322,28 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
     notebook records go to a temporary folder and replace ``experiments/results/<name>/`` in one step
     only once every cell has run (its stored ``sweeps/`` are kept): a failing or interrupted store
     leaves the committed results byte-identical.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        An experiment name that ``thesis-lab list`` shows, or a notebook (``.ipynb``) directly inside
+        the project's ``book/`` or ``experiments/`` (relative to the current folder).
+    timeout : int, default 3600
+        Seconds a cell may run.
+
+    Returns
+    -------
+    pathlib.Path
+        The notebook, rewritten with its new outputs.
+
+    Raises
+    ------
+    ParameterError
+        If ``path`` is neither a known experiment nor a notebook of the project.
+
+    Notes
+    -----
+    A failing cell raises nbclient's ``CellExecutionError``; nothing is rewritten.
     """
     from nbclient import NotebookClient
 

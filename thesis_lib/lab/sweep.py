@@ -26,6 +26,7 @@ import logging
 import types
 from collections.abc import Callable, Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker
@@ -33,6 +34,9 @@ from .experiments import ParameterError, resolve_parameters, run_hash
 from .results import results_dir
 from .runner import RunResult, local_spec, read_run, runs_dir, write_run
 from .tables import markdown_table
+
+if TYPE_CHECKING:  # distributed is imported only when a Dask sweep is asked for
+    from distributed import Client
 
 __all__ = [
     "ClusterError",
@@ -58,6 +62,24 @@ def expand_grid(name: str, grid: dict[str, list[object]]) -> list[dict[str, obje
 
     Every value is checked (``ParameterError``) before anything runs; values that resolve to the
     same parameters (``1`` and ``"1"``, a value given twice) give one point.
+
+    Parameters
+    ----------
+    name : str
+        The experiment whose parameters the values are checked against.
+    grid : dict of str to list
+        The sweep's grid, as for :func:`sweep`.
+
+    Returns
+    -------
+    list of dict
+        One dict of resolved parameters (every parameter of the experiment) per distinct point of
+        the Cartesian product, the last parameter varying fastest.
+
+    Raises
+    ------
+    ParameterError
+        If the grid is empty, a parameter has no values, or a name or value is not acceptable.
     """
     if not isinstance(grid, dict) or not grid:
         raise ParameterError("a sweep needs at least one parameter with values")
@@ -75,7 +97,23 @@ def expand_grid(name: str, grid: dict[str, list[object]]) -> list[dict[str, obje
 
 
 def parse_shard(text: str | tuple[int, int] | None) -> tuple[int, int] | None:
-    """``"I/N"`` (or ``(I, N)``) as ``(I, N)`` with 1 ≤ I ≤ N; None stays None."""
+    """``"I/N"`` (or ``(I, N)``) as ``(I, N)`` with 1 ≤ I ≤ N; None stays None.
+
+    Parameters
+    ----------
+    text : str or tuple of (int, int) or None
+        The shard, as given to ``--shard`` (``"2/4"``) or as a pair.
+
+    Returns
+    -------
+    tuple of (int, int) or None
+        ``(I, N)``, or None for None.
+
+    Raises
+    ------
+    ParameterError
+        If the text is not ``I/N`` with digits, or not 1 ≤ I ≤ N.
+    """
     if text is None:
         return None
     if isinstance(text, str):
@@ -95,12 +133,20 @@ def _check_jobs(jobs: object) -> int:
     return jobs
 
 
-def data_bundle() -> dict:
-    """The manifest and every data file found locally (sha256-checked), to ship to remote workers."""
+def data_bundle() -> dict[str, object]:
+    """The manifest and every data file found locally (sha256-checked), to ship to remote workers.
+
+    Returns
+    -------
+    dict
+        ``{"manifest": bytes, "files": {file below data/: bytes}}``.  Files that are missing or do
+        not match their sha256 are left out (a run that needs one fails with the data layer's
+        message); without a readable manifest, ``{"manifest": b"", "files": {}}``.
+    """
     from . import data
 
     try:
-        manifest_file = data._manifest_path()
+        manifest_file = data.manifest_path()
         entries = data.manifest(manifest_file)
     except (data.DataError, OSError):
         return {"manifest": b"", "files": {}}
@@ -128,12 +174,29 @@ def dask_client(
     retries: int = 2,
     timeout: float = 10.0,
     log: Callable[[str], None] | None = None,
-) -> Iterator:
+) -> Iterator[Client]:
     """A ``distributed.Client`` for a sweep, checked, and closed (with its cluster) on exit.
 
-    ``scheduler``: the address of a running scheduler; None starts a ``LocalCluster`` of ``jobs``
-    single-threaded worker processes (closed on exit, whatever happens).  ``retries``: how many
-    times a run is retried when its worker dies (the local scheduler's ``allowed-failures``).
+    Parameters
+    ----------
+    scheduler : str, optional
+        The address of a running scheduler (``tcp://host:8786``); None starts a ``LocalCluster`` of
+        ``jobs`` single-threaded worker processes (closed on exit, whatever happens).
+    jobs : int, default 2
+        Worker processes of the local cluster (ignored with ``scheduler``).
+    retries : int, default 2
+        How many times a run is retried when its worker dies (the scheduler's
+        ``allowed-failures``, set while the client is made).
+    timeout : float, default 10.0
+        Seconds to reach the scheduler; the first worker may take up to ``max(timeout, 60)``.
+    log : callable, optional
+        Called with a line of text to show (the dashboard's address); by default nothing is shown.
+
+    Yields
+    ------
+    distributed.Client
+        A client with at least one worker, each able to import thesis_lib, papermill, ipykernel and
+        nbformat and to start a ``python3`` kernel.
 
     Raises
     ------
@@ -278,7 +341,7 @@ def sweep(
     grid: dict[str, list[object]],
     *,
     jobs: int = 1,
-    executor=None,
+    executor: cf.Executor | Client | None = None,
     root: Path | None = None,
     progress: bool = True,
     timeout: int = 3600,
@@ -291,24 +354,46 @@ def sweep(
 
     Parameters
     ----------
-    name : an experiment that ``thesis-lab list`` shows.
-    grid : parameter name -> values (strings are converted to the default's type).
-    jobs : runs at a time on this machine (the default executor: a pool of threads driving kernels).
-    executor : a ``distributed.Client``, ``client.get_executor()`` or any ``concurrent.futures``
-        executor; runs then need no shared file system.
-    root : folder of the run folders (default ``runs/``).
-    progress : show the progress bar (completed / failed / skipped / running).
-    timeout : seconds a cell may run.
-    keep : also store the table (without wall times and workers) with the default run,
-        ``experiments/results/<name>/sweeps/``, where the book reads it.
-    shard : ``"I/N"``: run only the I-th of N deterministic slices of the grid (a job array);
+    name : str
+        An experiment that ``thesis-lab list`` shows.
+    grid : dict of str to list
+        Parameter name → values (a list or tuple, non-empty); strings are converted to the default's
+        type.
+    jobs : int, default 1
+        Runs at a time on this machine (the default executor: a pool of threads driving kernels).
+    executor : concurrent.futures.Executor or distributed.Client, optional
+        A ``distributed.Client``, ``client.get_executor()`` or any ``concurrent.futures`` executor;
+        runs then need no shared file system (the data travel with them, :func:`data_bundle`).
+    root : pathlib.Path, optional
+        Folder of the run folders (default ``runs/``).
+    progress : bool, default True
+        Show the progress bar (completed / failed / skipped / running).
+    timeout : int, default 3600
+        Seconds a cell may run.
+    keep : bool, default False
+        Also store the table (without wall times and workers) with the default run,
+        ``experiments/results/<name>/sweeps/``, where the book reads it (not for a shard).
+    shard : str or tuple of (int, int), optional
+        ``"I/N"``: run only the I-th of N deterministic slices of the grid (a job array);
         the table then covers the slice; :func:`collect` builds the whole one.
-    retries : Dask only: how many times a run is retried when its worker dies.
-    max_output_mb : largest total size of one run's outputs that may travel back from a worker.
+    retries : int, default 2
+        Dask only: how many times a run is retried when its worker dies.
+    max_output_mb : float, default 64.0
+        Largest total size of one run's outputs that may travel back from a worker.
 
     Returns
     -------
-    (runs, table) : the runs in grid order and the path of the CSV table (a Markdown twin beside it).
+    runs : list of RunResult
+        The runs in grid order (``status`` ``"ok"``, ``"failed"`` or ``"skipped"``).
+    table : pathlib.Path
+        The CSV table in ``<root>/<name>/sweeps/`` (a Markdown twin beside it).
+
+    Raises
+    ------
+    ParameterError
+        If the experiment, the grid, ``jobs`` or ``shard`` is not acceptable (before any run).
+    KeyboardInterrupt
+        When cancelled: nothing pending starts and running kernels are killed.
     """
     points = expand_grid(name, grid)
     _check_jobs(jobs)
@@ -381,6 +466,23 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
     """The sweep table of ``grid`` built from the run folders that exist (after ``--shard`` runs).
 
     Points without a run folder are rows with status ``missing``; nothing is executed.
+
+    Parameters
+    ----------
+    name, grid, root, keep
+        As for :func:`sweep`; the grid is the whole one the shards were cut from.
+
+    Returns
+    -------
+    runs : list of RunResult
+        One per point of the grid, in grid order: ``"ok"``, ``"failed"`` or ``"missing"``.
+    table : pathlib.Path
+        The CSV table in ``<root>/<name>/sweeps/`` (a Markdown twin beside it).
+
+    Raises
+    ------
+    ParameterError
+        If the experiment or the grid is not acceptable.
     """
     points = expand_grid(name, grid)
     base = root or runs_dir()
@@ -391,7 +493,24 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
 def stored_sweeps(name: str, columns: list[str] | None = None) -> list[str]:
     """Markdown tables of the sweeps stored with experiment ``name`` (``sweep(..., keep=True)``).
 
-    ``columns`` keeps only those columns (in that order) of each table; its command line stays on top.
+    Parameters
+    ----------
+    name : str
+        The experiment's name.
+    columns : list of str, optional
+        Keep only these columns (in that order) of each table, read from its CSV twin; the command
+        line stays on top.  By default the stored Markdown as it is.
+
+    Returns
+    -------
+    list of str
+        One Markdown text per stored sweep (the command line, a blank line, the table), by file
+        name; empty when none is stored.
+
+    Raises
+    ------
+    ValueError
+        If a stored sweep lacks one of ``columns``.
     """
     tables = []
     for md in sorted((results_dir(name) / "sweeps").glob("*.md")):

@@ -12,7 +12,20 @@ __all__ = ["cell", "header", "row", "markdown_table"]
 
 
 def cell(value: object, digits: int = 6) -> str:
-    """One cell's text: floats to ``digits`` significant digits (``:g``), ``None`` empty, ``|`` escaped."""
+    """One cell's text: floats to ``digits`` significant digits (``:g``), ``None`` empty, ``|`` escaped.
+
+    Parameters
+    ----------
+    value : object
+        The cell's value; anything other than a float or None is written with ``str``.
+    digits : int, default 6
+        Significant digits of a float value.
+
+    Returns
+    -------
+    str
+        The text, with ``|`` escaped as ``\\|`` and newlines replaced by spaces.
+    """
     if value is None:
         text = ""
     elif isinstance(value, float):
@@ -23,12 +36,36 @@ def cell(value: object, digits: int = 6) -> str:
 
 
 def header(titles: Sequence[object]) -> str:
-    """The two header lines of a Markdown table (no final newline)."""
+    """The two header lines of a Markdown table (no final newline).
+
+    Parameters
+    ----------
+    titles : sequence of object
+        The column titles, each written as a cell (default ``digits``).
+
+    Returns
+    -------
+    str
+        The title line and the ``|---|`` separator line, joined by a newline.
+    """
     return "| " + " | ".join(cell(t) for t in titles) + " |\n|" + "---|" * len(titles)
 
 
 def row(cells: Sequence[object], digits: int = 6) -> str:
-    """One line of a Markdown table (no final newline); strings are taken as already formatted."""
+    """One line of a Markdown table (no final newline); strings are taken as already formatted.
+
+    Parameters
+    ----------
+    cells : sequence of object
+        The cells of the line, each written by ``cell``.
+    digits : int, default 6
+        Significant digits of float cells.
+
+    Returns
+    -------
+    str
+        The line, ``| a | b | ... |``.
+    """
     return "| " + " | ".join(cell(c, digits) for c in cells) + " |"
 
 
@@ -37,9 +74,22 @@ def markdown_table(titles: Sequence[object], rows: Iterable[Sequence[object]], d
 
     Parameters
     ----------
-    titles : column titles.
-    rows : one sequence of cells per line, as many as ``titles``.
-    digits : significant digits of float cells.
+    titles : sequence of object
+        The column titles.
+    rows : iterable of sequence of object
+        One sequence of cells per line, as many as ``titles``.
+    digits : int, default 6
+        Significant digits of float cells.
+
+    Returns
+    -------
+    str
+        The header lines, then one line per row, each ending with a newline.
+
+    Raises
+    ------
+    ValueError
+        If a row has not as many cells as there are titles.
     """
     lines = [header(titles)]
     for cells in rows:

@@ -75,14 +75,23 @@ def poles(points: npt.ArrayLike, far: float | None = None) -> tuple[np.ndarray, 
 
     Parameters
     ----------
-    points : (n, 3) samples, n >= 5, no duplicates, not coplanar.
-    far : distance used for poles at infinity, and cap of all pole distances (default: half the
+    points : array_like, shape (n, 3)
+        The samples, n >= 5, no duplicates, not coplanar.
+    far : float or None, default None
+        Distance used for poles at infinity, and cap of all pole distances (default: half the
         diagonal of the bounding box).
 
     Returns
     -------
-    p_plus, p_minus : (n, 3) arrays; p⁻ falls back to the reflection of p⁺ when a cell has no
-        Voronoi vertex on the opposite side.
+    p_plus, p_minus : ndarray of float64, shape (n, 3)
+        The poles of each sample; p⁻ falls back to the reflection of p⁺ when a cell has no Voronoi
+        vertex on the opposite side.
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, fewer than 5, points not in R³ or in a plane, or a ``far``
+        that is not positive.
     """
     pts, e = _samples(points)
     tri = _delaunay(pts)
@@ -149,14 +158,22 @@ def crust_candidates(points: npt.ArrayLike, theta: float = np.pi / 4, far: float
 
     Parameters
     ----------
-    points, far
-        As in :func:`poles`.
-    theta : normal-filter angle in (0, π/2).
+    points : array_like, shape (n, 3)
+        The samples, as in :func:`poles`.
+    theta : float, default π/4
+        Normal-filter angle in (0, π/2) (see :func:`crust`).
+    far : float or None, default None
+        Distance of the poles at infinity, as in :func:`poles`.
 
     Returns
     -------
-    ndarray, shape (m, 3)
-        Vertex triples, each sorted, in lexicographic order.
+    ndarray of int, shape (m, 3)
+        Vertex triples, each sorted, in lexicographic order (Qhull's index type).
+
+    Raises
+    ------
+    ValueError
+        As :func:`poles`, or a ``theta`` outside (0, π/2).
     """
     theta = check_real(theta, "theta")
     if not 0 < theta < np.pi / 2:
@@ -173,16 +190,27 @@ def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: boo
 
     Parameters
     ----------
-    points : (n, 3) samples.
-    triangles : (m, 3) candidate triangles (indices into ``points``).
-    prune : remove triangles with sharp edges first.
+    points : array_like, shape (n, 3)
+        The samples, at least 3.
+    triangles : array_like of int, shape (m, 3)
+        Candidate triangles (indices into ``points``), e.g. :func:`crust_candidates`.
+    prune : bool, default True
+        Remove triangles with sharp edges first.
 
     Returns
     -------
-    faces : consistently oriented faces (outward for a closed surface); faces that would put a
-        third face on an edge are left out (in visiting order), so every edge of the result lies in
-        one or two faces.
-    conflicts : the number of orientation conflicts met by the walk (0 for an orientable result).
+    faces : ndarray of int64, shape (k, 3)
+        Consistently oriented faces (outward for a closed surface); faces that would put a third
+        face on an edge are left out (in visiting order), so every edge of the result lies in one
+        or two faces.
+    conflicts : int
+        The number of orientation conflicts met by the walk (0 for an orientable result).
+
+    Raises
+    ------
+    ValueError
+        On invalid points or triangles, points not in R³, or (with ``prune``) when trimming
+        removes every triangle.
     """
     pts = as_points(points, min_points=3)
     if pts.shape[1] != 3:
@@ -195,25 +223,34 @@ def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: boo
 def crust(points: npt.ArrayLike, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
     """Triangulate a point cloud sampled from a surface in R³ with the Crust algorithm [ABK98].
 
+    Thesis: §3.4, "Triangulations" (the Crust algorithm [ABK98], used for Figures 3.8–3.11).
+
     Parameters
     ----------
-    points : ``(n, 3)`` samples without duplicates.
-    theta : normal-filter angle θ (θ at the largest-angle vertex, 3θ/2 at the others).  ABK98 leave
-        θ as a parameter; π/4 closes the torus R = 10, r = 5 from 1000 uniform samples on, while
-        π/8 already opens holes there.
-    prune : remove triangles with sharp edges before the walk (right for closed surfaces; switch it
+    points : array_like, shape (n, 3)
+        Samples without duplicates, n >= 5, not coplanar.
+    theta : float, default π/4
+        Normal-filter angle θ in (0, π/2) (θ at the largest-angle vertex, 3θ/2 at the others).
+        ABK98 leave θ as a parameter; π/4 closes the torus R = 10, r = 5 from 1000 uniform
+        samples on, while π/8 already opens holes there.
+    prune : bool, default True
+        Remove triangles with sharp edges before the walk (right for closed surfaces; switch it
         off for a surface with boundary, where it would eat the surface from its border).  When the
         sample is too sparse and trimming removes every triangle, the walk runs on the untrimmed
         candidates instead (the result then has holes and non-manifold edges).
-    far : distance of the poles at infinity and cap of all pole distances (default half the
+    far : float or None, default None
+        Distance of the poles at infinity and cap of all pole distances (default half the
         bounding-box diagonal).
 
     Returns
     -------
-    ndarray, shape (m, 3)
+    ndarray of int64, shape (m, 3)
         Faces into ``points``, consistently oriented (outward for a closed surface).
 
-    Thesis: §3.4, "Triangulations" (the Crust algorithm [ABK98], used for Figures 3.8–3.11).
+    Raises
+    ------
+    ValueError
+        As :func:`crust_candidates`, or when no triangle survives the filtering.
     """
     cand = crust_candidates(points, theta, far)
     pts, _ = _samples(points)

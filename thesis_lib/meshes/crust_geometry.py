@@ -55,6 +55,18 @@ def circumcentres(p: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     False for (nearly) flat ones.
 
     Thesis: §2.1.2 (the Voronoi vertices dual to the Delaunay simplices).
+
+    Parameters
+    ----------
+    p : ndarray of float64, shape (m, d + 1, d)
+        Vertex coordinates of m d-simplices in R^d (no validation).
+
+    Returns
+    -------
+    centres : ndarray of float64, shape (m, d)
+        The circumcentre of each simplex; for a flat one, its vertex 0 (a placeholder).
+    ok : ndarray of bool, shape (m,)
+        False where |det E| <= 1e-12 · ‖E‖_F^d (E the edge vectors): no reliable circumcentre.
     """
     d = p[:, 1:] - p[:, :1]
     rhs = 0.5 * np.einsum("mij,mij->mi", d, d)
@@ -72,6 +84,16 @@ def simplex_normals(p: np.ndarray) -> np.ndarray:
     n = 2), so det[E; N] = (-1)^n |N|^2.
 
     Thesis: eq. (3.9) (the normal N = X_{u_1} ∧ ... ∧ X_{u_n} of a hypersurface).
+
+    Parameters
+    ----------
+    p : ndarray of float64, shape (m, n + 1, n + 1)
+        Vertex coordinates of m n-simplices in R^{n+1} (no validation).
+
+    Returns
+    -------
+    ndarray of float64, shape (m, n + 1)
+        The normal N of each simplex, of length n! times its hyperarea.
     """
     e = p[:, 1:] - p[:, :1]
     if p.shape[2] == 3:
@@ -80,11 +102,36 @@ def simplex_normals(p: np.ndarray) -> np.ndarray:
     return np.stack([(-1) ** k * np.linalg.det(np.delete(e, k, axis=2)) for k in range(d)], axis=1)
 
 
-def poles_from_delaunay(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: float):
+def poles_from_delaunay(
+    pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndarray, far: float
+) -> tuple[np.ndarray, np.ndarray]:
     """Poles p⁺, p⁻ of every sample from the Delaunay triangulation ``tri`` of the samples and its
     circumcentres ``cc`` (see :func:`thesis_lib.meshes.poles`), in any dimension.
 
     Thesis: §3.4, "Triangulations" (the Crust [ABK98]).
+
+    Parameters
+    ----------
+    pts : ndarray of float64, shape (N, d)
+        The samples (no validation).
+    tri : scipy.spatial.Delaunay
+        The Delaunay triangulation of ``pts``.
+    cc : ndarray of float64, shape (t, d)
+        Circumcentres of ``tri.simplices`` (from :func:`circumcentres`).
+    ok : ndarray of bool, shape (t,)
+        Which circumcentres are reliable; the others are never poles.
+    far : float
+        Distance cap: a pole farther than ``far`` from its sample is moved to distance ``far``
+        along the same direction, and a sample on the convex hull (unbounded Voronoi cell) gets its
+        p⁺ at distance ``far`` along the mean outward normal of its hull facets.
+
+    Returns
+    -------
+    p_plus : ndarray of float64, shape (N, d)
+        The pole p⁺ of each sample: its farthest Voronoi vertex (capped).
+    p_minus : ndarray of float64, shape (N, d)
+        The pole p⁻: the farthest Voronoi vertex on the other side of p⁺ (negative dot product),
+        or the reflection of p⁺ through the sample where there is none.
     """
     n = len(pts)
     tets = tri.simplices
@@ -258,16 +305,26 @@ def filtered_faces(pts: np.ndarray, tri: Delaunay, theta: float, far: float, *,
 
     Parameters
     ----------
-    pts : ``(N, d)`` samples (validated, scaled by the caller).
-    tri : their Delaunay triangulation.
-    theta : normal-filter angle in (0, π/2).
-    far : distance of the poles at infinity and cap of all pole distances.
-    resolve_flat : treatment of flat Delaunay cells (default: their faces are left out).
+    pts : ndarray of float64, shape (N, d)
+        The samples (validated, scaled by the caller).
+    tri : scipy.spatial.Delaunay
+        Their Delaunay triangulation.
+    theta : float
+        Normal-filter angle in (0, π/2) (checked by the caller).
+    far : float
+        Distance of the poles at infinity and cap of all pole distances.
+    resolve_flat : callable, default: leave the faces of flat cells out
+        Treatment of flat Delaunay cells: called as ``resolve_flat(pts, tri, cc, ok)`` with the
+        circumcentres and their reliability (:func:`circumcentres`), it returns ``(centre, keep,
+        across)``: the Voronoi vertex of each cell, whether each face slot stays, and the cell whose
+        Voronoi vertex ends each face's dual edge on the cell's side.
 
     Returns
     -------
-    faces : ``(m, d)`` vertex rows, each sorted, in lexicographic order.
-    p_plus, p_minus : ``(N, d)`` poles.
+    faces : ndarray of int, shape (m, d)
+        Vertex rows, each sorted, in lexicographic order.
+    p_plus, p_minus : ndarray of float64, shape (N, d)
+        The poles (:func:`poles_from_delaunay`).
     """
     cc, ok = circumcentres(pts[tri.simplices])
     p_plus, p_minus = poles_from_delaunay(pts, tri, cc, ok, far)

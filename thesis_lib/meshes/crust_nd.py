@@ -45,6 +45,7 @@ from itertools import combinations
 from typing import NamedTuple
 
 import numpy as np
+import numpy.typing as npt
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import Delaunay, QhullError, cKDTree
@@ -88,7 +89,14 @@ class ManifoldReport(NamedTuple):
         return self.is_manifold and self.boundary_ridges == 0
 
     def describe(self) -> str:
-        """One line: what is wrong (or that nothing is)."""
+        """One line: what is wrong (or that nothing is).
+
+        Returns
+        -------
+        str
+            The counts of simplices and vertices, χ, then each defect found, or "a closed oriented
+            combinatorial manifold" when there is none.
+        """
         bad = []
         if self.n_simplices == 0:
             bad.append("no simplex")
@@ -171,12 +179,33 @@ def _check_theta(theta) -> float:
     return theta
 
 
-def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
+def crust_nd_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
     """Steps 1–4 of the Crust in R^{n+1}: the n-simplices of Del(S ∪ P) with sample vertices that
     pass the normal filter.
 
-    Returns ``(m, n + 1)`` sorted vertex rows in lexicographic order.
     Thesis: Chapter 5 (a higher-dimensional analogue of the Crust used in §3.4).
+
+    Parameters
+    ----------
+    points : array_like, shape (N, n + 1)
+        Samples without duplicates, 2 <= n + 1 <= 4, at least n + 4 of them, not in an affine
+        subspace.
+    theta : float, default π/4
+        Normal-filter angle θ in (0, π/2): θ at the vertex opposite the largest facet, 3θ/2 at the
+        others.
+    far : float or None, default None
+        Distance of the poles at infinity (default half the bounding-box diagonal).
+
+    Returns
+    -------
+    ndarray of int, shape (m, n + 1)
+        The candidate simplices, each row sorted, rows in lexicographic order (Qhull's index type).
+
+    Raises
+    ------
+    ValueError
+        On invalid or too few samples, points in R^d with d > 4 or in a lower-dimensional subspace,
+        ``theta`` outside (0, π/2), or a ``far`` that is not a positive distance.
     """
     theta = _check_theta(theta)
     pts = _samples_nd(points)
@@ -184,7 +213,9 @@ def crust_nd_candidates(points, *, theta: float = np.pi / 4, far: float | None =
 
 
 # ---------------------------------------------------------------------------- trimming
-def extract_manifold_nd(points, simplices, *, closed: bool = True) -> tuple[np.ndarray, int]:
+def extract_manifold_nd(
+    points: npt.ArrayLike, simplices: npt.ArrayLike, *, closed: bool = True
+) -> tuple[np.ndarray, int]:
     """Trimming step of the Crust in R^{n+1}: from candidate n-simplices to an oriented manifold.
 
     ``closed`` (a closed hypersurface): remove simplices with sharp ridges until none is left, then
@@ -195,9 +226,31 @@ def extract_manifold_nd(points, simplices, *, closed: bool = True) -> tuple[np.n
     boundary and where slivers confused the walk: :func:`manifold_vertices` tells the vertices
     whose star is a manifold ball.
 
-    Returns ``(simplices, conflicts)``: coherently oriented n-simplices (outward for a closed
-    hypersurface; every ridge in one or two of them) and the orientation conflicts met by the walk.
     Thesis: Chapter 5 (higher-dimensional Crust; the trimming of [ABK98] used in §3.4).
+
+    Parameters
+    ----------
+    points : array_like, shape (N, n + 1)
+        The samples, at least 2.
+    simplices : array_like of int, shape (m, n + 1)
+        Candidate n-simplices (e.g. :func:`crust_nd_candidates`), m >= 1, indices into ``points``.
+    closed : bool, default True
+        The samples come from a closed hypersurface (erosion of sharp ridges, then the outer walk);
+        ``False`` for a piece with boundary (the open walk).
+
+    Returns
+    -------
+    simplices : ndarray of int64, shape (k, n + 1)
+        Coherently oriented n-simplices (outward for a closed hypersurface; every ridge in one or
+        two of them).
+    conflicts : int
+        The orientation conflicts met by the walk.
+
+    Raises
+    ------
+    ValueError
+        On invalid points, ``simplices`` not a non-empty (m, n + 1) integer array, or an index
+        outside ``points``; with ``closed=True``, when trimming removes every simplex.
     """
     pts = as_points(points, min_points=2)
     s = np.asarray(simplices)
@@ -306,10 +359,22 @@ def _defects(s: np.ndarray, npts: int) -> tuple[dict, np.ndarray, np.ndarray]:
     return counts, bad, on_boundary
 
 
-def manifold_vertices(simplices, n_points: int | None = None) -> np.ndarray:
+def manifold_vertices(simplices: npt.ArrayLike, n_points: int | None = None) -> np.ndarray:
     """Mask of the vertices whose star is a manifold n-ball: interior (on no boundary ridge) and at
     no defect (:func:`manifold_report`).  Curvature estimated there uses a complete, clean star.
     Thesis: Definition 3.15 (the discrete mean curvature at p uses the simplices around p).
+
+    Parameters
+    ----------
+    simplices : array_like of int, shape (m, n + 1)
+        Oriented vertex rows, m >= 1 (not validated: use :func:`manifold_report` for bad input).
+    n_points : int or None, default None
+        Number of samples (default and at least: largest vertex index + 1).
+
+    Returns
+    -------
+    ndarray of bool, shape (n_points,)
+        True at the vertices used by some simplex, on no boundary ridge and at no defect.
     """
     s = np.asarray(simplices, dtype=np.int64)
     npts = int(s.max()) + 1 if n_points is None else max(int(n_points), int(s.max()) + 1)
@@ -319,7 +384,7 @@ def manifold_vertices(simplices, n_points: int | None = None) -> np.ndarray:
     return used & ~bad & ~on_boundary
 
 
-def manifold_report(simplices, n_points: int | None = None) -> ManifoldReport:
+def manifold_report(simplices: npt.ArrayLike, n_points: int | None = None) -> ManifoldReport:
     """Check that n-simplices form a (closed) coherently oriented combinatorial n-manifold.
 
     Ridges ((n-1)-faces) in one simplex are boundary (holes), in three or more singular; the link of
@@ -330,8 +395,21 @@ def manifold_report(simplices, n_points: int | None = None) -> ManifoldReport:
 
     Parameters
     ----------
-    simplices : ``(m, n + 1)`` oriented vertex rows.
-    n_points : number of samples (default: largest vertex index + 1), for ``vertex_fraction``.
+    simplices : array_like of int, shape (m, n + 1)
+        Oriented vertex rows, n >= 1 (m = 0 gives an empty report).
+    n_points : int or None, default None
+        Number of samples, for ``vertex_fraction`` (default and at least: largest vertex index + 1).
+
+    Returns
+    -------
+    ManifoldReport
+        The counts of simplices, vertices and each kind of defect, and the Euler characteristic;
+        ``is_manifold`` and ``is_closed_manifold`` sum them up.
+
+    Raises
+    ------
+    ValueError
+        If ``simplices`` is not an (m, n + 1) array of non-negative integers with n >= 1.
     """
     s = np.asarray(simplices)
     if s.ndim != 2 or s.shape[1] < 2 or not np.issubdtype(s.dtype, np.integer) or (len(s) and s.min() < 0):
@@ -357,7 +435,9 @@ def _pole_ratio(pts: np.ndarray, p_plus: np.ndarray, p_minus: np.ndarray) -> flo
     return float(np.median(h / near))
 
 
-def crust_nd(points, *, theta: float = np.pi / 4, closed: bool = True, far: float | None = None) -> CrustResult:
+def crust_nd(
+    points: npt.ArrayLike, *, theta: float = np.pi / 4, closed: bool = True, far: float | None = None
+) -> CrustResult:
     """Reconstruct a hypersurface of R^{n+1} (n = 1, 2, 3) from samples with the Crust [ABK98].
 
     Thesis: Chapter 5 ("a natural next step ... higher dimensional analogues of the Crust Algorithm");
@@ -365,13 +445,18 @@ def crust_nd(points, *, theta: float = np.pi / 4, closed: bool = True, far: floa
 
     Parameters
     ----------
-    points : ``(N, n + 1)`` samples without duplicates, 2 <= n + 1 <= 4.
-    theta : normal-filter angle θ (θ at the vertex opposite the largest facet, 3θ/2 at the others).
-    closed : the samples come from a closed hypersurface (trimming by sharp ridges and the outer
-        walk, as in 3-D); refuse unless the result is a closed oriented combinatorial manifold.
+    points : array_like, shape (N, n + 1)
+        Samples without duplicates, 2 <= n + 1 <= 4.
+    theta : float, default π/4
+        Normal-filter angle θ in (0, π/2): θ at the vertex opposite the largest facet, 3θ/2 at the
+        others.
+    closed : bool, default True
+        The samples come from a closed hypersurface (trimming by sharp ridges and the outer walk,
+        as in 3-D); refuse unless the result is a closed oriented combinatorial manifold.
         ``False``: a piece with boundary (see :func:`extract_manifold_nd`); the report counts its
         defects and :func:`manifold_vertices` tells the vertices with a clean manifold star.
-    far : distance of the poles at infinity (default half the bounding-box diagonal).
+    far : float or None, default None
+        Distance of the poles at infinity (default half the bounding-box diagonal).
 
     Returns
     -------

@@ -13,6 +13,7 @@ orienting coherently; a simplex that would put a third simplex on a ridge is lef
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ..jit import njit
 from .crust_geometry import simplex_normals
@@ -20,7 +21,7 @@ from .crust_geometry import simplex_normals
 __all__ = ["unique_rows", "outer_walk", "open_walk"]
 
 
-def unique_rows(rows: np.ndarray, return_counts: bool = False):
+def unique_rows(rows: npt.ArrayLike, return_counts: bool = False) -> tuple[np.ndarray, ...]:
     """``np.unique(rows, axis=0, return_inverse=True)`` for non-negative integer rows, by one int64
     key per row (much faster than a row-wise unique).
 
@@ -28,13 +29,19 @@ def unique_rows(rows: np.ndarray, return_counts: bool = False):
 
     Parameters
     ----------
-    rows : ``(m, k)`` non-negative integers.
-    return_counts : also return how often each distinct row occurs.
+    rows : array_like of int, shape (m, k)
+        Non-negative integers (not checked).
+    return_counts : bool, default False
+        Also return how often each distinct row occurs.
 
     Returns
     -------
-    uniq, inverse[, counts] : the distinct rows (sorted), the index of each row among them, and the
-        counts if asked.
+    uniq : ndarray of int64, shape (u, k)
+        The distinct rows, in lexicographic order.
+    inverse : ndarray of int64, shape (m,)
+        The index of each row among them: ``uniq[inverse]`` is ``rows``.
+    counts : ndarray of int64, shape (u,)
+        How often each distinct row occurs; only when ``return_counts``.
     """
     rows = np.asarray(rows, dtype=np.int64)
     base = int(rows.max()) + 1 if rows.size else 1
@@ -71,16 +78,23 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
 
 
 @njit(cache=True)
+def _edge_vectors(pts, verts):
+    """Rows p_{i+1} − p_0 for the vertices ``verts`` (k + 1,) of a simplex: shape (k, d)."""
+    k = verts.shape[0] - 1
+    e = np.empty((k, pts.shape[1]))
+    for i in range(k):
+        e[i] = pts[verts[i + 1]] - pts[verts[0]]
+    return e
+
+
+@njit(cache=True)
 def _complement_basis(pts, ridge):
     """Orthonormal basis (rows) of the directions of the ridge's affine span (Gram–Schmidt)."""
-    k = ridge.shape[0] - 1
-    d = pts.shape[1]
-    q = np.zeros((k, d))
-    for i in range(k):
-        v = pts[ridge[i + 1]] - pts[ridge[0]]
+    q = _edge_vectors(pts, ridge)
+    for i in range(q.shape[0]):
         for j in range(i):
-            v = v - (v * q[j]).sum() * q[j]
-        q[i] = v / (np.sqrt((v * v).sum()) + 1e-300)
+            q[i] = q[i] - (q[i] * q[j]).sum() * q[j]
+        q[i] = q[i] / (np.sqrt((q[i] * q[i]).sum()) + 1e-300)
     return q
 
 
@@ -162,9 +176,7 @@ def _oriented_normal(pts, o):
     """Normal of the oriented simplex o: cofactors of its edge vectors (the cross product for n = 2)."""
     n = o.shape[0] - 1
     d = pts.shape[1]
-    e = np.empty((n, d))
-    for i in range(n):
-        e[i] = pts[o[i + 1]] - pts[o[0]]
+    e = _edge_vectors(pts, o)
     nrm = np.empty(d)
     sub = np.empty((n, n))
     for k in range(d):
@@ -358,15 +370,25 @@ def outer_walk(pts: np.ndarray, simplices: np.ndarray, *, prune: bool = True) ->
 
     Parameters
     ----------
-    pts : ``(N, n + 1)`` samples.
-    simplices : ``(m, n + 1)`` int64 candidate n-simplices (validated indices into ``pts``).
-    prune : remove simplices with sharp ridges first.
+    pts : ndarray of float64, shape (N, n + 1)
+        The samples.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Candidate n-simplices (validated indices into ``pts``).
+    prune : bool, default True
+        Remove simplices with sharp ridges first.
 
     Returns
     -------
-    simplices : coherently oriented n-simplices (outward for a closed hypersurface), every ridge in
-        one or two of them (a simplex that would put a third on a ridge is left out, in visiting order).
-    conflicts : the orientation conflicts met by the walk (0 for an orientable result).
+    simplices : ndarray of int64, shape (k, n + 1)
+        Coherently oriented n-simplices (outward for a closed hypersurface), every ridge in one or
+        two of them (a simplex that would put a third on a ridge is left out, in visiting order).
+    conflicts : int
+        The orientation conflicts met by the walk (0 for an orientable result).
+
+    Raises
+    ------
+    ValueError
+        If ``prune`` removes every simplex (the sample is too sparse).
     """
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
@@ -387,11 +409,17 @@ def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
 
     Parameters
     ----------
-    pts, simplices : as in :func:`outer_walk`.
+    pts : ndarray of float64, shape (N, n + 1)
+        The samples, as in :func:`outer_walk`.
+    simplices : ndarray of int64, shape (m, n + 1)
+        Candidate n-simplices, as in :func:`outer_walk`.
 
     Returns
     -------
-    simplices, conflicts : as in :func:`outer_walk`.
+    simplices : ndarray of int64, shape (k, n + 1)
+        Coherently oriented n-simplices reached before the boundary; every ridge in one or two.
+    conflicts : int
+        The orientation conflicts met by the walk.
     """
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)

@@ -67,18 +67,21 @@ def _permutation_sign(perm: tuple[int, ...]) -> int:
 def freudenthal(shape: Sequence[int] | int, periodic: bool | Sequence[bool] = False) -> np.ndarray:
     """Freudenthal/Kuhn subdivision of an n-dimensional vertex grid into n-simplices.
 
+    Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
+
     Parameters
     ----------
-    shape : number of grid vertices along each axis, ``(m_1, ..., m_n)``; vertex ``(i_1, ..., i_n)``
+    shape : int or sequence of int
+        Number of grid vertices along each axis, ``(m_1, ..., m_n)``; vertex ``(i_1, ..., i_n)``
         has the C-order flat index ``np.ravel_multi_index(i, shape)``.
-    periodic : bool or one bool per axis; a periodic axis wraps (``m`` cells instead of ``m - 1``).
+    periodic : bool or sequence of bool, default False
+        One for all axes or one per axis; a periodic axis wraps (``m`` cells instead of ``m - 1``).
 
     Returns
     -------
-    ``(n! · #cells, n + 1)`` int array of simplices, each positively oriented in parameter space
-    (det[v_1 - v_0, ..., v_n - v_0] > 0 before wrapping).
-
-    Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
+    ndarray of int64, shape (n! · #cells, n + 1)
+        The simplices, each positively oriented in parameter space
+        (det[v_1 - v_0, ..., v_n - v_0] > 0 before wrapping).
 
     Raises
     ------
@@ -115,11 +118,19 @@ def grid_parameters(*axes: npt.ArrayLike) -> np.ndarray:
 
     Parameters
     ----------
-    *axes : 1-D arrays of finite numbers, one per parameter.
+    *axes : array_like
+        One array of finite numbers per parameter, at least one, none empty (flattened).
 
     Returns
     -------
-    ndarray, shape (Π len(axes[i]), len(axes))
+    ndarray of float64, shape (Π len(axes[i]), len(axes))
+        Row ``ravel_multi_index(i, shape)`` holds ``(axes[0][i_0], axes[1][i_1], ...)``.
+
+    Raises
+    ------
+    ValueError
+        If there is no axis or an empty one, an axis holds NaN or infinite values or is not
+        numeric (``InvalidTypeError``), or the grid would be too large.
     """
     try:
         arrs = [np.asarray(a, dtype=np.float64).ravel() for a in axes]
@@ -141,13 +152,22 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
 
     Parameters
     ----------
-    n : grid points per circle (>= 3).
-    R, r : the torus's radii, 0 < r < R.
+    n : int
+        Grid points per circle, at least 3.
+    R, r : float
+        The torus's radii, 0 < r < R (default 10 and 5).
 
     Returns
     -------
-    vertices : (n², 3); vertex ``i·n + j`` is X(u_i, v_j).
-    faces : (2n², 3), every face oriented by X_u × X_v (outward).
+    vertices : ndarray of float64, shape (n², 3)
+        Vertex ``i·n + j`` is X(u_i, v_j) (:func:`~thesis_lib.curvature.exact.torus_point`).
+    faces : ndarray of int64, shape (2n², 3)
+        Every face oriented by X_u × X_v (outward).
+
+    Raises
+    ------
+    ValueError
+        On an ``n`` below 3 or too large, or invalid radii.
     """
     n = check_int(n, "n", minimum=3)
     check_size(2 * n * n, "faces")
@@ -171,13 +191,22 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
 
     Parameters
     ----------
-    epsilon : grid step; ``2π/ε`` must be an integer >= 3 (up to 1e-9).
-    R, r : the torus's radii.
+    epsilon : float, default π/50
+        The grid step ε; 2π/ε must be an integer n >= 3 (up to a relative 1e-9).
+    R, r : float
+        Radii of the torus, 0 < r < R (default 10 and 5, as in the thesis).
 
     Returns
     -------
-    vertices, faces, uv
-        As :func:`torus_grid`, and the (n², 2) parameters of the vertices.
+    vertices, faces : ndarray
+        As :func:`torus_grid` with n = 2π/ε.
+    uv : ndarray of float64, shape (n², 2)
+        The parameters (u, v) of the vertices.
+
+    Raises
+    ------
+    ValueError
+        If ``epsilon`` is not positive or 2π/ε not an integer >= 3, or on invalid radii.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     m = _steps(2 * np.pi, epsilon, "u")
@@ -198,15 +227,27 @@ def merge_coincident(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
 
     Parameters
     ----------
-    vertices : (nv, d) array.
-    simplices : (m, k) vertex indices.
-    tol : distance below which vertices are identified (>= 0).
+    vertices : array_like, shape (nv, d)
+        The points.
+    simplices : array_like of int, shape (m, k)
+        Vertex indices (may be empty).
+    tol : float, default 1e-9
+        Vertices at distance <= ``tol`` are identified (and so are chains of such pairs); >= 0.
 
     Returns
     -------
-    vertices, simplices, kept
-        The merged vertices, the simplices renumbered (vertex order, and so orientation, kept),
-        and ``kept[i]``, the original index of new vertex ``i`` (its first representative).
+    vertices : ndarray of float64, shape (nv', d)
+        The merged vertices: each class keeps its first representative's coordinates.
+    simplices : ndarray of int64, shape (m', k)
+        The simplices renumbered (vertex order, and so orientation, kept), without those that
+        collapsed and without repeats (the first of each kept, in input order).
+    kept : ndarray of int, shape (nv',)
+        ``kept[i]`` is the original index of new vertex ``i`` (its first representative).
+
+    Raises
+    ------
+    ValueError
+        On invalid vertices or simplices, or a negative ``tol``.
     """
     v = as_points(vertices, name="vertices")
     s = check_simplices(simplices, len(v), allow_empty=True)
@@ -272,14 +313,27 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
 
     Parameters
     ----------
-    epsilon : grid step; ``π/ε`` must be an integer >= 2.
-    radius : ρ > 0.
-    n : dimension of the sphere (>= 1).
+    epsilon : float, default π/50
+        The grid step ε; π/ε must be an integer >= 2.
+    radius : float, default 2.0
+        The radius ρ > 0 (the thesis's 3-sphere has ρ = 2).
+    n : int, default 3
+        Dimension of the sphere, 1 to the largest grid dimension.
 
     Returns
     -------
-    vertices, simplices, params
-        ``params`` are the coordinates of each vertex's first grid representative.
+    vertices : ndarray of float64, shape (nv, n + 1)
+        The merged grid points on the sphere.
+    simplices : ndarray of int64, shape (m, n + 1)
+        The Freudenthal n-simplices that survive the merge.
+    params : ndarray of float64, shape (nv, n)
+        The hyperspherical coordinates of each vertex's first grid representative.
+
+    Raises
+    ------
+    ValueError
+        If ``epsilon`` or ``radius`` is not positive, π/ε is not an integer >= 2, ``n`` is out of
+        range, or the grid would be too large.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     radius = check_real(radius, "radius", positive=True)
@@ -299,23 +353,41 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
 
 
 def catenoid_freudenthal(
-    epsilon: float = 0.05, n: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0), n_u: int | None = None
-):
+    epsilon: float = 0.05, n: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
+    w_range: tuple[float, float] = (-1.0, 1.0), n_u: int | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
 
     Thesis: §3.4.3 (the 3-catenoid, ε = 0.05, v, r ∈ [-1, 1]).
 
     Parameters
     ----------
-    epsilon : grid step of v and w (the ranges must be whole multiples of it).
-    n : dimension (>= 2).
-    v_range, w_range : (low, high) of v and of each extra coordinate w.
-    n_u : steps of the periodic u (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
+    epsilon : float, default 0.05
+        Grid step of v and w (the ranges must be whole multiples of it).
+    n : int, default 3
+        Dimension of the catenoid, n >= 2.
+    v_range : (low, high), default (-1.0, 1.0)
+        The range of v.
+    w_range : (low, high), default (-1.0, 1.0)
+        The range of each extra coordinate w (unused for n = 2).
+    n_u : int or None, default None
+        Steps of the periodic u, at least 3 (default ``round(2π/ε)``, so the u-step is 2π/n_u ≈ ε).
 
     Returns
     -------
-    vertices, simplices, params
-        The boundary is v = v_low, v_high (and w = w_low, w_high).
+    vertices : ndarray of float64, shape (nv, n + 1)
+        The grid points on the catenoid (:func:`~thesis_lib.curvature.exact.catenoid_point`).
+    simplices : ndarray of int64, shape (m, n + 1)
+        The Freudenthal n-simplices, closed up in u; the boundary is v = v_low, v_high (and
+        w = w_low, w_high).
+    params : ndarray of float64, shape (nv, n)
+        The parameters (u, v, w₁, ...) of each vertex.
+
+    Raises
+    ------
+    ValueError
+        On a non-positive ``epsilon``, ``n`` outside 2 to the largest grid dimension, a range that
+        is not a pair or not a whole number of steps, fewer than 3 u-steps, or a grid too large.
     """
     epsilon = check_real(epsilon, "epsilon", positive=True)
     n = check_int(n, "n", minimum=2, maximum=MAX_GRID_DIM)

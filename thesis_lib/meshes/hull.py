@@ -21,14 +21,22 @@ def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
 
     Parameters
     ----------
-    vertices : (nv, n + 1) array of points.
-    simplices : (m, n + 1) vertex indices of the facets.
-    centre : (n + 1,) point inside the surface (default: the mean of the vertices).
+    vertices : array_like, shape (nv, n + 1)
+        The points.
+    simplices : array_like of int, shape (m, n + 1)
+        Vertex indices of the facets.
+    centre : array_like, shape (n + 1,), optional
+        A point inside the surface (default: the mean of the vertices).
 
     Returns
     -------
-    ndarray, shape (m, n + 1)
-        The facets, each with its first two vertices swapped where needed.
+    ndarray of int64, shape (m, n + 1)
+        A copy of the facets, each with its first two vertices swapped where needed.
+
+    Raises
+    ------
+    ValueError
+        On invalid vertices or simplices, or a ``centre`` that is not one point of R^{n+1}.
     """
     v = as_points(vertices, name="vertices")
     s = check_simplices(simplices, len(v), width=v.shape[1]).copy()
@@ -53,12 +61,18 @@ def convex_hull_surface(points: npt.ArrayLike) -> np.ndarray:
 
     Parameters
     ----------
-    points : (N, n + 1) array, n + 1 >= 2, no duplicates, not all in a hyperplane.
+    points : array_like, shape (N, n + 1)
+        At least n + 2 points, n + 1 >= 2, no duplicates, not all in a hyperplane.
 
     Returns
     -------
-    ndarray, shape (m, n + 1)
-        Facets as vertex indices into ``points``, oriented outward.
+    ndarray of int64, shape (m, n + 1)
+        Facets as vertex indices into ``points``, oriented outward (from the mean of the points).
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, too few of them, or points all in a hyperplane.
     """
     pts = as_points(points, allow_duplicates=False)
     d = pts.shape[1]
@@ -80,15 +94,26 @@ def sphere_hull(n_dims: int = 3, n_points: int = 1000, seed: int = 0,
 
     Parameters
     ----------
-    n_dims : ambient dimension (>= 2).
-    n_points : number of points (>= n_dims + 1).
-    seed : seed of the random points.
-    radius : radius of the sphere.
+    n_dims : int, default 3
+        Ambient dimension, at least 2.
+    n_points : int, default 1000
+        Number of points, at least n_dims + 1.
+    seed : int, default 0
+        Seed of the random points (:func:`~thesis_lib.meshes.sampling.sample_sphere`).
+    radius : float, default 1.0
+        Radius of the sphere, > 0.
 
     Returns
     -------
-    (vertices, simplices)
-        ``(n_points, n_dims)`` points and their outward-oriented hull facets.
+    vertices : ndarray of float64, shape (n_points, n_dims)
+        The random points.
+    simplices : ndarray of int64, shape (m, n_dims)
+        Their outward-oriented hull facets.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n_dims``, ``n_points``, ``seed`` or ``radius``.
     """
     n_dims = check_int(n_dims, "n_dims", minimum=2)
     n_points = check_int(n_points, "n_points", minimum=n_dims + 1)

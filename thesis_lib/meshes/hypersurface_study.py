@@ -17,11 +17,32 @@ HYPERSURFACES = ("sphere", "catenoid")
 SPHERE_RADIUS = 2.0
 
 
-def sample_hypersurface(surface: str, n_samples: int, seed: int = 0):
+def sample_hypersurface(surface: str, n_samples: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray | None]:
     """Uniform random samples of the 3-sphere of radius 2 or of the 3-catenoid piece
     u ∈ [0, 2π), v, w ∈ [−1, 1] (the thesis's region), with their parameters (None for the sphere).
 
     Thesis: §3.4.2 and §3.4.3 (the same hypersurfaces, there on parameter grids).
+
+    Parameters
+    ----------
+    surface : {"sphere", "catenoid"}
+        Which hypersurface of R⁴.
+    n_samples : int
+        Number of samples, at least 1.
+    seed : int, default 0
+        Seed of the random draws.
+
+    Returns
+    -------
+    points : ndarray of float64, shape (n_samples, 4)
+        The samples.
+    params : ndarray of float64, shape (n_samples, 3), or None
+        The catenoid parameters (u, v, w) of each sample; None for the sphere.
+
+    Raises
+    ------
+    ValueError
+        On an unknown ``surface`` or an invalid ``n_samples`` (or ``seed``, for the sphere).
     """
     if surface == "sphere":
         return sample_sphere(n_samples, 4, SPHERE_RADIUS, seed), None
@@ -45,16 +66,39 @@ def crust_curvature_errors(surface: str, n_samples: int, *, seed: int = 0, area:
 
     Thesis: Theorem 3.18 and §3.3.2 (areas) on the Crust of Chapter 5's "natural next step".
 
+    Parameters
+    ----------
+    surface : {"sphere", "catenoid"}
+        Which hypersurface of R⁴ (:func:`sample_hypersurface`); the sphere is reconstructed as a
+        closed hypersurface, the catenoid piece as one with boundary.
+    n_samples : int
+        Number of random samples.
+    seed : int, default 0
+        Seed of the samples.
+    area : {"voronoi", "barycentric"}, default "voronoi"
+        The vertex region of :func:`~thesis_lib.curvature.mean_curvature` (``"mixed"`` needs n = 2
+        and is refused here).
+    theta : float, default π/4
+        The Crust's normal-filter angle (:func:`~thesis_lib.meshes.crust_nd.crust_nd`).
+
     Returns
     -------
     dict
         ``simplices``, ``points``, ``params``, ``H`` (per sample, NaN where not estimated), ``report``
-        (:class:`ManifoldReport`), ``pole_ratio``, ``estimated`` (mask of the samples with an
-        estimate: vertices whose star is a manifold ball), ``errors`` (at those, see below),
+        (:class:`~thesis_lib.meshes.crust_nd.ManifoldReport`), ``pole_ratio``, ``estimated`` (mask
+        of the samples with an estimate: vertices whose star is a manifold ball), ``errors`` (at those, see Notes),
         ``median``, ``p90``; for the catenoid also ``control_median``/``control_p90``: the same
         errors on the Delaunay triangulation of the samples' parameters (u, v, w) lifted to R⁴, a
         triangulation with no reconstruction error.
 
+    Raises
+    ------
+    ValueError
+        On an unknown ``surface`` or bad sampling parameters; ``ReconstructionError`` (a
+        ValueError) when the Crust fails (see :func:`~thesis_lib.meshes.crust_nd.crust_nd`).
+
+    Notes
+    -----
     The error is |H − 1/2| / (1/2) on the sphere, and |H| cosh² v (|H| over the largest principal
     curvature) on the catenoid, whose H = 0 has no relative error.
     """

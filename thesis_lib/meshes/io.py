@@ -11,11 +11,15 @@ from __future__ import annotations
 import os
 import tempfile
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import InvalidTypeError, as_points, check_simplices
+
+if TYPE_CHECKING:  # pyvista is slow to import: loaded on first use (_pyvista)
+    import pyvista
 
 __all__ = ["read_mesh", "write_mesh", "to_pyvista", "from_pyvista"]
 
@@ -30,19 +34,27 @@ def _pyvista():
     return pyvista
 
 
-def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike):
+def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyData:
     """A pyvista ``PolyData`` of a triangle mesh.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
 
     Parameters
     ----------
-    vertices : (nv, 3) array of points (float64 is kept).
-    faces : (m, 3) vertex indices (the row order is the orientation, kept).
+    vertices : array_like, shape (nv, 3)
+        The points, finite (float64 is kept).
+    faces : array_like of int, shape (m, 3)
+        Vertex indices of the triangles (the row order is the orientation, kept).
 
     Returns
     -------
     pyvista.PolyData
+        A copy of the vertices as its points, the triangles as its faces.
+
+    Raises
+    ------
+    ValueError
+        On invalid vertices, vertices not in R³, or faces that are not (m, 3) indices of vertices.
     """
     v = as_points(vertices, name="vertices")
     if v.shape[1] != 3:
@@ -53,19 +65,29 @@ def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike):
     return pv.PolyData(v.copy(), cells)
 
 
-def from_pyvista(mesh) -> tuple[np.ndarray, np.ndarray]:
+def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
     """``(vertices, faces)`` of a pyvista mesh; polygons and other cells are triangulated first.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
 
     Parameters
     ----------
-    mesh : pyvista.DataSet (``PolyData``, ``UnstructuredGrid``, ...): its surface is used.
+    mesh : pyvista.DataSet
+        ``PolyData``, ``UnstructuredGrid``, ...: its surface is used.
 
     Returns
     -------
-    vertices : (nv, 3) float64.
-    faces : (m, 3) int64, in the mesh's vertex order (lines and points are dropped).
+    vertices : ndarray of float64, shape (nv, 3)
+        The mesh's points.
+    faces : ndarray of int64, shape (m, 3)
+        The triangles, in the mesh's vertex order (lines and points are dropped).
+
+    Raises
+    ------
+    InvalidTypeError
+        If ``mesh`` is not a pyvista data set.
+    ValueError
+        If it has no faces, or its faces could not be triangulated.
     """
     pv = _pyvista()
     if not isinstance(mesh, pv.DataSet):
@@ -77,6 +99,8 @@ def from_pyvista(mesh) -> tuple[np.ndarray, np.ndarray]:
 
         with warnings.catch_warnings():  # pyvista announces a change of the default algorithm
             warnings.simplefilter("ignore", FutureWarning)
+            # pyvista 0.49 warns with PyVistaFutureWarning, a Warning but not a FutureWarning
+            warnings.filterwarnings("ignore", message="The default value of `algorithm`")
             surface = mesh.extract_surface()
     if np.asarray(surface.faces).size == 0:
         raise ValueError("the mesh has no faces (only points or lines)")
@@ -95,12 +119,15 @@ def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
 
     Parameters
     ----------
-    path : the file.
+    path : str or os.PathLike
+        The file; its suffix tells pyvista the format.
 
     Returns
     -------
-    vertices : (nv, 3) float64.
-    faces : (m, 3) int64 (polygons triangulated).
+    vertices : ndarray of float64, shape (nv, 3)
+        The points of the file's surface.
+    faces : ndarray of int64, shape (m, 3)
+        Its triangles (polygons triangulated), as :func:`from_pyvista` gives them.
 
     Raises
     ------
@@ -134,14 +161,26 @@ def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.Arra
 
     Parameters
     ----------
-    path : destination file (its folder must exist).
-    vertices, faces : the mesh, as in :func:`to_pyvista`.
-    binary : binary rather than ASCII where the format allows both.
+    path : str or os.PathLike
+        Destination file, with a suffix naming the format (its folder must exist).
+    vertices : array_like, shape (nv, 3)
+        The points, as in :func:`to_pyvista`.
+    faces : array_like of int, shape (m, 3)
+        The triangles, as in :func:`to_pyvista`.
+    binary : bool, default True
+        Binary rather than ASCII where the format allows both.
 
     Returns
     -------
     Path
         The file written.
+
+    Raises
+    ------
+    ValueError
+        On a path without suffix, an invalid mesh, or a format pyvista cannot write.
+    FileNotFoundError
+        If the folder of ``path`` does not exist.
     """
     p = Path(path)
     if not p.suffix:

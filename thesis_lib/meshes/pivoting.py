@@ -18,13 +18,20 @@ def estimate_normals(points: npt.ArrayLike, k: int = 10) -> np.ndarray:
 
     Parameters
     ----------
-    points : (n, 3) array, n >= 3.
-    k : number of neighbours (>= 3; at most n are used).
+    points : array_like, shape (n, 3)
+        The points, n >= 3.
+    k : int, default 10
+        Number of neighbours (the point itself among them), at least 3; at most n are used.
 
     Returns
     -------
-    ndarray, shape (n, 3)
-        Unit normals.
+    ndarray of float64, shape (n, 3)
+        Unit normals, each with a non-negative dot product with (point − centroid).
+
+    Raises
+    ------
+    ValueError
+        On invalid points, fewer than 3, points not in R³, or ``k`` < 3.
     """
     from scipy.spatial import cKDTree
 
@@ -52,16 +59,25 @@ def ball_pivoting(points: npt.ArrayLike, normals: npt.ArrayLike | None = None,
 
     Parameters
     ----------
-    points : (n, 3) array, n >= 4, no duplicates.
-    normals : (n, 3) array; default :func:`estimate_normals`.
-    radii : ball radii pivoted in turn, each pass keeping the faces of the previous ones (default
-        2, 3, 4 and 6 times the mean nearest-neighbour distance; a single radius leaves many holes
-        in random samples).
+    points : array_like, shape (n, 3)
+        The samples, n >= 4, no duplicates.
+    normals : array_like, shape (n, 3), optional
+        Normals at the samples; default :func:`estimate_normals`.
+    radii : array_like of float, optional
+        Ball radii pivoted in turn, each pass keeping the faces of the previous ones (default 2, 3,
+        4 and 6 times the mean nearest-neighbour distance; a single radius leaves many holes in
+        random samples).
 
     Returns
     -------
-    ndarray, shape (m, 3)
+    ndarray of int64, shape (m, 3)
         Faces as indices into ``points``.
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, fewer than 4, points not in R³, normals not of the points'
+        shape, or radii that are not positive finite numbers.
     """
     import pymeshlab
     from scipy.spatial import cKDTree

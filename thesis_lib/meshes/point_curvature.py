@@ -6,6 +6,7 @@ curvature; with no surface, the least-squares shape operator of §3.3.4 on k nea
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points
 from ..curvature import gaussian_curvature, mean_curvature
@@ -18,7 +19,7 @@ __all__ = ["point_curvature", "CURVATURE_ESTIMATORS"]
 CURVATURE_ESTIMATORS = ("knn", "crust")
 
 
-def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: int = 16,
+def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", kind: str = "mean", k: int = 16,
                     area: str = "mixed") -> np.ndarray:
     """Estimated curvature at every point: |H| (``kind="mean"``) or K (``"gaussian"``, surfaces in R³).
 
@@ -27,15 +28,20 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
 
     Parameters
     ----------
-    points : ``(N, n + 1)`` samples of a hypersurface (a curve in R², a surface in R³, a
-        3-manifold in R⁴).
-    estimator : ``"crust"``: reconstruct with the Crust (:func:`~thesis_lib.meshes.crust` in R³,
+    points : array_like, shape (N, n + 1)
+        Samples of a hypersurface (a curve in R², a surface in R³, a 3-manifold in R⁴), no
+        duplicates.
+    estimator : {"knn", "crust"}, default "knn"
+        ``"crust"``: reconstruct with the Crust (:func:`~thesis_lib.meshes.crust` in R³,
         :func:`~thesis_lib.meshes.crust_nd.crust_nd` otherwise) and apply the discrete formulas of
         §3.3 at its vertices; ``"knn"``: the least-squares shape operator on the ``k`` nearest
         neighbours (no surface needed).
-    kind : ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
-    k : neighbours of the ``"knn"`` estimator.
-    area : vertex area of the ``"crust"`` estimator (``"mixed"`` needs n = 2; use ``"voronoi"`` or
+    kind : {"mean", "gaussian"}, default "mean"
+        ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
+    k : int, default 16
+        Neighbours of the ``"knn"`` estimator.
+    area : {"mixed", "voronoi", "barycentric"}, default "mixed"
+        Vertex area of the ``"crust"`` estimator (``"mixed"`` needs n = 2; use ``"voronoi"`` or
         ``"barycentric"`` otherwise).
 
     Returns
@@ -44,6 +50,13 @@ def point_curvature(points, *, estimator: str = "knn", kind: str = "mean", k: in
         NaN where the estimate is undefined (``"crust"``: samples that are not vertices of the
         reconstruction, boundary vertices); :func:`thesis_lib.multiparameter.radius_curvature_bifiltration`
         refuses NaN with a clear error.
+
+    Raises
+    ------
+    ValueError
+        On invalid or duplicate points, an unknown ``estimator`` or ``kind``, ``"gaussian"`` off R³,
+        ``area="mixed"`` with the Crust off R³; from the estimator (e.g. a Crust that fails to
+        reconstruct, a ``k`` out of range).
     """
     pts = as_points(points, allow_duplicates=False)
     if estimator not in CURVATURE_ESTIMATORS:

@@ -19,15 +19,17 @@ def reconstruct_surface(
 ) -> NDArray[np.int64]:
     """Triangulate a point cloud sampled from a surface in R³; returns ``(m, 3)`` faces into ``points``.
 
+    Thesis: §3.4, "Triangulations" (the Crust, used for Figures 3.8–3.11 and 3.14).
+
     Parameters
     ----------
     points : array_like, shape (n, 3)
         The samples.
-    method : {"crust", "ball-pivoting"}
+    method : {"crust", "ball-pivoting"}, default "crust"
         The Crust algorithm [ABK98] (the thesis's choice) or ball pivoting (pymeshlab).
-    theta : float
+    theta : float, default π/4
         The Crust's normal-filter angle (ignored by ball pivoting).
-    closed : bool
+    closed : bool, default True
         Whether the surface is closed: the Crust's trimming removes triangles with a free edge, which
         would eat a surface with boundary from its border, so it is switched off when False.
 
@@ -36,7 +38,11 @@ def reconstruct_surface(
     ndarray of int, shape (m, 3)
         Faces, consistently oriented by the Crust (outward for a closed surface).
 
-    Thesis: §3.4, "Triangulations" (the Crust, used for Figures 3.8–3.11 and 3.14).
+    Raises
+    ------
+    ValueError
+        On an unknown ``method``, or from the reconstruction (:func:`~thesis_lib.meshes.crust`,
+        :func:`~thesis_lib.meshes.pivoting.ball_pivoting`).
     """
     if method == "crust":
         return crust(points, theta=theta, prune=bool(closed))

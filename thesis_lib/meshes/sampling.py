@@ -39,14 +39,26 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
 
     Parameters
     ----------
-    n : number of samples (>= 1; refused up front beyond 10⁹ coordinates).
-    R, r : the torus's radii.
-    seed : seed of the random draws.
-    return_uv : also return the parameters.
+    n : int
+        Number of samples, at least 1 (refused up front beyond 10⁹ coordinates).
+    R, r : float
+        The torus's radii, 0 < r < R (default 10 and 5, the thesis's torus).
+    seed : int, default 0
+        Seed of the rejection sampler's draws.
+    return_uv : bool, default False
+        Also return the parameters (u, v) of the samples.
 
     Returns
     -------
-    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_uv``.
+    points : ndarray of float64, shape (n, 3)
+        The samples.
+    uv : ndarray of float64, shape (n, 2)
+        Their parameters, each in [0, 2π); only when ``return_uv``.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n``, radii or ``seed``.
     """
     n = _count(n, 3)
     torus_point(0.0, 0.0, R, r)  # validates the radii
@@ -67,14 +79,27 @@ def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: in
 
     Parameters
     ----------
-    n : number of samples (>= 1).
-    v_range : (low, high) with low < high.
-    seed : seed of the random draws.
-    return_params : also return the (u, v) parameters.
+    n : int
+        How many points, at least 1.
+    v_range : (low, high), default (-1.0, 1.0)
+        The piece of the catenoid: low < high, within [-300, 300] (cosh² v overflows beyond).
+    seed : int, default 0
+        Seed of the draws (u, v and the acceptance test).
+    return_params : bool, default False
+        Also return the (u, v) parameters.
 
     Returns
     -------
-    ndarray, shape (n, 3), and the (n, 2) parameters when ``return_params``.
+    points : ndarray of float64, shape (n, 3)
+        The samples, X(u, v) of :func:`~thesis_lib.curvature.exact.catenoid_point`: uniform in
+        area, so denser in (u, v) where cosh² v is larger.
+    uv : ndarray of float64, shape (n, 2)
+        Their parameters, u in [0, 2π); only when ``return_params``.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n`` or ``seed``, or a ``v_range`` that is not such an interval.
     """
     n = _count(n, 3)
     try:
@@ -103,14 +128,24 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
 
     Parameters
     ----------
-    n : number of samples (>= 1).
-    n_dims : ambient dimension (>= 2).
-    radius : > 0.
-    seed : seed of the random draws.
+    n : int
+        Number of points, at least 1.
+    n_dims : int, default 3
+        Ambient dimension, at least 2.
+    radius : float, default 1.0
+        Radius of the sphere, > 0.
+    seed : int, default 0
+        Seed of the normal draws that are projected onto the sphere.
 
     Returns
     -------
-    ndarray, shape (n, n_dims)
+    ndarray of float64, shape (n, n_dims)
+        The samples.
+
+    Raises
+    ------
+    ValueError
+        On an invalid ``n``, ``n_dims``, ``radius`` or ``seed``.
     """
     d = check_int(n_dims, "n_dims", minimum=2)
     n = _count(n, d)
@@ -119,12 +154,42 @@ def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -
     return radius * g / np.linalg.norm(g, axis=1, keepdims=True)
 
 
-def sample_n_catenoid(n_points: int, *, dimension: int = 3, v_range=(-1.0, 1.0), w_range=(-1.0, 1.0),
-                      seed: int = 0, return_params: bool = False):
+def sample_n_catenoid(
+    n_points: int, *, dimension: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
+    w_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0, return_params: bool = False,
+) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n_points`` uniform w.r.t. volume on the piece v ∈ v_range, every w_i ∈ w_range of the
     n-catenoid (catenoid × R^{n-2}) in R^{n+1}; volume element cosh² v du dv dw.
 
     Thesis: §3.4.3 (the 3-catenoid on u ∈ [−π, π], v, r ∈ [−1, 1]), sampled at random (Chapter 5).
+
+    Parameters
+    ----------
+    n_points : int
+        Number of samples, at least 1.
+    dimension : int, default 3
+        The dimension n >= 2 of the catenoid (points in R^{n+1}).
+    v_range : (low, high), default (-1.0, 1.0)
+        Finite range of v, low < high.
+    w_range : (low, high), default (-1.0, 1.0)
+        Finite range of each extra coordinate w_i, low < high (unused for n = 2).
+    seed : int, default 0
+        Seed of the random draws (``numpy.random.default_rng``).
+    return_params : bool, default False
+        Also return the parameters of the samples.
+
+    Returns
+    -------
+    points : ndarray of float64, shape (n_points, n + 1)
+        The samples.
+    params : ndarray of float64, shape (n_points, n)
+        Their parameters (u, v, w₁, ...), u in [0, 2π); only when ``return_params``.
+
+    Raises
+    ------
+    ValueError
+        On a ``dimension`` < 2, a ``n_points`` < 1 or too large, or a range that is not a finite
+        interval low < high.
     """
     dimension = check_int(dimension, "dimension", minimum=2)
     n_points = _count(n_points, dimension + 1, "n_points")

@@ -4,11 +4,15 @@ to draw a hypersurface (and values on it) with the tools for surfaces."""
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 __all__ = ["hyperplane_slice"]
 
 
-def hyperplane_slice(vertices, simplices, values=None, *, axis: int = 3, level: float = 0.0):
+def hyperplane_slice(
+    vertices: npt.ArrayLike, simplices: npt.ArrayLike, values: npt.ArrayLike | None = None, *,
+    axis: int = 3, level: float = 0.0,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
     """Intersect the tetrahedra of a 3-manifold in R⁴ with the hyperplane x_axis = level.
 
     Each tetrahedron crossing the hyperplane meets it in a triangle (one vertex on one side) or a
@@ -19,15 +23,31 @@ def hyperplane_slice(vertices, simplices, values=None, *, axis: int = 3, level: 
 
     Parameters
     ----------
-    vertices : ``(nv, 4)`` points.
-    simplices : ``(m, 4)`` tetrahedra.
-    values : optional ``(nv,)`` per-vertex values (NaN allowed).
-    axis, level : the hyperplane x_axis = level.
+    vertices : array_like, shape (nv, 4)
+        The points.
+    simplices : array_like of int, shape (m, 4)
+        The tetrahedra (indices not checked against ``vertices``).
+    values : array_like, shape (nv,), optional
+        Per-vertex values (NaN allowed) to carry onto the slice.
+    axis : int, default 3
+        The coordinate the hyperplane fixes, 0 to 3.
+    level : float, default 0.0
+        Its value: the hyperplane is x_axis = level (a vertex exactly on it counts as below).
 
     Returns
     -------
-    ``(points, triangles, values)``: ``(k, 3)`` slice vertices (the other three coordinates),
-    ``(t, 3)`` triangles, ``(k,)`` interpolated values (or None).
+    points : ndarray of float64, shape (k, 3)
+        The slice vertices, in the other three coordinates (in order).
+    triangles : ndarray of int64, shape (t, 3)
+        The slice's triangles (not coherently oriented).
+    values : ndarray of float64, shape (k,), or None
+        The interpolated values; None when ``values`` is None.
+
+    Raises
+    ------
+    ValueError
+        If ``vertices`` or ``simplices`` is not (·, 4), ``axis`` is not 0–3, or ``values`` does not
+        have one entry per vertex.
     """
     v = np.asarray(vertices, dtype=np.float64)
     s = np.asarray(simplices, dtype=np.int64)

@@ -29,16 +29,28 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
 
     Parameters
     ----------
-    X : parametrisation mapping (m, n) parameters to (m, n + 1) points.
-    params : (k, n) parameter points.
-    epsilon : grid step (> 0).
+    X : callable
+        Parametrisation mapping (m, n) parameters to (m, n + 1) points, vectorised.
+    params : array_like, shape (k, n)
+        The parameter points w, finite.
+    epsilon : float
+        Grid step ε > 0.
 
     Returns
     -------
-    vertices : (k(2n+1), n+1); vertex ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and
-        X(w_j - ε e_i) for i = 0..n-1.
-    simplices : (k·2^n, n+1).
-    centres : (k,).
+    vertices : ndarray of float64, shape (k(2n+1), n+1)
+        Vertex ``centres[j]`` is X(w_j), followed by X(w_j + ε e_i) and X(w_j - ε e_i) for
+        i = 0..n-1.
+    simplices : ndarray of int, shape (k·2^n, n+1)
+        The 2^n simplices of each star, centre first; star j is rows j·2^n to (j+1)·2^n − 1.
+    centres : ndarray of int, shape (k,)
+        Index of each centre X(w_j) among the vertices.
+
+    Raises
+    ------
+    ValueError
+        On invalid ``params``, a non-positive ``epsilon``, stars too large to build, or an ``X``
+        that does not map (m, n) to (m, n + 1) (``InvalidTypeError`` if it is not callable).
     """
     w = as_points(params, name="params")
     epsilon = check_real(epsilon, "epsilon", positive=True)
@@ -79,13 +91,25 @@ def neighbour_grid_mean_curvature(
 
     Parameters
     ----------
-    X, params, epsilon
-        As in :func:`cross_stars`.
-    method : "gram" or "cot".
+    X : callable
+        Parametrisation (m, n) -> (m, n + 1), as in :func:`cross_stars`.
+    params : array_like, shape (k, n)
+        Where |H| is wanted.
+    epsilon : float
+        The grid step ε of the neighbours X(w ± ε e_i).
+    method : {"gram", "cot"}, default "gram"
+        The gradient formula of :func:`thesis_lib.curvature.mean_curvature_vector`.
 
     Returns
     -------
-    ndarray, shape (k,)
+    ndarray of float64, shape (k,)
+        The estimated |H| at each X(w).
+
+    Raises
+    ------
+    ValueError
+        As :func:`cross_stars`, on an unknown ``method``, or when a star is not a valid mesh (e.g.
+        degenerate simplices where the parametrisation is singular).
     """
     from ..curvature import mean_curvature_vector, simplex_hyperareas
 

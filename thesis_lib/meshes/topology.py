@@ -23,8 +23,10 @@ def faces_of(simplices: npt.ArrayLike, k: int) -> np.ndarray:
 
     Parameters
     ----------
-    simplices : (m, n + 1) vertex indices.
-    k : face dimension, 0 <= k <= n.
+    simplices : array_like of int, shape (m, n + 1)
+        Vertex indices of the simplices (checked).
+    k : int
+        Face dimension, 0 <= k <= n.
 
     Returns
     -------
@@ -45,11 +47,13 @@ def euler_characteristic(simplices: npt.ArrayLike) -> int:
 
     Parameters
     ----------
-    simplices : (m, n + 1) vertex indices of the top simplices.
+    simplices : array_like of int, shape (m, n + 1)
+        Vertex indices of the top simplices; the complex is all their faces.
 
     Returns
     -------
     int
+        χ of that complex.
     """
     s = _simplices(simplices)
     return int(sum((-1) ** k * len(faces_of(s, k)) for k in range(s.shape[1])))
@@ -62,7 +66,8 @@ def facet_degrees(simplices: npt.ArrayLike) -> np.ndarray:
 
     Parameters
     ----------
-    simplices : (m, n + 1) vertex indices, n >= 1.
+    simplices : array_like of int, shape (m, n + 1)
+        The n-simplices' vertex indices, n >= 1 (checked).
 
     Returns
     -------
@@ -85,10 +90,12 @@ def is_closed_pseudomanifold(simplices: npt.ArrayLike) -> bool:
 
     Parameters
     ----------
-    simplices : (m, n + 1) vertex indices, n >= 1.
+    simplices : array_like of int, shape (m, n + 1)
+        Vertex indices of the n-simplices, n >= 1, as in :func:`facet_degrees`.
 
     Returns
     -------
     bool
+        Whether every facet degree is 2 (orientation and vertex links are not checked).
     """
     return bool(np.all(facet_degrees(simplices) == 2))

@@ -12,12 +12,21 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 
 import numpy as np
+import numpy.typing as npt
 import scipy.sparse as sp
 
 from ..filtration import Filtration, as_complex
 from ..simplicial import as_simplex_array, facets, find_rows
 
 Simplex = tuple[int, ...]
+
+#: a complex in any form :func:`thesis_lib.filtration.as_complex` accepts: a ``Filtration`` (values
+#: optional), an iterable of simplices (vertex tuples; all faces are added), an ``(m, k + 1)``
+#: integer array or a list of per-dimension integer arrays
+ComplexLike = Filtration | Iterable[Sequence[int]] | npt.NDArray[np.integer] | Sequence[npt.NDArray[np.integer]]
+
+#: a discrete vector field: pairs ``(sigma, tau)`` of simplices, sigma a facet of tau (Definition 4.33)
+Pairs = Iterable[tuple[Sequence[int], Sequence[int]]]
 
 
 class CellComplex:

@@ -22,6 +22,11 @@ def rp2_gradient_field() -> list[tuple[Simplex, Simplex]]:
 
     The figure itself is not in the text; this field is one that matches every statement the text
     makes about it (τ = ace, vertices flowing to a along a spanning tree).
+
+    Returns
+    -------
+    list of (tuple, tuple)
+        The 14 pairs ``(sigma, tau)`` of the field, sigma a facet of tau.
     """
     return [
         ((0, 3), (0, 3, 5)), ((0, 4), (0, 1, 4)), ((0, 5), (0, 2, 5)), ((1,), (0, 1)),
@@ -37,6 +42,13 @@ def rp2_chart() -> dict[Simplex, list[tuple[float, float]]]:
     points identified.  Maps each triangle (sorted vertices) to the positions of its vertices.
 
     Thesis: Figure 2.7 (triangulation of RP²), used to draw Figure 4.6.
+
+    Returns
+    -------
+    dict of tuple to list of (float, float)
+        For each triangle of ``RP2_FACETS``, the (x, y) positions of its three vertices, in the
+        triangle's vertex order; the chart argument of
+        :func:`~thesis_lib.morse.plotting.draw_gradient_field`.
     """
     import numpy as np
 
@@ -61,6 +73,13 @@ def example_4_45() -> tuple[list[Simplex], list[tuple[Simplex, Simplex]]]:
     Thesis: Example 4.45 / Figures 4.7–4.8 (two critical simplices, so K ≃ S¹ by Example 4.29).
     The complex of Figure 4.7 is not in the text; this one (a filled triangle 123 with a path
     2–4–3) has the stated critical simplices.
+
+    Returns
+    -------
+    simplices : list of tuple
+        The facets (123, 24, 34).
+    pairs : list of (tuple, tuple)
+        The acyclic vector field, pairs ``(sigma, tau)``.
     """
     simplices = [(1, 2, 3), (2, 4), (3, 4)]
     pairs = [((1,), (1, 2)), ((1, 3), (1, 2, 3)), ((3,), (3, 4)), ((4,), (2, 4))]
@@ -70,15 +89,36 @@ def example_4_45() -> tuple[list[Simplex], list[tuple[Simplex, Simplex]]]:
 COMPLEX_NAMES = ("rp2", "torus", "klein", "dunce-hat", "random-flag", "rips")
 
 
-def experiment_complex(name: str, seed: int = 0):
+def experiment_complex(name: str, seed: int = 0) -> tuple[
+    list[Simplex], dict[int, tuple[float, float]] | None, dict[Simplex, list[tuple[float, float]]] | None
+]:
     """The complexes of the ``rp2-morse`` experiment: ``(facets, positions, chart)``.
 
     Thesis: §4.2 (RP² of Example 4.43; other triangulations of §2.2.1; small flag and Rips complexes).
 
-    ``positions`` maps vertices to the plane for point-cloud complexes (else ``None``); ``chart`` is
-    the disc picture of RP² (else ``None``).  ``random-flag``: the flag complex of 14 uniform points
-    in the unit square at ε = 0.2 (edges of length ≤ 0.4); ``rips``: the Rips complex of
-    ``two_circles(30, seed)`` at ε = 0.3, both up to dimension 2.
+    Parameters
+    ----------
+    name : str
+        One of ``COMPLEX_NAMES``: ``"rp2"``, ``"torus"``, ``"klein"``, ``"dunce-hat"``,
+        ``"random-flag"`` (the flag complex of 14 uniform points in the unit square at ε = 0.2,
+        edges of length ≤ 0.4) or ``"rips"`` (the Rips complex of ``two_circles(30, seed)`` at
+        ε = 0.3), both up to dimension 2.
+    seed : int, default 0
+        The random draw of the point-cloud complexes (ignored by the triangulations).
+
+    Returns
+    -------
+    facets : list of tuple
+        The simplices (for the point-cloud complexes every simplex, in filtration order).
+    positions : dict of int to (float, float) or None
+        Vertex → plane position for the point-cloud complexes, else None.
+    chart : dict or None
+        The disc picture of RP² (:func:`rp2_chart`) for ``"rp2"``, else None.
+
+    Raises
+    ------
+    ValueError
+        An unknown name.
     """
     from ..complexes.rips import rips
     from ..datasets import dunce_hat, klein_bottle, torus, two_circles

@@ -7,35 +7,72 @@ dimension, then lexicographically, oriented by ascending vertices as in Definiti
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 import scipy.sparse as sp
 
-from ._cells import Simplex, cell_complex, partner_array
-from .vector_field import Pairs
+from ._cells import ComplexLike, Pairs, Simplex, cell_complex, partner_array
 
 __all__ = ["cells", "boundary_operator", "gradient_matrix", "gradient_flow", "stabilised_flow", "is_flow_invariant"]
 
 
-def cells(simplices) -> list[Simplex]:
+def cells(simplices: ComplexLike) -> list[Simplex]:
     """The basis used by :func:`gradient_matrix` and :func:`gradient_flow`: all simplices of the
     complex, by dimension then lexicographically.
 
     Thesis: §4.2.3 (C_k is the free Abelian group on the k-simplices, cells orthonormal).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex whose simplices form the basis (all faces are added).
+
+    Returns
+    -------
+    list of tuple
+        The n simplices (ascending vertices) in basis order.
     """
     return cell_complex(simplices).simplices()
 
 
-def boundary_operator(simplices) -> sp.csc_matrix:
+def boundary_operator(simplices: ComplexLike) -> sp.csc_matrix:
     """The boundary ∂ on the whole chain complex as one (n × n) integer matrix in the basis :func:`cells`.
 
     Thesis: Definition 2.18 (∂σ = Σ <∂σ, γ> γ, §4.2.3).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex, in any form :func:`cells` takes.
+
+    Returns
+    -------
+    scipy.sparse.csc_matrix of int64, shape (n, n)
+        ``D[face, cell] = <∂ cell, face>`` ∈ {−1, 0, 1}; a copy, free to modify.
     """
     return cell_complex(simplices).D.copy()
 
 
-def gradient_matrix(simplices, pairs: Pairs) -> sp.csc_matrix:
+def gradient_matrix(simplices: ComplexLike, pairs: Pairs) -> sp.csc_matrix:
     """The discrete gradient vector field V as an (n × n) integer matrix: V(σ) = -<∂τ, σ> τ for {σ < τ}.
 
     Thesis: Definition 4.30 (and Definition 4.33 for the pairs).
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field that V encodes, sigma a facet of tau (Definition 4.33).
+
+    Returns
+    -------
+    scipy.sparse.csc_matrix of int64, shape (n, n)
+        V in the basis :func:`cells`: column σ holds −<∂τ, σ> in row τ for each pair; zero columns
+        for the other cells.
+
+    Raises
+    ------
+    ValueError
+        An invalid vector field (a pair that is not a facet of codimension one, a simplex in two
+        pairs or not in the complex).
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -47,10 +84,25 @@ def gradient_matrix(simplices, pairs: Pairs) -> sp.csc_matrix:
     return v
 
 
-def gradient_flow(simplices, pairs: Pairs) -> sp.csc_matrix:
+def gradient_flow(simplices: ComplexLike, pairs: Pairs) -> sp.csc_matrix:
     """The discrete gradient flow Φ = id + ∂∘V + V∘∂ as an (n × n) integer matrix.
 
     Thesis: Definition 4.31.
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field; Φ is built from :func:`gradient_matrix` of them.
+
+    Returns
+    -------
+    scipy.sparse.csc_matrix of int64, shape (n, n)
+        Φ in the basis :func:`cells` (explicit zeros removed).
+
+    Raises
+    ------
+    ValueError
+        The pairs are not a vector field on the complex (see :func:`gradient_matrix`).
     """
     cx = cell_complex(simplices)
     v = gradient_matrix(cx, pairs)
@@ -65,13 +117,30 @@ def _equal(a: sp.spmatrix, b: sp.spmatrix) -> bool:
     return (a != b).nnz == 0
 
 
-def stabilised_flow(simplices, pairs: Pairs, max_iter: int | None = None) -> tuple[sp.csc_matrix, int]:
+def stabilised_flow(simplices: ComplexLike, pairs: Pairs, max_iter: int | None = None) -> tuple[sp.csc_matrix, int]:
     """Φ^∞ = Φ^N for the first N with Φ^N = Φ^{N+1}, and that N.
 
     Thesis: Theorem 4.38 (Φ^N(c) = Φ^{N+1}(c) = ... = Φ^∞(c) for N large).
 
-    Raises ValueError if Φ has not stabilised after ``max_iter`` (default: number of cells + 1)
-    steps, which happens for a vector field with a closed V-path.
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field (a closed V-path keeps Φ^N from stabilising).
+    max_iter : int, optional
+        Largest power tried; default the number of cells + 1.
+
+    Returns
+    -------
+    phi_infinity : scipy.sparse.csc_matrix of int64, shape (n, n)
+        Φ^∞ in the basis :func:`cells`.
+    n : int
+        The first N with Φ^N = Φ^{N+1}.
+
+    Raises
+    ------
+    ValueError
+        Φ has not stabilised after ``max_iter`` steps, which happens for a vector field with a
+        closed V-path; an invalid vector field.
     """
     cx = cell_complex(simplices)
     phi = gradient_flow(cx, pairs)
@@ -87,10 +156,27 @@ def stabilised_flow(simplices, pairs: Pairs, max_iter: int | None = None) -> tup
     raise ValueError(f"Φ^N did not stabilise within {limit} steps: is the vector field acyclic (Theorem 4.36)?")
 
 
-def is_flow_invariant(simplices, pairs: Pairs, chain) -> bool:
+def is_flow_invariant(simplices: ComplexLike, pairs: Pairs, chain: npt.ArrayLike) -> bool:
     """True when the chain (a length-n integer vector in the basis :func:`cells`) satisfies Φ(c) = c.
 
     Thesis: §4.2.4 (Φ-invariant chains form the Morse complex C^Φ).
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field that define Φ (see :func:`gradient_flow`).
+    chain : array_like of int, shape (n,)
+        Coefficients of the chain in the basis :func:`cells` (cast to int64).
+
+    Returns
+    -------
+    bool
+        Whether Φ(c) = c exactly.
+
+    Raises
+    ------
+    ValueError
+        A chain of the wrong length, or an invalid vector field.
     """
     cx = cell_complex(simplices)
     c = np.asarray(chain)

@@ -9,7 +9,7 @@ import numpy as np
 
 from .._validate import vertex_label
 from ..filtration import Filtration
-from ._cells import CellComplex, Simplex, cell_complex, partner_array
+from ._cells import CellComplex, ComplexLike, Pairs, Simplex, cell_complex, partner_array
 from ._gradient import acyclic_ranks, hasse_edges
 from ._kernels import topological_rank
 
@@ -93,7 +93,16 @@ def check_discrete_morse_function(values: Values) -> None:
 
     Thesis: Definition 4.20 (#{τ > σ : f(τ) ≤ f(σ)} ≤ 1 and #{γ < σ : f(γ) ≥ f(σ)} ≤ 1).
 
-    Also raises when ``values`` is not a finite value for every simplex of a complex.
+    Parameters
+    ----------
+    values : mapping or Filtration
+        The function to check, in a form :func:`is_discrete_morse_function` accepts.
+
+    Raises
+    ------
+    ValueError
+        A simplex breaks condition 1 or 2 of Definition 4.20 (named in the message), or ``values``
+        is not a finite value for every simplex of a complex.
     """
     _checked(values)
 
@@ -105,13 +114,20 @@ def is_discrete_morse_function(values: Values) -> bool:
 
     Parameters
     ----------
-    values : a mapping simplex -> value over every simplex of a complex, or a
+    values : mapping or Filtration
+        The function: a mapping simplex -> value over every simplex of a complex, or a
         :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
 
     Returns
     -------
-    bool.  Malformed input (missing faces, NaN, non-simplices, non-integer vertex labels) raises
-    ValueError rather than returning False.
+    bool
+        Whether both conditions of Definition 4.20 hold at every simplex.
+
+    Raises
+    ------
+    ValueError
+        Malformed input (missing faces, NaN, non-simplices, non-integer vertex labels) raises
+        rather than returning False.
     """
     cx, f = _prepare(values)
     _, _, n_up, n_down = _violations(cx, f)
@@ -123,7 +139,20 @@ def critical_simplices(values: Values) -> list[Simplex]:
 
     Thesis: Definition 4.21 (no coface with f(τ) ≤ f(σ) and no face with f(γ) ≥ f(σ)).
 
-    ``values`` as in :func:`is_discrete_morse_function`; ValueError if it is not a discrete Morse function.
+    Parameters
+    ----------
+    values : mapping or Filtration
+        A discrete Morse function (see :func:`is_discrete_morse_function` for the forms).
+
+    Returns
+    -------
+    list of tuple
+        The critical simplices (ascending vertices).
+
+    Raises
+    ------
+    ValueError
+        ``values`` is malformed or not a discrete Morse function.
     """
     cx, _, _, n_up, n_down = _checked(values)
     return [cx.simplex(int(g)) for g in np.flatnonzero((n_up == 0) & (n_down == 0))]
@@ -135,7 +164,21 @@ def gradient_pairs(values: Values) -> list[tuple[Simplex, Simplex]]:
     Thesis: Definition 4.30 (V(σ) = -<∂τ, σ>τ when f(τ) ≤ f(σ)); each simplex is in at most one
     pair by Lemma 4.22, so the pairs form a discrete vector field (Definition 4.33).
 
-    ``values`` as in :func:`is_discrete_morse_function`; ValueError if it is not a discrete Morse function.
+    Parameters
+    ----------
+    values : mapping or Filtration
+        The discrete Morse function whose gradient is wanted (a mapping simplex -> value or a
+        Filtration with values, as in :func:`is_discrete_morse_function`).
+
+    Returns
+    -------
+    list of (tuple, tuple)
+        The pairs ``(sigma, tau)``, ordered by sigma (dimension, then lexicographically), then tau.
+
+    Raises
+    ------
+    ValueError
+        As :func:`critical_simplices`.
     """
     cx, face, cell, _, _ = _checked(values)
     order = np.lexsort((cell, face))
@@ -147,7 +190,23 @@ def sublevel_complex(values: Values, a: float) -> list[Simplex]:
 
     Thesis: §4.2.2, K^a = ∪_{f(σ) ≤ a} ∪_{τ ≤ σ} τ (Theorems 4.25–4.26).
 
-    Returns the simplices of K^a by dimension then lexicographically (empty list if none).
+    Parameters
+    ----------
+    values : mapping or Filtration
+        Any function on the simplices of a complex, in a form :func:`is_discrete_morse_function`
+        accepts; it need not be a discrete Morse function.
+    a : float
+        The level.
+
+    Returns
+    -------
+    list of tuple
+        The simplices of K^a by dimension then lexicographically (empty list if none).
+
+    Raises
+    ------
+    ValueError
+        ``a`` is NaN, or ``values`` is malformed.
     """
     a = float(a)
     if math.isnan(a):
@@ -163,13 +222,28 @@ def sublevel_complex(values: Values, a: float) -> list[Simplex]:
     return [cx.simplex(int(g)) for g in np.flatnonzero(keep)]
 
 
-def discrete_morse_function(simplices, pairs) -> dict[Simplex, float]:
+def discrete_morse_function(simplices: ComplexLike, pairs: Pairs) -> dict[Simplex, float]:
     """A discrete Morse function whose gradient vector field is the given acyclic field.
 
     Thesis: Theorem 4.36 (acyclic fields are gradients), built from a topological order of the
     modified Hasse diagram of Theorem 4.44: every edge u → v gets f(u) > f(v).
 
-    Values are the integers 1..n.  Raises ValueError if the field has a closed V-path.
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex (all faces are added).
+    pairs : iterable of (sigma, tau)
+        The acyclic discrete vector field, sigma a facet of tau (Definition 4.33).
+
+    Returns
+    -------
+    dict of tuple to float
+        f on every simplex of the complex; the values are the integers 1..n (as floats).
+
+    Raises
+    ------
+    ValueError
+        The field has a closed V-path (named), or is not a valid vector field.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

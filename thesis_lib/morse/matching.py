@@ -11,8 +11,9 @@ import heapq
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 
-from ._cells import CellComplex, Simplex, cell_complex, pairs_from_partner, partner_array
+from ._cells import CellComplex, ComplexLike, Pairs, Simplex, cell_complex, pairs_from_partner, partner_array
 from ._kernels import greedy_partner
 
 __all__ = ["morse_matching", "critical_counts"]
@@ -104,7 +105,7 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
 
 
 def morse_matching(
-    simplices, method: str = "coreduction", values=None, seed: int | None = None
+    simplices: ComplexLike, method: str = "coreduction", values: npt.ArrayLike | None = None, seed: int | None = None
 ) -> list[tuple[Simplex, Simplex]]:
     """An acyclic matching (gradient vector field) with few critical simplices.
 
@@ -112,20 +113,32 @@ def morse_matching(
 
     Parameters
     ----------
-    simplices : the complex (all faces are added).
-    method : ``"coreduction"`` (default; greedy coreductions, a lowest-dimensional cell made critical
-        when none is possible — one critical vertex per connected component), ``"collapse"``
-        (greedy elementary collapses from free faces, a top-dimensional cell made critical when
-        stuck) or ``"lower-star"`` (ProcessLowerStars of Robins–Wood–Sheppard 2011 on the
-        lower-star filtration of ``values``; every pair lies in one lower star).
-    values : vertex values (indexed by vertex number), required for ``"lower-star"``; ties are
-        broken by vertex index.
-    seed : random tie-breaking of the greedy methods (``None``: deterministic order).
+    simplices : Filtration or iterable of simplices
+        The complex (all faces are added).
+    method : {"coreduction", "collapse", "lower-star"}, default "coreduction"
+        ``"coreduction"``: greedy coreductions, a lowest-dimensional cell made critical when none
+        is possible — one critical vertex per connected component.  ``"collapse"``: greedy
+        elementary collapses from free faces, a top-dimensional cell made critical when stuck.
+        ``"lower-star"``: ProcessLowerStars of Robins–Wood–Sheppard 2011 on the lower-star
+        filtration of ``values``; every pair lies in one lower star.
+    values : array_like, shape (n_vertices,), optional
+        Finite vertex values (indexed by vertex number), required for ``"lower-star"`` and refused
+        by the other methods; ties are broken by vertex index.
+    seed : int, optional
+        Random tie-breaking of the greedy methods (``None``: deterministic order).
 
     Returns
     -------
-    The pairs ``(sigma, tau)``, sigma a facet of tau, sorted.  The optimum is NP-hard to reach;
-    the greedy result is only guaranteed to be acyclic.
+    list of (tuple, tuple)
+        The pairs ``(sigma, tau)``, sigma a facet of tau, ordered by sigma (dimension, then
+        lexicographically).  The optimum is NP-hard to reach; the result is only guaranteed to be
+        acyclic.
+
+    Raises
+    ------
+    ValueError
+        An unknown method, ``values`` missing for (or given to) a method, or vertex values that are
+        not finite, not 1-D or do not cover every vertex.
     """
     if method not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
@@ -141,10 +154,20 @@ def morse_matching(
     return pairs_from_partner(cx, partner)
 
 
-def critical_counts(simplices, pairs) -> list[int]:
+def critical_counts(simplices: ComplexLike, pairs: Pairs) -> list[int]:
     """Number of critical simplices per dimension (Crit_k^d) of a vector field.
 
     Thesis: Theorem 4.27 (weak discrete Morse inequalities β_k ≤ Crit_k^d).
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and a vector field on it; a simplex in no pair is critical.
+
+    Returns
+    -------
+    list of int
+        ``out[k]`` the number of critical k-simplices, k = 0..dim K.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

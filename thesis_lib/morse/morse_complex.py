@@ -5,36 +5,48 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 import scipy.sparse as sp
 
 from .._validate import MAX_EXACT_PRIME, check_coefficients
 from ..smith import rank_mod_p, smith_normal_form
-from ._cells import Simplex, cell_complex, partner_array
+from ._cells import ComplexLike, Pairs, Simplex, cell_complex, partner_array
 from ._gradient import morse_boundary_ids
-from .vector_field import Pairs
 
 __all__ = ["morse_boundary", "morse_homology", "chain_complex_homology"]
 
 
-def morse_boundary(simplices, pairs: Pairs, coefficients: int = 0) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
+def morse_boundary(simplices: ComplexLike, pairs: Pairs,
+                   coefficients: int = 0) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
     """Critical simplices per dimension and the Morse boundary ∂̃_k : M_k → M_{k-1} between them.
 
     Thesis: Theorem 4.42 (∂̃τ = Σ_σ σ · Σ_{γ ∈ Γ(τ, σ)} m(γ)), gradient paths of Definition 4.34.
 
     Parameters
     ----------
-    simplices : the complex (all faces are added).
-    pairs : the acyclic discrete vector field, pairs ``(sigma, tau)``.
-    coefficients : 0 for Z, a prime p for Z/p (entries reduced to 0..p-1).
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it, whose critical simplices span the Morse
+        complex.
+    coefficients : int, default 0
+        0 for Z, a prime p for Z/p (entries reduced to 0..p-1).
 
     Returns
     -------
-    critical : ``critical[k]`` lists the critical k-simplices (lexicographic order).
-    boundaries : ``boundaries[k]`` is the integer sparse matrix of ∂̃_k (rows: critical
-        (k-1)-simplices, columns: critical k-simplices); ``boundaries[0]`` has no rows.
+    critical : list of list of tuple
+        ``critical[k]`` lists the critical k-simplices (lexicographic order).
+    boundaries : list of scipy.sparse.csc_matrix
+        ``boundaries[k]`` is the int64 sparse matrix of ∂̃_k (rows: critical (k-1)-simplices,
+        columns: critical k-simplices); ``boundaries[0]`` has no rows.
 
+    Raises
+    ------
+    ValueError
+        A cyclic or invalid vector field, or coefficients neither 0 nor a prime.
+
+    Notes
+    -----
     Orientations are those of Definition 2.18 (vertices ascending).  Integer entries are exact in
-    int64 (sums of ±1 over gradient paths).  Raises ValueError for a cyclic field.
+    int64 (sums of ±1 over gradient paths).
     """
     p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     cx = cell_complex(simplices)
@@ -78,13 +90,31 @@ def _first_nonzero_of_product(a: sp.csc_matrix, b: sp.csc_matrix, p: int) -> tup
     return None
 
 
-def chain_complex_homology(boundaries: Sequence, coefficients: int = 0) -> list[tuple[int, list[int]]]:
+def chain_complex_homology(boundaries: Sequence[npt.ArrayLike | sp.spmatrix],
+                           coefficients: int = 0) -> list[tuple[int, list[int]]]:
     """Homology of a finite chain complex given by its boundary matrices ``boundaries[k]: C_k → C_{k-1}``.
 
     Thesis: Definition 2.19 / Theorem 2.20 (Betti numbers and torsion from Smith normal forms).
 
-    ``boundaries[0]`` gives the number of 0-chains by its column count.  Returns, per dimension,
-    ``(betti, torsion)`` like :func:`thesis_lib.homology.homology`.
+    Parameters
+    ----------
+    boundaries : sequence of array_like or scipy.sparse matrices
+        ``boundaries[k]`` the integer matrix of ∂_k (rows: (k-1)-cells, columns: k-cells);
+        ``boundaries[0]`` gives the number of 0-chains by its column count.  Consecutive shapes
+        must match and ∂_{k-1}∂_k = 0 (exactly over Z, mod p over Z/p).
+    coefficients : int, default 0
+        0 for Z (Smith normal form, with torsion), a prime p for Z/p.
+
+    Returns
+    -------
+    list of (int, list of int)
+        Per dimension ``(betti, torsion)``, like :func:`thesis_lib.homology.homology`.
+
+    Raises
+    ------
+    ValueError
+        Not a sequence of 2-D integer matrices, mismatched shapes, ∂∂ ≠ 0 (an entry named), an
+        empty complex, or coefficients neither 0 nor a prime.
     """
     p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
     if isinstance(boundaries, (str, bytes)) or not isinstance(boundaries, Sequence):
@@ -130,13 +160,28 @@ def chain_complex_homology(boundaries: Sequence, coefficients: int = 0) -> list[
     return out
 
 
-def morse_homology(simplices, pairs: Pairs, coefficients: int = 0) -> list[tuple[int, list[int]]]:
+def morse_homology(simplices: ComplexLike, pairs: Pairs, coefficients: int = 0) -> list[tuple[int, list[int]]]:
     """Homology from the critical simplices and the gradient paths between them.
 
     Thesis: Theorem 4.42 with Theorems 4.39 and 4.41 (H_k of the Morse complex ≅ H_k(K)).
 
-    Same format as :func:`thesis_lib.homology.homology`: a list over dimensions of
-    ``(betti, torsion)``.  Raises ValueError if the vector field has a closed V-path.
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it, e.g. from
+        :func:`~thesis_lib.morse.matching.morse_matching`; passed to :func:`morse_boundary`.
+    coefficients : int, default 0
+        0 for Z, a prime p for Z/p.
+
+    Returns
+    -------
+    list of (int, list of int)
+        Per dimension ``(betti, torsion)``, the format of :func:`thesis_lib.homology.homology`.
+
+    Raises
+    ------
+    ValueError
+        The vector field has a closed V-path or is invalid; coefficients neither 0 nor a prime.
     """
     _, mats = morse_boundary(simplices, pairs, coefficients)
     return chain_complex_homology(mats, coefficients)

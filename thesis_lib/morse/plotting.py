@@ -3,18 +3,34 @@
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ._cells import cell_complex, partner_array
+from ._cells import ComplexLike, Pairs, cell_complex, partner_array
+
+if TYPE_CHECKING:  # matplotlib is imported only by whoever draws
+    from matplotlib.axes import Axes
 
 __all__ = ["draw_gradient_field", "draw_hasse_diagram", "spectral_layout"]
 
 
-def spectral_layout(simplices) -> dict[int, tuple[float, float]]:
+def spectral_layout(simplices: ComplexLike) -> dict[int, tuple[float, float]]:
     """Plane positions of the vertices from two Laplacian eigenvectors of the 1-skeleton.
 
     Thesis: none (a drawing aid for Figures 4.4/4.6 when a complex has no natural picture).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex; only its 1-skeleton (the graph) matters.
+
+    Returns
+    -------
+    dict of int to (float, float)
+        Vertex label → (x, y): the eigenvectors of the second and third smallest eigenvalues of
+        the graph Laplacian (signs fixed so that each coordinate's entry of largest magnitude is
+        positive); for fewer than three vertices, their order along the x-axis.
     """
     cx = cell_complex(simplices)
     verts = cx.arrays[0][:, 0]
@@ -32,20 +48,45 @@ def spectral_layout(simplices) -> dict[int, tuple[float, float]]:
 
 
 def draw_gradient_field(
-    ax,
-    simplices,
-    pairs,
+    ax: Axes,
+    simplices: ComplexLike,
+    pairs: Pairs,
     positions: Mapping[int, Sequence[float]] | None = None,
     chart: Mapping[tuple[int, ...], Sequence[Sequence[float]]] | None = None,
     labels: Mapping[int, str] | None = None,
-):
+) -> Axes:
     """Draw a 2-dimensional complex with its vector field: an arrow σ → τ for each pair, critical
     simplices in red (vertices as dots, edges thick, triangles shaded).
 
     Thesis: Figures 4.4 and 4.6 (arrows from σ to τ when f(τ) ≤ f(σ), Definition 4.30).
 
-    Give either ``positions`` (vertex → (x, y)) or ``chart`` (triangle → corner positions, for
-    complexes such as RP² drawn with identified boundary, see :func:`~thesis_lib.morse.examples.rp2_chart`).
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    simplices : Filtration or iterable of simplices
+        A complex of dimension at most 2 (all faces are added).
+    pairs : iterable of (sigma, tau)
+        The discrete vector field, sigma a facet of tau.
+    positions : mapping of int to (float, float), optional
+        Vertex → (x, y); default :func:`spectral_layout`.  Ignored when ``chart`` is given.
+    chart : mapping of tuple to sequence of (float, float), optional
+        Triangle → positions of its corners, for complexes such as RP² drawn with identified
+        boundary (see :func:`~thesis_lib.morse.examples.rp2_chart`); only the charted triangles
+        and their faces are drawn.
+    labels : mapping of int to str, optional
+        Vertex names written beside the vertices (a vertex not in it is written as its number);
+        no names when None.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``, equal aspect and axes off.
+
+    Raises
+    ------
+    ValueError
+        A complex of dimension > 2, or an invalid vector field.
     """
     cx = cell_complex(simplices)
     if cx.dimension > 2:
@@ -102,12 +143,34 @@ def draw_gradient_field(
     return ax
 
 
-def draw_hasse_diagram(ax, simplices, pairs=(), names: Mapping[tuple[int, ...], str] | None = None):
+def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
+                       names: Mapping[tuple[int, ...], str] | None = None) -> Axes:
     """The (modified) Hasse diagram: one row per dimension, an edge τ → σ for each facet, reversed
     (red, upwards) for the pairs of the vector field; critical simplices boxed in red (only when
     a field is given).
 
     Thesis: §4.2.6, Figures 4.7–4.8 and Theorem 4.44.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    simplices : Filtration or iterable of simplices
+        A small complex (all faces are added): every simplex is a labelled box.
+    pairs : iterable of (sigma, tau), default ()
+        The discrete vector field; empty draws the plain Hasse diagram.
+    names : mapping of tuple to str, optional
+        Simplex (ascending vertices) → label; default the concatenated vertex numbers.
+
+    Returns
+    -------
+    matplotlib.axes.Axes
+        ``ax``, axes off.
+
+    Raises
+    ------
+    ValueError
+        The pairs are not a discrete vector field on the complex.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

@@ -11,12 +11,14 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 import scipy.sparse as sp
 
 from .._validate import InvalidTypeError, resolve_coefficients
 from ..filtration import Filtration, as_complex
+from ..persistence.barcode import Barcode
 from ..persistence.chains import chain_persistence
-from ._cells import CellComplex, partner_array
+from ._cells import CellComplex, ComplexLike, Pairs, Simplex, partner_array
 from ._gradient import morse_boundary_ids
 from ._kernels import greedy_partner
 
@@ -29,13 +31,28 @@ def _cells_and_values(filt: Filtration) -> tuple[CellComplex, np.ndarray]:
     return cx, (cx.values if cx.values is not None else np.zeros(cx.n))
 
 
-def lower_star_filtration(simplices, vertex_values) -> Filtration:
+def lower_star_filtration(simplices: ComplexLike, vertex_values: npt.ArrayLike) -> Filtration:
     """The lower-star filtration: each simplex enters at the largest value of its vertices.
 
     Thesis: §4.2.6 context (discrete Morse functions from vertex values; ProcessLowerStars).
 
-    ``simplices``: any complex (a ``Filtration``, whose values are replaced, or simplices; all faces
-    are added).  Raises ValueError for NaN/inf values or values not covering every vertex.
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        Any complex (a ``Filtration``, whose values are replaced, or simplices; all faces are
+        added).
+    vertex_values : array_like, shape (n_vertices,)
+        One finite value per vertex label 0..max label.
+
+    Returns
+    -------
+    Filtration
+        The same simplices, each with the largest value of its vertices.
+
+    Raises
+    ------
+    ValueError
+        NaN/inf values, values that are not 1-D, or values not covering every vertex.
     """
     arrays = as_complex(simplices).simplices
     vals = np.asarray(vertex_values, dtype=np.float64)
@@ -49,7 +66,7 @@ def lower_star_filtration(simplices, vertex_values) -> Filtration:
     return Filtration(arrays, [vals[a].max(axis=1) for a in arrays], validate=False)
 
 
-def filtration_matching(filtration) -> list[tuple[tuple[int, ...], tuple[int, ...]]]:
+def filtration_matching(filtration: ComplexLike) -> list[tuple[Simplex, Simplex]]:
     """An acyclic matching of the filtration's complex that only pairs simplices of equal value.
 
     Thesis: §4.2.6 (greedy gradient; minimising critical cells is NP-hard) and Theorem 4.36.
@@ -57,6 +74,17 @@ def filtration_matching(filtration) -> list[tuple[tuple[int, ...], tuple[int, ..
     Greedy coreduction inside every level set {σ : f(σ) = t}: a simplex whose only face of the same
     value is σ is paired with σ.  Along a V-path values never increase, and inside a level the
     coreduction order strictly decreases, so the field is acyclic.
+
+    Parameters
+    ----------
+    filtration : Filtration or iterable of (simplex, value) pairs
+        The filtered complex (without values every simplex has the same value 0).
+
+    Returns
+    -------
+    list of (tuple, tuple)
+        The pairs ``(sigma, tau)``, sigma a facet of tau of the same value, ordered by sigma
+        (dimension, then lexicographically).
     """
     filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
@@ -94,27 +122,44 @@ class MorseReduction:
 
     @property
     def n_critical(self) -> int:
+        """Number of critical simplices (cells of the Morse complex)."""
         return int(sum(c.shape[0] for c in self.critical))
 
     @property
     def critical_fraction(self) -> float:
+        """``n_critical / n_cells``: the share of the filtration left after the reduction."""
         return self.n_critical / self.n_cells
 
 
-def morse_reduce(filtration, coefficients: int | None = None, pairs=None, *, p: int | None = None) -> MorseReduction:
+def morse_reduce(filtration: ComplexLike, coefficients: int | None = None, pairs: Pairs | None = None, *,
+                 p: int | None = None) -> MorseReduction:
     """Reduce a filtration to its filtered Morse complex (critical simplices + Morse boundary).
 
     Thesis: Theorems 4.41–4.42 (Morse complex on critical cells, boundary by gradient paths).
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.complexes.Filtration` (or ``(simplex, value)`` pairs).
-    coefficients : a prime p for Z/p (default 2); 0 keeps integer boundaries (then take
+    filtration : Filtration or iterable of (simplex, value) pairs
+        The filtered complex (without values every simplex has the same value 0).
+    coefficients : int, optional
+        A prime p for Z/p (default 2); 0 keeps integer boundaries (then take
         :func:`reduced_persistence` with a prime).
-    pairs : optional acyclic matching to use instead of :func:`filtration_matching`, e.g. the
-        ``"lower-star"`` matching of a lower-star filtration; every pair must have equal values
-        (ValueError naming the first pair that does not).
-    p : deprecated alias of ``coefficients``.
+    pairs : iterable of (sigma, tau), optional
+        An acyclic matching to use instead of :func:`filtration_matching`, e.g. the
+        ``"lower-star"`` matching of a lower-star filtration; every pair must have equal values.
+    p : int, optional
+        Deprecated alias of ``coefficients`` (warns).
+
+    Returns
+    -------
+    MorseReduction
+        The critical simplices with their values and the Morse boundaries.
+
+    Raises
+    ------
+    ValueError
+        A pair joining different filtration values (the first one named), an invalid or cyclic
+        matching, or coefficients neither 0 nor a prime.
     """
     p = resolve_coefficients(coefficients, p, default=2)
     filt = as_complex(filtration)
@@ -137,13 +182,34 @@ def morse_reduce(filtration, coefficients: int | None = None, pairs=None, *, p: 
     return MorseReduction(critical, values, mats, cx.n, p)
 
 
-def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None, *, p: int | None = None):
+def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None, *,
+                        p: int | None = None) -> Barcode:
     """Barcode of the reduced (Morse) filtered complex; equals the filtration's barcode.
 
     Thesis: Theorems 4.39 and 4.41 applied to every sublevel complex; Algorithm 2 for the reduction.
 
-    ``coefficients``: the prime field of the persistence (default: the reduction's own, or 2 for a
-    reduction over Z); ``p=`` is its deprecated alias.
+    Parameters
+    ----------
+    reduction : MorseReduction
+        The result of :func:`morse_reduce`.
+    coefficients : int, optional
+        The prime field of the persistence (default: the reduction's own, or 2 for a reduction over
+        Z); a reduction mod p allows only p.
+    p : int, optional
+        Deprecated alias of ``coefficients`` (warns).
+
+    Returns
+    -------
+    Barcode
+        The persistence intervals of the filtration.
+
+    Raises
+    ------
+    TypeError
+        ``reduction`` is not a MorseReduction (an ``InvalidTypeError``, which is also a
+        ValueError).
+    ValueError
+        Coefficients that are not a prime, or differ from a reduction's prime.
     """
     if not isinstance(reduction, MorseReduction):
         raise InvalidTypeError(f"expected a MorseReduction (from morse_reduce), got {type(reduction).__name__}")

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 import scipy.optimize
 import scipy.sparse as sp
 
@@ -24,28 +25,82 @@ __all__ = [
 ]
 
 
-def torus_height(u, v, R: float = 2.0, r: float = 1.0):
+def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0, r: float = 1.0) -> npt.NDArray[np.float64] | float:
     """Height h(u, v) = cos(u)(R + r cos v) on the torus φ(u, v) of Example 4.2.
 
     Thesis: Example 4.2.
+
+    Parameters
+    ----------
+    u, v : array_like
+        The angles of φ(u, v): around the axis and around the tube (scalars or arrays that
+        broadcast together).
+    R : float, default 2.0
+        Distance from the centre of the tube to the axis; 0 < r < R.
+    r : float, default 1.0
+        Radius of the tube.
+
+    Returns
+    -------
+    float or ndarray
+        h at each (u, v) (a numpy float for scalar input, else the broadcast shape of u and v).
+
+    Raises
+    ------
+    ValueError
+        Radii without 0 < r < R.
     """
     R, r = check_torus_radii(R, r)
     return np.cos(u) * (R + r * np.cos(v))
 
 
-def torus_height_gradient(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
+def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
+                          r: float = 1.0) -> npt.NDArray[np.float64]:
     """h_*(u, v) = (-sin(u)(R + r cos v), -r cos(u) sin v).
 
     Thesis: Example 4.2.
+
+    Parameters
+    ----------
+    u, v : array_like
+        The angles, as in :func:`torus_height`.
+    R, r : float
+        The radii (default 2 and 1), as in :func:`torus_height`.
+
+    Returns
+    -------
+    ndarray, shape (2,) or (2, *shape)
+        (∂h/∂u, ∂h/∂v), the components first.
+
+    Raises
+    ------
+    ValueError
+        Unless 0 < r < R.
     """
     R, r = check_torus_radii(R, r)
     return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
 
 
-def torus_height_hessian(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
+def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
+                         r: float = 1.0) -> npt.NDArray[np.float64]:
     """The Hessian of h in the coordinates (u, v).
 
     Thesis: Example 4.2 (e.g. diag(-(R + r), -r) at (0, 0)).
+
+    Parameters
+    ----------
+    u, v, R, r : array_like, array_like, float, float
+        The point (u, v) and the radii of :func:`torus_height` (defaults R = 2, r = 1).
+
+    Returns
+    -------
+    ndarray, shape (2, 2) or (2, 2, *shape)
+        The symmetric matrix of second derivatives, the two matrix indices first.
+
+    Raises
+    ------
+    ValueError
+        Radii that are not 0 < r < R (finite).
     """
     R, r = check_torus_radii(R, r)
     return np.array(
@@ -56,12 +111,28 @@ def torus_height_hessian(u, v, R: float = 2.0, r: float = 1.0) -> np.ndarray:
     )
 
 
-def morse_index(hessian, tol: float = 1e-9) -> int:
+def morse_index(hessian: npt.ArrayLike, tol: float = 1e-9) -> int:
     """Number of negative eigenvalues of a non-degenerate Hessian (the Morse index).
 
     Thesis: §4.1.1 (index of a non-degenerate critical point), Definition 4.1.
 
-    Raises ValueError if the Hessian is not a finite symmetric square matrix or is degenerate.
+    Parameters
+    ----------
+    hessian : array_like, shape (n, n)
+        A finite symmetric matrix (symmetric to 1e-9).
+    tol : float, default 1e-9
+        The Hessian is degenerate when its smallest |eigenvalue| is at most ``tol`` times
+        max(1, its largest |eigenvalue|).
+
+    Returns
+    -------
+    int
+        The number of negative eigenvalues.
+
+    Raises
+    ------
+    ValueError
+        The Hessian is not a finite symmetric square matrix, or is degenerate.
     """
     h = np.asarray(hessian, dtype=float)
     if h.ndim != 2 or h.shape[0] != h.shape[1] or not np.all(np.isfinite(h)):
@@ -81,7 +152,27 @@ def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list
 
     Newton iterations (``scipy.optimize.root`` with the analytic Hessian as Jacobian) from a
     ``grid × grid`` lattice of (u, v); the roots are reduced to [0, 2π)², merged, and classified
-    by the Hessian.  Returns dicts with ``u, v, point (x, y, z), value, index``, sorted by value.
+    by the Hessian.
+
+    Parameters
+    ----------
+    R : float, default 2.0
+        Distance from the centre of the tube to the axis; 0 < r < R.
+    r : float, default 1.0
+        Radius of the tube.
+    grid : int, default 8
+        Starts per angle (at least 2).
+
+    Returns
+    -------
+    list of dict
+        One dict per critical point with keys ``u``, ``v`` (angles in [0, 2π)), ``point`` (x, y, z),
+        ``value`` (the height) and ``index`` (the Morse index), sorted by value.
+
+    Raises
+    ------
+    ValueError
+        Radii without 0 < r < R, or ``grid`` < 2.
     """
     R, r = check_torus_radii(R, r)
     if int(grid) < 2:
@@ -120,7 +211,22 @@ def morse_inequalities(critical_counts: Sequence[int], betti: Sequence[int]) -> 
 
     Thesis: Theorems 4.6 and 4.7 (and their discrete versions, Theorems 4.27–4.28).
 
-    Returns ``{"weak": ..., "euler": ..., "strong": ...}``.
+    Parameters
+    ----------
+    critical_counts : sequence of int
+        Crit_k, the number of critical points (or simplices) of index k, k = 0, 1, ...
+    betti : sequence of int
+        β_k; the shorter list is padded with zeros.
+
+    Returns
+    -------
+    dict of str to bool
+        ``{"weak": ..., "euler": ..., "strong": ...}``: whether each form holds.
+
+    Raises
+    ------
+    ValueError
+        Lists that are not 1-D or hold negative numbers.
     """
     c = np.asarray(critical_counts, dtype=np.int64)
     b = np.asarray(betti, dtype=np.int64)
@@ -152,7 +258,15 @@ def sphere_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[t
 
     Thesis: Example 4.18 (∂p_i = q_1 + q_2, ∂q_1 = r_1 - r_2, ∂q_2 = r_2 - r_1).
 
-    Returns the critical points per index, the boundary matrices and the homology over Z.
+    Returns
+    -------
+    names : list of list of str
+        The critical points per index 0, 1, 2.
+    boundaries : list of scipy.sparse.csc_matrix
+        ``boundaries[k]`` the int64 Morse boundary from index-k to index-(k-1) points
+        (``boundaries[0]`` has no rows).
+    homology : list of (int, list of int)
+        Its homology over Z, as :func:`~thesis_lib.morse.morse_complex.chain_complex_homology`.
     """
     names = [["r1", "r2"], ["q1", "q2"], ["p1", "p2"]]
     mats = _complex([[[1, -1], [-1, 1]], [[1, 1], [1, 1]]], [2, 2, 2])
@@ -164,7 +278,11 @@ def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tupl
 
     Thesis: Example 4.19 (Z_2 → Z_2 → Z_2 with zero maps).
 
-    The matrices hold the numbers of flow lines (2), which vanish mod 2; homology over Z/2.
+    Returns
+    -------
+    names, boundaries, homology : list, list, list
+        As in :func:`sphere_morse_complex`: the critical points r, q, p; the boundaries, which hold
+        the numbers of flow lines (2) and so vanish mod 2; the homology over Z/2 (β = 1, 1, 1).
     """
     names = [["r"], ["q"], ["p"]]
     mats = _complex([[[2]], [[2]]], [1, 1, 1])
@@ -175,6 +293,12 @@ def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tu
     """The Morse complex of the tilted upright torus over Z/2.
 
     Thesis: Example 4.17 (∂p = 2q_2 + 2q_1 = 0, ∂q_i = 2r = 0).
+
+    Returns
+    -------
+    names, boundaries, homology : list, list, list
+        As in :func:`sphere_morse_complex`: the critical points r; q1, q2; p, boundary entries 2
+        (the flow-line counts) and the homology over Z/2, β = 1, 2, 1.
     """
     names = [["r"], ["q1", "q2"], ["p"]]
     mats = _complex([[[2, 2]], [[2], [2]]], [1, 2, 1])

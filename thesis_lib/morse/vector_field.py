@@ -6,13 +6,13 @@ A discrete vector field is given as an iterable of pairs ``(sigma, tau)`` of sim
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 
 import numpy as np
 import scipy.sparse as sp
 from scipy.sparse.csgraph import connected_components
 
-from ._cells import Simplex, cell_complex, pairs_from_partner, partner_array
+from ._cells import ComplexLike, Pairs, Simplex, cell_complex, pairs_from_partner, partner_array
 from ._gradient import acyclic_ranks, closed_vpath, hasse_edges, vpath_edges, vpath_ranks, walk
 
 __all__ = [
@@ -26,13 +26,25 @@ __all__ = [
     "hasse_diagram",
 ]
 
-Pairs = Iterable[tuple[Sequence[int], Sequence[int]]]
 
-
-def check_vector_field(simplices, pairs: Pairs) -> list[tuple[Simplex, Simplex]]:
+def check_vector_field(simplices: ComplexLike, pairs: Pairs) -> list[tuple[Simplex, Simplex]]:
     """Validate a discrete vector field and return its pairs as sorted simplex tuples.
 
     Thesis: Definition 4.33 (pairs σ^(k) < τ^(k+1), each simplex in at most one pair).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex, in any form :func:`~thesis_lib.filtration.as_complex` accepts: all faces are
+        added and a Filtration's values are ignored (so in every function of this module).
+    pairs : iterable of (sigma, tau)
+        The vector field: sigma a face of codimension one of tau, each simplex in at most one pair.
+
+    Returns
+    -------
+    list of (tuple, tuple)
+        The pairs ``(sigma, tau)`` with ascending vertices, ordered by sigma (dimension, then
+        lexicographically).
 
     Raises
     ------
@@ -44,10 +56,21 @@ def check_vector_field(simplices, pairs: Pairs) -> list[tuple[Simplex, Simplex]]
     return pairs_from_partner(cx, partner_array(cx, pairs))
 
 
-def critical_cells(simplices, pairs: Pairs) -> list[list[Simplex]]:
+def critical_cells(simplices: ComplexLike, pairs: Pairs) -> list[list[Simplex]]:
     """Simplices in no pair of the vector field, per dimension.
 
     Thesis: Proposition 4.32 (3): σ is critical iff σ ∉ im V and V(σ) = 0.
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and a vector field on it (as in :func:`check_vector_field`); the simplices
+        in no pair are the critical ones.
+
+    Returns
+    -------
+    list of list of tuple
+        ``out[k]`` lists the critical k-simplices, lexicographically, for k = 0..dim K.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -57,22 +80,46 @@ def critical_cells(simplices, pairs: Pairs) -> list[list[Simplex]]:
     return out
 
 
-def vpath_graph(simplices, pairs: Pairs) -> tuple[list[Simplex], sp.csr_matrix]:
+def vpath_graph(simplices: ComplexLike, pairs: Pairs) -> tuple[list[Simplex], sp.csr_matrix]:
     """The V-path digraph: an edge σ → σ' for each step σ < τ > σ' of a V-path.
 
     Thesis: Definition 4.34 (V-paths σ_0, τ_0, σ_1, ... with {σ_i < τ_i} ∈ V, σ_{i+1} ≠ σ_i).
 
-    Returns the cells (global order: by dimension, then lexicographic) and the adjacency matrix.
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex, whose cells are the nodes of the digraph, and the vector field, whose
+        pairs give its edges (as in :func:`check_vector_field`).
+
+    Returns
+    -------
+    cells : list of tuple
+        All simplices in the global order: by dimension, then lexicographically.
+    graph : scipy.sparse.csr_matrix, shape (n, n)
+        The int8 adjacency matrix: ``graph[i, j] = 1`` for an edge ``cells[i] → cells[j]``.
     """
     cx = cell_complex(simplices)
     return cx.simplices(), vpath_edges(cx, partner_array(cx, pairs))
 
 
-def hasse_diagram(simplices, pairs: Pairs = ()) -> tuple[list[Simplex], sp.csr_matrix]:
+def hasse_diagram(simplices: ComplexLike, pairs: Pairs = ()) -> tuple[list[Simplex], sp.csr_matrix]:
     """The (modified) Hasse diagram: edge τ → σ for every face σ < τ of codimension one, reversed
     to σ → τ for the pairs of the vector field.
 
     Thesis: §4.2.6, Theorem 4.44 (Figures 4.7–4.8).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        The complex whose face relation gives the edges (as in :func:`check_vector_field`).
+    pairs : iterable of (sigma, tau), default ()
+        The pairs whose edges are reversed; empty gives the plain Hasse diagram.
+
+    Returns
+    -------
+    cells, graph : list of tuple, scipy.sparse.csr_matrix
+        As in :func:`vpath_graph`: the simplices in the global order and the (n × n) int8
+        adjacency matrix, here of the modified Hasse diagram.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -81,13 +128,28 @@ def hasse_diagram(simplices, pairs: Pairs = ()) -> tuple[list[Simplex], sp.csr_m
     return cx.simplices(), g
 
 
-def is_acyclic(simplices, pairs: Pairs, method: str = "vpaths") -> bool:
+def is_acyclic(simplices: ComplexLike, pairs: Pairs, method: str = "vpaths") -> bool:
     """True when the vector field has no non-trivial closed V-path.
 
     Thesis: Theorem 4.36 (then V is the gradient of a discrete Morse function) and Theorem 4.44.
 
-    ``method="vpaths"`` topologically sorts the V-path digraph; ``method="hasse"`` looks for a
-    strongly connected component with more than one cell in the modified Hasse diagram.
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The vector field to test, on its complex (as in :func:`check_vector_field`).
+    method : {"vpaths", "hasse"}, default "vpaths"
+        ``"vpaths"`` topologically sorts the V-path digraph; ``"hasse"`` looks for a strongly
+        connected component with more than one cell in the modified Hasse diagram.
+
+    Returns
+    -------
+    bool
+        Whether the field is acyclic (both methods agree).
+
+    Raises
+    ------
+    ValueError
+        An invalid vector field or an unknown ``method``.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -101,10 +163,22 @@ def is_acyclic(simplices, pairs: Pairs, method: str = "vpaths") -> bool:
     raise ValueError(f"method must be 'vpaths' or 'hasse', got {method!r}")
 
 
-def find_closed_vpath(simplices, pairs: Pairs) -> list[Simplex] | None:
+def find_closed_vpath(simplices: ComplexLike, pairs: Pairs) -> list[Simplex] | None:
     """A non-trivial closed V-path σ_0, τ_0, σ_1, ..., τ_r, σ_0 if one exists, else ``None``.
 
     Thesis: Definition 4.34 (non-trivial closed V-path), Theorem 4.36.
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the vector field searched for a closed V-path (as in
+        :func:`check_vector_field`).
+
+    Returns
+    -------
+    list of tuple or None
+        The simplices of one closed V-path, alternating k- and (k+1)-simplices and ending where it
+        starts; None when the field is acyclic.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -114,12 +188,32 @@ def find_closed_vpath(simplices, pairs: Pairs) -> list[Simplex] | None:
     return closed_vpath(cx, partner, rank, g)
 
 
-def vpaths(simplices, pairs: Pairs, start: Sequence[int], max_paths: int = 100_000) -> list[list[Simplex]]:
+def vpaths(simplices: ComplexLike, pairs: Pairs, start: Sequence[int],
+           max_paths: int = 100_000) -> list[list[Simplex]]:
     """All maximal V-paths σ_0 = start, τ_0, σ_1, ..., σ_{r+1} (σ_{r+1} in no pair upwards).
 
-    Thesis: Definition 4.34.  The trivial path ``[start]`` is returned when ``start`` is not paired
-    with a coface.  Raises ValueError on a cyclic field (infinitely many paths) or when more than
-    ``max_paths`` paths exist.  Paths of any length (no recursion).
+    Thesis: Definition 4.34.
+
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and an acyclic vector field on it (as in :func:`check_vector_field`).
+    start : sequence of int
+        The first simplex σ_0 of every path; must be in the complex.
+    max_paths : int, default 100_000
+        Refuse (ValueError) when more paths than this start at ``start``.
+
+    Returns
+    -------
+    list of list of tuple
+        Each path as its simplices σ_0, τ_0, σ_1, ...; the trivial path ``[start]`` when ``start``
+        is not paired with a coface.  Paths of any length (no recursion).
+
+    Raises
+    ------
+    ValueError
+        A cyclic field (infinitely many paths), ``start`` not in the complex, or more than
+        ``max_paths`` paths.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -134,14 +228,33 @@ def vpaths(simplices, pairs: Pairs, start: Sequence[int], max_paths: int = 100_0
     return paths
 
 
-def gradient_paths(simplices, pairs: Pairs, tau: Sequence[int],
+def gradient_paths(simplices: ComplexLike, pairs: Pairs, tau: Sequence[int],
                    sigma: Sequence[int]) -> list[tuple[list[Simplex], int]]:
     """Gradient paths from a maximal face of ``tau`` to ``sigma`` with their multiplicities ±1.
 
     Thesis: Theorem 4.42 (Γ(τ, σ) and m(γ); orientation of τ induced along the path, Figure 4.5).
 
-    Each entry is ``(path, m)`` where ``path = [tau, σ_0, τ_0, σ_1, ..., sigma]`` and
-    m = <∂τ, σ_0> Π_i (-<∂τ_i, σ_i><∂τ_i, σ_{i+1}>).  Meant for small examples (enumerates paths).
+    Parameters
+    ----------
+    simplices, pairs : complex, iterable of (sigma, tau)
+        The complex and the acyclic vector field whose gradient paths are enumerated (as in
+        :func:`check_vector_field`).
+    tau : sequence of int
+        A (k+1)-simplex of the complex, where the paths start (through a facet not paired with it).
+    sigma : sequence of int
+        A k-simplex of the complex, where the paths end.
+
+    Returns
+    -------
+    list of (list of tuple, int)
+        Each entry is ``(path, m)`` where ``path = [tau, σ_0, τ_0, σ_1, ..., sigma]`` and
+        m = <∂τ, σ_0> Π_i (-<∂τ_i, σ_i><∂τ_i, σ_{i+1}>).  Meant for small examples (enumerates
+        paths).
+
+    Raises
+    ------
+    ValueError
+        A cyclic field, a simplex not in the complex, or ``tau`` not one dimension above ``sigma``.
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

@@ -16,6 +16,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import as_points, check_max_dim, check_radius
 from ..complexes import alpha, rips
@@ -77,22 +78,54 @@ class Bifiltration:
         return len(self._eps)
 
     def counts(self) -> list[int]:
-        """Number of simplices in each dimension."""
+        """Number of simplices in each dimension.
+
+        Returns
+        -------
+        list of int
+            ``m_d`` for d = 0..dimension."""
         return self._eps.counts()
 
     def bounds(self) -> np.ndarray:
-        """``[[ε_min, κ_min], [ε_max, κ_max]]`` over all simplices."""
+        """The box of the grades: ``[[ε_min, κ_min], [ε_max, κ_max]]`` over all simplices.
+
+        Returns
+        -------
+        ndarray of float64, shape (2, 2)
+            Row 0 the smallest grades, row 1 the largest."""
         allg = np.concatenate(self.grades)
         return np.stack([allg.min(axis=0), allg.max(axis=0)])
 
     def facet_indices(self, d: int) -> np.ndarray:
-        """As :meth:`thesis_lib.filtration.Filtration.facet_indices`."""
+        """The facets of the d-simplices, as :meth:`thesis_lib.filtration.Filtration.facet_indices`.
+
+        Parameters
+        ----------
+        d : int
+            A dimension, 1 ≤ d ≤ :attr:`dimension`.
+
+        Returns
+        -------
+        ndarray of int, shape (m_d, d + 1)
+            Indices into ``simplices[d - 1]``; column ``i`` is the facet omitting vertex ``i``."""
         return self._eps.facet_indices(d)
 
     def filtration(self, values: Sequence[np.ndarray], keep: Sequence[np.ndarray] | None = None) -> Filtration:
         """The one-parameter filtration of the simplices ``keep`` (masks) with ``values`` (per dimension).
 
-        ``values`` must be monotone on faces (as every line or path through the grades is).
+        Parameters
+        ----------
+        values : sequence of ndarray
+            ``values[d]`` one value per d-simplex; must be monotone on faces (as every line or path
+            through the grades is).  Not checked.
+        keep : sequence of bool ndarray, optional
+            ``keep[d]`` selects the d-simplices kept; they must form a subcomplex (not checked).
+            Default all.
+
+        Returns
+        -------
+        Filtration
+            The kept simplices with their values, empty top dimensions dropped.
         """
         if keep is None:
             return Filtration(self.simplices, values, validate=False)
@@ -107,6 +140,18 @@ class Bifiltration:
         """K_{ε,κ} as a filtration by ε (None when empty).
 
         Thesis: Chapter 5 (the complex at one value of both parameters).
+
+        Parameters
+        ----------
+        eps : float
+            The radius grade ε: simplices with ε(σ) ≤ eps.
+        kappa : float
+            The curvature grade κ: simplices with κ(σ) ≤ kappa.
+
+        Returns
+        -------
+        Filtration or None
+            K_{ε,κ}, filtered by the ε-grades; None when no vertex is in it.
         """
         keep = [(g[:, 0] <= eps) & (g[:, 1] <= kappa) for g in self.grades]
         if not keep[0].any():
@@ -137,8 +182,8 @@ def _vertex_values(values, labels: np.ndarray, name: str) -> np.ndarray:
     return v
 
 
-def function_bifiltration(filtration, vertex_values, *, max_homology_dim: int | None = None,
-                          name: str = "vertex_values") -> Bifiltration:
+def function_bifiltration(filtration: Filtration, vertex_values: npt.ArrayLike, *,
+                          max_homology_dim: int | None = None, name: str = "vertex_values") -> Bifiltration:
     """The bifiltration (filtration value, largest vertex value): σ ∈ K_{ε,κ} iff its value is ≤ ε
     and f(v) ≤ κ at each of its vertices (the sublevel sets of f on the filtered complex).
 
@@ -146,10 +191,26 @@ def function_bifiltration(filtration, vertex_values, *, max_homology_dim: int | 
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.filtration.Filtration` (its values are the ε-grades).
-    vertex_values : one finite number per point (indexed by vertex label).
-    max_homology_dim : see :class:`Bifiltration`.
-    name : what the values are called in error messages.
+    filtration : Filtration
+        Its values are the ε-grades (anything :func:`~thesis_lib.filtration.as_complex` turns into
+        a Filtration with values).
+    vertex_values : array_like, shape (n_points,)
+        f, one number per point (indexed by vertex label); finite at every vertex of the complex.
+    max_homology_dim : int, optional
+        The largest homology dimension the complex determines (see :class:`Bifiltration`).
+    name : str, default "vertex_values"
+        What the values are called in error messages.
+
+    Returns
+    -------
+    Bifiltration
+        Grades (value of σ, max of f on the vertices of σ) for every simplex.
+
+    Raises
+    ------
+    ValueError
+        Vertex values that are not 1-D numbers, do not reach the largest vertex label, or are NaN or
+        infinite at a vertex (the rows named).
     """
     K = as_complex(filtration)
     labels = K.simplices[0][:, 0]
@@ -158,8 +219,9 @@ def function_bifiltration(filtration, vertex_values, *, max_homology_dim: int | 
     return Bifiltration(K.simplices, grades, max_homology_dim=max_homology_dim, validate=False)
 
 
-def radius_curvature_bifiltration(points, curvature, *, complex: str = "rips", max_radius: float = np.inf,
-                                  max_dim: int = 2, absolute: bool = True) -> Bifiltration:
+def radius_curvature_bifiltration(points: npt.ArrayLike, curvature: npt.ArrayLike, *, complex: str = "rips",
+                                  max_radius: float = np.inf, max_dim: int = 2,
+                                  absolute: bool = True) -> Bifiltration:
     """The radius × curvature bifiltration of a point cloud: Rips or alpha in ε, sublevel sets of
     |κ| (or κ) in the second parameter.
 
@@ -168,18 +230,26 @@ def radius_curvature_bifiltration(points, curvature, *, complex: str = "rips", m
 
     Parameters
     ----------
-    points : ``(n, d)`` points.
-    curvature : ``(n,)`` curvature estimate at each point (e.g.
+    points : array_like, shape (n, d)
+        The point cloud.
+    curvature : array_like, shape (n,)
+        Curvature estimate at each point, finite (e.g.
         :func:`thesis_lib.meshes.point_curvature.point_curvature`).
-    complex : ``"rips"`` (ε with diameter ≤ 2ε; truncated at ``max_dim``) or ``"alpha"`` (the alpha
-        complex; its values ε² are square-rooted so that both complexes are graded by ε).
-    max_radius : largest ε kept (Rips only).
-    max_dim : largest simplex dimension (Rips only; homology up to ``max_dim - 1`` is determined).
-    absolute : grade by |κ| (curvature magnitude) rather than by signed κ.
+    complex : {"rips", "alpha"}, default "rips"
+        ``"rips"``: ε with diameter ≤ 2ε, truncated at ``max_dim``; ``"alpha"``: the alpha complex,
+        its values ε² square-rooted so that both complexes are graded by ε.
+    max_radius : float, default inf
+        Largest ε kept (Rips only).
+    max_dim : int, default 2
+        Largest simplex dimension (Rips only; homology up to ``max_dim - 1`` is determined).
+    absolute : bool, default True
+        Grade by |κ| (curvature magnitude) rather than by signed κ.
 
     Returns
     -------
     Bifiltration
+        ε-grade from the complex, κ-grade the largest |κ| (or κ) on the simplex's vertices, and
+        ``max_homology_dim`` the dimensions the complex determines.
 
     Raises
     ------

@@ -16,9 +16,13 @@ library's persistence engine (Algorithm 2 / Theorem 2.39):
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
+import numpy.typing as npt
 
 from .._validate import check_int, check_size, resolve_coefficients
+from ..filtration import Filtration
 from ..persistence import persistence
 from ..persistence.barcode import Barcode
 from .bifiltration import Bifiltration
@@ -30,8 +34,28 @@ __all__ = ["hilbert_function", "rank_invariant", "fibered_barcode", "line_filtra
 MAX_GRID_ENTRIES = 10**8
 
 
-def check_grid(values, name: str) -> np.ndarray:
-    """A grid axis: a non-empty, finite, strictly increasing 1-D array."""
+def check_grid(values: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
+    """A grid axis: a non-empty, finite, strictly increasing 1-D array.
+
+    Thesis: Chapter 5 (the pairs (ε, κ) at which the invariants are evaluated).
+
+    Parameters
+    ----------
+    values : array_like, shape (k,)
+        The grid values.
+    name : str
+        The axis's name in error messages (``"eps"``, ``"kappa"``).
+
+    Returns
+    -------
+    ndarray of float64, shape (k,)
+        The values as floats.
+
+    Raises
+    ------
+    ValueError
+        Values that are not numbers, not 1-D, empty, NaN or infinite, or not strictly increasing.
+    """
     try:
         g = np.asarray(values, dtype=np.float64)
     except (TypeError, ValueError) as err:
@@ -68,22 +92,28 @@ def _betti_at(arr: np.ndarray, at: np.ndarray) -> np.ndarray:
     return born - dead
 
 
-def hilbert_function(bifiltration: Bifiltration, eps, kappa, *, dims=None,
-                     coefficients: int | None = None) -> np.ndarray:
+def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.ArrayLike, *,
+                     dims: int | Sequence[int] | None = None,
+                     coefficients: int | None = None) -> npt.NDArray[np.int64]:
     """dim H_k(K_{ε,κ}) at every point of the grid ``eps`` × ``kappa``.
 
     Thesis: Chapter 5 (the homology at each pair (ε, κ)); Definition 2.23 along each row.
 
     Parameters
     ----------
-    bifiltration : a :class:`Bifiltration`.
-    eps, kappa : strictly increasing grid axes.
-    dims : homology dimensions (default all the bifiltration determines).
-    coefficients : a prime p, the field Z/p (default 2).
+    bifiltration : Bifiltration
+        The one-critical bifiltration.
+    eps, kappa : array_like
+        Strictly increasing grid axes (see :func:`check_grid`).
+    dims : int or sequence of int, optional
+        Homology dimensions (default all the bifiltration determines, 0..max_homology_dim).
+    coefficients : int, optional
+        A prime p, the field Z/p (default 2).
 
     Returns
     -------
-    ndarray of int64, shape ``(len(dims), len(eps), len(kappa))``.
+    ndarray of int64, shape (len(dims), len(eps), len(kappa))
+        Entry ``[a, i, j]`` is dim H_{dims[a]}(K_{ε_i,κ_j}).
 
     Raises
     ------
@@ -121,22 +151,34 @@ def _staircase_values(bif: Bifiltration, te: list[np.ndarray], tk: list[np.ndarr
     return values, keep
 
 
-def rank_invariant(bifiltration: Bifiltration, eps, kappa, *, dim: int, coefficients: int | None = None) -> np.ndarray:
+def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.ArrayLike, *, dim: int,
+                   coefficients: int | None = None) -> npt.NDArray[np.int64]:
     """rank H_dim(K_a) → H_dim(K_b) for all grid points a ≤ b of ``eps`` × ``kappa``.
 
     Thesis: Definition 2.23 (the persistent Betti numbers), for two parameters (Chapter 5).
 
+    Parameters
+    ----------
+    bifiltration : Bifiltration
+        The one-critical bifiltration.
+    eps, kappa : array_like
+        Strictly increasing grid axes, as in :func:`hilbert_function`.
+    dim : int
+        The homology dimension; at most the bifiltration's ``max_homology_dim``.
+    coefficients : int, optional
+        A prime p, the field Z/p (default 2).
+
     Returns
     -------
-    ndarray of int64, shape ``(len(eps), len(kappa), len(eps), len(kappa))``: entry ``[i, j, i2, j2]``
-    is the rank from (ε_i, κ_j) to (ε_i2, κ_j2) when i ≤ i2 and j ≤ j2, else 0.  The diagonal
-    ``[i, j, i, j]`` is the Hilbert function.
+    ndarray of int64, shape (len(eps), len(kappa), len(eps), len(kappa))
+        Entry ``[i, j, i2, j2]`` is the rank from (ε_i, κ_j) to (ε_i2, κ_j2) when i ≤ i2 and
+        j ≤ j2, else 0.  The diagonal ``[i, j, i, j]`` is the Hilbert function.
 
     Raises
     ------
     ValueError
-        A bad grid, a grid too large for memory (refused with its size), or a dimension the
-        bifiltration does not determine.
+        As :func:`hilbert_function`; the array has (len(eps) · len(kappa))² entries, so the grid
+        is refused sooner (at ``MAX_GRID_ENTRIES``).
     """
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
     dim = _dims(bifiltration, [dim])[0]
@@ -175,24 +217,62 @@ def _check_line(base, direction) -> tuple[np.ndarray, np.ndarray]:
     return b, d
 
 
-def line_filtration(bifiltration: Bifiltration, base, direction):
+def line_filtration(bifiltration: Bifiltration, base: npt.ArrayLike, direction: npt.ArrayLike) -> Filtration:
     """The bifiltration restricted to the line ℓ(t) = base + t·direction (positive slope): σ
     enters at t(σ) = max((ε(σ) − base_ε)/direction_ε, (κ(σ) − base_κ)/direction_κ).
 
     Thesis: Definition 2.22 (a one-parameter filtration), along a line of the (ε, κ) plane (Chapter 5).
+
+    Parameters
+    ----------
+    bifiltration : Bifiltration
+        The one-critical bifiltration.
+    base : array_like, shape (2,)
+        A point (ε, κ) of the line, finite.
+    direction : array_like, shape (2,)
+        Its direction; both components > 0 (positive slope).
+
+    Returns
+    -------
+    Filtration
+        Every simplex of the bifiltration, entering at its t(σ) (negative before ``base``).
+
+    Raises
+    ------
+    ValueError
+        ``base`` or ``direction`` not a finite pair, or a direction component ≤ 0.
     """
     b, d = _check_line(base, direction)
     values = [np.max((g - b) / d, axis=1) for g in bifiltration.grades]
     return bifiltration.filtration(values)
 
 
-def fibered_barcode(bifiltration: Bifiltration, base, direction, *, coefficients: int | None = None) -> Barcode:
+def fibered_barcode(bifiltration: Bifiltration, base: npt.ArrayLike, direction: npt.ArrayLike, *,
+                    coefficients: int | None = None) -> Barcode:
     """Barcode of the bifiltration along the line base + t·direction (positive slope), in t.
 
     Thesis: Theorem 2.39 / Algorithm 2 on the filtration of :func:`line_filtration` (Chapter 5: one
     line of the (ε, κ) plane is an ordinary persistence problem).
 
-    A bar [t0, t1) is the segment from base + t0·direction to base + t1·direction of the plane.
+    Parameters
+    ----------
+    bifiltration : Bifiltration
+        The one-critical bifiltration.
+    base, direction : array_like, shape (2,)
+        The line, as in :func:`line_filtration`.
+    coefficients : int, optional
+        A prime p, the field Z/p (default 2).
+
+    Returns
+    -------
+    Barcode
+        Bars in t: a bar [t0, t1) is the segment from base + t0·direction to base + t1·direction of
+        the plane.
+
+    Raises
+    ------
+    ValueError
+        A bad line (see :func:`line_filtration`) or coefficients that are not a prime.
     """
     p = resolve_coefficients(coefficients, None, default=2, field=True)
     return persistence(line_filtration(bifiltration, base, direction), p)

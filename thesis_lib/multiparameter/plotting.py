@@ -3,21 +3,61 @@ their lines in the (ε, κ) plane."""
 
 from __future__ import annotations
 
-import numpy as np
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
+import numpy as np
+import numpy.typing as npt
+
+from ..persistence.barcode import Barcode
 from .bifiltration import Bifiltration
 from .invariants import check_grid, fibered_barcode
+
+if TYPE_CHECKING:  # matplotlib is imported only when drawing
+    from matplotlib.axes import Axes
+    from matplotlib.collections import QuadMesh
 
 __all__ = ["plot_hilbert", "line_fan", "plot_fibered_barcodes"]
 
 
-def plot_hilbert(ax, values, eps, kappa, *, label: str = "", vmax: int | None = None, cmap: str = "viridis",
-                 xlabel: str = "ε", ylabel: str = "κ", colorbar: bool = True):
+def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt.ArrayLike, *, label: str = "",
+                 vmax: int | None = None, cmap: str = "viridis", xlabel: str = "ε", ylabel: str = "κ",
+                 colorbar: bool = True) -> QuadMesh:
     """Heat map of one Hilbert function ``values[i, j]`` = dim H_k(K_{ε_i, κ_j}) on the grid.
 
     Each grid value is drawn as the cell up to the next one (K_{ε,κ} is constant there when the grid
     holds every grade).  The colour bar is discrete, labelled horizontally.
+
     Thesis: Chapter 5 (the homology for each pair (ε, κ)).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    values : array_like of int, shape (len(eps), len(kappa))
+        One Hilbert function, e.g. ``hilbert_function(...)[a]``.
+    eps, kappa : array_like
+        The grid axes (strictly increasing); the last cell is as wide as the one before it.
+    label : str, default ""
+        Title of the colour bar (e.g. ``"β₁"``).
+    vmax : int, optional
+        Largest value of the colour scale (default ``values.max()``).
+    cmap : str, default "viridis"
+        A matplotlib colour map name.
+    xlabel, ylabel : str
+        Axis labels (default ``"ε"`` and ``"κ"``).
+    colorbar : bool, default True
+        Draw the colour bar beside ``ax``.
+
+    Returns
+    -------
+    matplotlib.collections.QuadMesh
+        The heat map.
+
+    Raises
+    ------
+    ValueError
+        A bad grid, or ``values`` of the wrong shape.
     """
     import matplotlib.pyplot as plt
     from matplotlib.colors import BoundaryNorm
@@ -38,12 +78,38 @@ def plot_hilbert(ax, values, eps, kappa, *, label: str = "", vmax: int | None = 
     return mesh
 
 
-def line_fan(bounds, n_lines: int = 5, *, base=None, angles=(15.0, 75.0)):
+def line_fan(bounds: npt.ArrayLike, n_lines: int = 5, *, base: npt.ArrayLike | None = None,
+             angles: tuple[float, float] = (15.0, 75.0)) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """``n_lines`` lines of positive slope through ``base`` (default the lower-left corner of
     ``bounds`` = ``[[ε_min, κ_min], [ε_max, κ_max]]``), at angles spread over ``angles`` (degrees)
-    in the box's own scale, so that each line crosses the box.  Returns ``(base, directions)``;
-    each direction reaches the box's far side at t = 1.
+    in the box's own scale, so that each line crosses the box.
+
     Thesis: Chapter 5 (one line of the (ε, κ) plane is one ordinary persistence problem).
+
+    Parameters
+    ----------
+    bounds : array_like, shape (2, 2)
+        The box ``[[ε_min, κ_min], [ε_max, κ_max]]`` with a positive span, e.g.
+        :meth:`Bifiltration.bounds`.
+    n_lines : int, default 5
+        How many lines.
+    base : array_like, shape (2,), optional
+        The common point of the lines; default the lower-left corner.
+    angles : (float, float), default (15.0, 75.0)
+        The first and last angle in degrees, measured in the box scaled to a unit square.
+
+    Returns
+    -------
+    base : ndarray of float64, shape (2,)
+        The common point.
+    directions : ndarray of float64, shape (n_lines, 2)
+        One direction per line, scaled so that base + t·direction reaches the box's far side at
+        t = 1.
+
+    Raises
+    ------
+    ValueError
+        ``bounds`` not a 2 × 2 box with a positive span.
     """
     b = np.asarray(bounds, dtype=np.float64)
     span = b[1] - b[0]
@@ -57,13 +123,45 @@ def line_fan(bounds, n_lines: int = 5, *, base=None, angles=(15.0, 75.0)):
     return base, dirs
 
 
-def plot_fibered_barcodes(ax, bifiltration: Bifiltration, base, directions, *, dim: int, min_length: float = 0.0,
-                          colors=None, linewidth: float = 4.0, coefficients: int | None = None):
+def plot_fibered_barcodes(ax: Axes, bifiltration: Bifiltration, base: npt.ArrayLike, directions: npt.ArrayLike, *,
+                          dim: int, min_length: float = 0.0, colors: Sequence[str] | None = None,
+                          linewidth: float = 4.0, coefficients: int | None = None) -> list[Barcode]:
     """Draw each line base + t·direction and, on it, the bars of its fibered barcode in H_dim as
     thick segments (offset sideways a little so that overlapping bars stay visible).
 
-    Returns the list of barcodes (one per line).  Bars shorter than ``min_length`` (in t) are left out.
     Thesis: Definition 2.34 (a barcode), along lines of the (ε, κ) plane (Chapter 5).
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw, its limits already set (kept; they set the sideways offset).
+    bifiltration : Bifiltration
+        The one-critical bifiltration.
+    base : array_like, shape (2,)
+        The common point of the lines.
+    directions : array_like, shape (n_lines, 2) or (2,)
+        One direction per line, both components > 0 (e.g. from :func:`line_fan`).
+    dim : int
+        The homology dimension drawn.
+    min_length : float, default 0.0
+        Bars shorter than this (in t) are left out.
+    colors : sequence of str, optional
+        One colour per line, cycled (default matplotlib's colour cycle).
+    linewidth : float, default 4.0
+        Width of the bars.
+    coefficients : int, optional
+        A prime p, the field Z/p (default 2).
+
+    Returns
+    -------
+    list of Barcode
+        The fibered barcode of each line (all dimensions, every bar), in the order of
+        ``directions``.  Bars are drawn up to t = 1.5.
+
+    Raises
+    ------
+    ValueError
+        A direction that is not positive, or coefficients that are not a prime.
     """
     import matplotlib.pyplot as plt
 

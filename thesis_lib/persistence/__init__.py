@@ -8,6 +8,7 @@ from .engine import persistence
 from .implicit import rips_persistence
 from .plotting import plot_barcode, plot_diagram
 from .summaries import long_bars, long_betti
+from .transformer import RipsDiagrams
 
 __all__ = [
     "Barcode",
@@ -22,4 +23,5 @@ __all__ = [
     "apparent_pairs",
     "apparent_summary",
     "chain_persistence",
+    "RipsDiagrams",
 ]
