@@ -1,50 +1,61 @@
 """The thesis's persistence algorithm, literally: Reduce (Algorithm 1) and ComputeIntervals (Algorithm 2).
 
 Readable pure Python on sparse chains ``{index: coefficient}``; meant for small complexes, the
-notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.
+notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.  The field
+arithmetic is the library's one modular inverse, :func:`~thesis_lib.persistence.kernels.inverse`.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 
 from .._validate import resolve_coefficients
-from ..filtration import as_complex
+from ..filtration import Filtration, as_complex
 from .barcode import Barcode
+from .kernels import inverse
 
 __all__ = ["compute_intervals", "trace_matrices"]
 
 
-def _inverse(q: int, p: int) -> int:
-    """q^{-1} in Z/p (Fermat: q^{p-2})."""
-    return pow(q, p - 2, p)
-
-
-def compute_intervals(filtration, coefficients: int | None = None, *, trace: list | None = None,
-                      p: int | None = None) -> Barcode:
+def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
+                      trace: list[dict[str, Any]] | None = None, p: int | None = None) -> Barcode:
     """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
 
     Thesis: Algorithms 1–2, §2.3.5 (after Zomorodian and Carlsson), O(m³) in the number of simplices m.
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.complexes.Filtration` or any iterable of ``(simplex, value)``
-        pairs in filtration order (non-decreasing values, faces before cofaces).
-    coefficients : a prime p, the field Z/p (default 2).
-    trace : optional list; if given, one dict per simplex σ^j is appended recording the steps of
-        Reduce(σ^j): ``j``, ``simplex``, ``dim``, ``value``, ``boundary`` (∂σ^j as ``{i: coeff}``),
-        ``removed`` (the unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per
-        subtraction ``d = d − factor·T[i]``), ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
-        Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; each entry also holds
-        ``order``, the list of all simplices in that order, on the first entry.
-    p : deprecated alias of ``coefficients``.
+    filtration : Filtration or iterable of (simplex, value) pairs
+        A :class:`~thesis_lib.filtration.Filtration`, or anything
+        :func:`~thesis_lib.filtration.as_complex` takes: ``(simplex, value)`` pairs in filtration
+        order (non-decreasing values, faces before cofaces), plain simplices (all values 0), ...
+    coefficients : int, optional
+        A prime p: the field Z/p (default 2).  0 (the integers) is refused: Reduce divides.
+    trace : list of dict, optional
+        If given, one dict per simplex σ^j is appended recording the steps of Reduce(σ^j): ``j``,
+        ``simplex``, ``dim``, ``value``, ``boundary`` (∂σ^j as ``{i: coeff}``), ``removed`` (the
+        unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per subtraction
+        ``d = d − factor·T[i]``), ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
+        Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; the first entry also holds
+        ``order``, the list of all simplices in that order.
+    p : int, optional
+        Deprecated alias of ``coefficients`` (warns).
 
     Returns
     -------
     Barcode
-        Intervals ``(deg σ^i, deg σ^j)`` and ``(deg σ^j, ∞)``; zero-length ones are left out.
+        Intervals ``(deg σ^i, deg σ^j)`` and ``(deg σ^j, ∞)`` in dimensions 0 .. dim K, with the
+        creating and killing simplices (:meth:`~Barcode.simplex_pairs`); zero-length intervals are
+        left out.
+
+    Raises
+    ------
+    ValueError
+        A complex :func:`~thesis_lib.filtration.as_complex` refuses, or ``coefficients`` not a prime.
     """
     K = as_complex(filtration)
     p = resolve_coefficients(coefficients, p, default=2, field=True)
@@ -100,7 +111,7 @@ def compute_intervals(filtration, coefficients: int | None = None, *, trace: lis
             q = Ti[i]
             # d = d − q^{-1} T[i];   (the thesis's line assumes the coefficient of σ^i in d is 1; in
             # general we subtract d_i q^{-1} T[i], which clears the term σ^i over Z/p)
-            factor = d[i] * _inverse(q, p) % p
+            factor = d[i] * inverse(q, p) % p
             for k, c in Ti.items():
                 v = (d.get(k, 0) - factor * c) % p
                 if v:
@@ -167,15 +178,35 @@ def _t_power(c: int, power: float, p: int) -> str:
     return mono if c == 1 else ("-" + mono if c == -1 else f"{c}{mono}")
 
 
-def trace_matrices(trace: list[dict], p: int, names: str | None = None) -> tuple[list[list[str]], list[list[str]]]:
+def trace_matrices(trace: list[dict[str, Any]], p: int,
+                   names: str | None = None) -> tuple[list[list[str]], list[list[str]]]:
     """The two m × m tables of Example 2.41 from a trace of :func:`compute_intervals`.
 
     Thesis: Example 2.41 (the boundary matrix over F[t] before and after ComputeIntervals, the
     latter with the unmarked rows removed).
 
-    Returns ``(before, after)``, each a list of rows of strings, header row and column first; an
-    entry c·t^k means coefficient c (a signed residue mod ``p``) at the power k = deg σ^j − deg σ^i.
-    ``names`` maps vertex numbers to letters (e.g. ``"abcde"``).
+    Parameters
+    ----------
+    trace : list of dict
+        The whole list filled by ``compute_intervals(..., trace=[])`` (its first entry holds ``order``).
+    p : int
+        The prime the trace was computed over; entries are shown as signed residues mod ``p``.
+    names : str, optional
+        Letters for the vertex numbers (``names[v]`` names vertex v, e.g. ``"abcde"``); default: the
+        numbers, comma-separated.
+
+    Returns
+    -------
+    before : list of list of str
+        The boundary matrix over F[t], all m rows: header row and header column first; an entry
+        c·t^k means coefficient c at the power k = deg σ^j − deg σ^i, ``"0"`` for none.
+    after : list of list of str
+        The reduced columns ``d`` of ComputeIntervals, restricted to the marked rows.
+
+    Raises
+    ------
+    ValueError
+        A trace that is not the full list filled by :func:`compute_intervals`.
     """
     if not trace or "order" not in trace[0]:
         raise ValueError("trace must be the full list filled by compute_intervals(..., trace=[])")

@@ -11,9 +11,12 @@ idea), which is how :func:`~thesis_lib.persistence.rips_persistence` skips most 
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+from typing import Any
+
 import numpy as np
 
-from ..filtration import as_complex
+from ..filtration import Filtration, as_complex
 
 __all__ = ["apparent_pairs", "apparent_summary"]
 
@@ -33,7 +36,8 @@ def _pairs_by_index(K) -> list[tuple[int, np.ndarray, np.ndarray]]:
     return out
 
 
-def apparent_pairs(filtration, *, zero: bool = False) -> list[tuple[tuple[int, ...], tuple[int, ...]]]:
+def apparent_pairs(filtration: Filtration | Iterable[Any], *,
+                   zero: bool = False) -> list[tuple[tuple[int, ...], tuple[int, ...]]]:
     """The apparent pairs ``(σ, τ)`` of a filtration, in its order (``Filtration.order``).
 
     Thesis: Definitions 4.30–4.33 (the pairs are a discrete vector field, and an acyclic one:
@@ -41,14 +45,18 @@ def apparent_pairs(filtration, *, zero: bool = False) -> list[tuple[tuple[int, .
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.filtration.Filtration` (or anything
+    filtration : Filtration or iterable of (simplex, value) pairs
+        A :class:`~thesis_lib.filtration.Filtration` (or anything
         :func:`~thesis_lib.filtration.as_complex` takes).
-    zero : only the pairs whose two simplices have the same value (zero persistence: the ones the
+    zero : bool
+        Only the pairs whose two simplices have the same value (zero persistence: the ones the
         implicit engine never makes columns).
 
     Returns
     -------
-    list of ``(sigma, tau)`` vertex tuples, σ a facet of τ.
+    list of (tuple of int, tuple of int)
+        The pairs ``(sigma, tau)`` as vertex tuples, σ a facet of τ, by increasing dimension of τ
+        and, within one, by τ's index in ``filtration.simplices``.
     """
     K = as_complex(filtration)
     pairs = []
@@ -61,19 +69,26 @@ def apparent_pairs(filtration, *, zero: bool = False) -> list[tuple[tuple[int, .
     return pairs
 
 
-def apparent_summary(filtration) -> dict:
+def apparent_summary(filtration: Filtration | Iterable[Any]) -> dict[str, Any]:
     """How much of a filtration its apparent pairs leave critical, per dimension and in all.
 
     Thesis: Definition 4.21 (critical cells) and Theorem 4.27 (Crit_k ≥ β_k), for the gradient of
     :func:`apparent_pairs`.
 
+    Parameters
+    ----------
+    filtration : Filtration or iterable of (simplex, value) pairs
+        A :class:`~thesis_lib.filtration.Filtration` (or anything
+        :func:`~thesis_lib.filtration.as_complex` takes).
+
     Returns
     -------
-    dict with ``simplices``, ``critical`` and ``zero_critical`` (lists per dimension: all cells,
-    those in no apparent pair, those in no zero-persistence apparent pair), the fractions
-    ``critical_fraction`` and ``zero_critical_fraction`` of all cells, and the same fractions of the
-    cells below the top dimension (``*_below_top``): those are the columns a cohomology reduction
-    works on (a truncated complex's top simplices are only rows: their cofaces were never built).
+    dict
+        With ``simplices``, ``critical`` and ``zero_critical`` (lists per dimension: all cells,
+        those in no apparent pair, those in no zero-persistence apparent pair), the fractions
+        ``critical_fraction`` and ``zero_critical_fraction`` of all cells, and the same fractions of the
+        cells below the top dimension (``*_below_top``): those are the columns a cohomology reduction
+        works on (a truncated complex's top simplices are only rows: their cofaces were never built).
     """
     K = as_complex(filtration)
     counts = K.counts()

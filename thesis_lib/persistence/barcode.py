@@ -146,6 +146,19 @@ class Barcode:
         """Build from ``(dim, (birth, death))`` pairs, the format of GUDHI's ``persistence()``.
 
         Thesis: Definition 2.34 (a set of P-intervals per dimension).
+
+        Parameters
+        ----------
+        pairs : iterable of (int, (float, float))
+            ``(dim, (birth, death))`` per interval, ``death = inf`` for an essential class.
+        dimensions : iterable of int, optional
+            The dimensions computed (default: those that occur in ``pairs``); a dimension with no
+            pair has no intervals.
+
+        Returns
+        -------
+        Barcode
+            Without simplices or coefficients (``p`` is None).
         """
         by_dim: dict[int, list[tuple[float, float]]] = {}
         for dim, (b, d) in pairs:
@@ -159,6 +172,25 @@ class Barcode:
 
         Thesis: Definition 2.34 (a set of P-intervals per dimension).  Values are taken as they
         are: ripser's are diameters (2ε), so halve them to compare with :func:`~thesis_lib.complexes.rips` (ε).
+
+        Parameters
+        ----------
+        diagrams : sequence of array_like, shape (m, 2)
+            ``diagrams[k]`` the ``(birth, death)`` rows of dimension k (``inf`` for essential classes).
+        p : int, optional
+            The coefficient field Z/p they were computed over (``None``: unknown).
+
+        Returns
+        -------
+        Barcode
+            Dimensions 0 .. ``len(diagrams) − 1``, all complete.
+
+        Raises
+        ------
+        TypeError
+            ``diagrams`` is not a list of arrays.
+        ValueError
+            A diagram that is not ``(m, 2)``, a NaN, or a death before its birth.
         """
         if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
             raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
@@ -176,6 +208,17 @@ class Barcode:
 
         Thesis: Definition 2.34 and Theorem 2.37 (P-intervals drawn as points).  The values are
         this barcode's (ε for :func:`~thesis_lib.complexes.rips`; ripser reports diameters 2ε).
+
+        Parameters
+        ----------
+        dims : iterable of int, optional
+            Only its maximum matters: diagrams are returned for 0 .. max(dims) (default: the complete
+            dimensions).
+
+        Returns
+        -------
+        list of numpy.ndarray, shape (m, 2)
+            ``diagrams[k]``: a writable copy of :meth:`intervals` ``(k)``.
         """
         dims = self._complete if dims is None else tuple(int(d) for d in dims)
         top = max(dims, default=-1)
@@ -228,6 +271,16 @@ class Barcode:
         """``(k, 2)`` read-only array of ``(birth, death)`` in dimension ``dim``, sorted; ``death = inf`` if essential.
 
         Thesis: Theorem 2.39 (the intervals read off the column-echelon form).
+
+        Parameters
+        ----------
+        dim : int
+            A homology dimension (non-negative; a dimension not computed has no intervals).
+
+        Returns
+        -------
+        numpy.ndarray, shape (k, 2)
+            Read-only, sorted by ``(birth, death)``, zero-length intervals left out.
         """
         return self._get(_dimension(dim))[0]
 
@@ -236,6 +289,18 @@ class Barcode:
         Without ``dim``: the list of Betti numbers of the complete dimensions.
 
         Thesis: §2.3.1, β_p^l = rank H_p^l (the special case k = 0 of Definition 2.23).
+
+        Parameters
+        ----------
+        value : float
+            The filtration value l.
+        dim : int, optional
+            The homology dimension; default: every complete dimension.
+
+        Returns
+        -------
+        int or list of int
+            β_dim at ``value``; a list over :attr:`complete_dimensions` when ``dim`` is None.
         """
         if dim is None:
             return [self.persistent_betti(value, 0.0, d) for d in self._complete]
@@ -246,6 +311,25 @@ class Barcode:
 
         Thesis: Definition 2.23 and Theorem 2.37 (the rank equals the number of intervals spanning
         [l, l + k]); an interval ``[b, d)`` spans it when ``b ≤ l`` and ``d > l + k``.
+
+        Parameters
+        ----------
+        l : float
+            The filtration value where the classes must exist.
+        k : float
+            The persistence, ≥ 0: the classes must still be alive at ``l + k``.
+        dim : int
+            The homology dimension.
+
+        Returns
+        -------
+        int
+            The number of intervals spanning ``[l, l + k]``.
+
+        Raises
+        ------
+        ValueError
+            ``l`` or ``k`` NaN, or ``k < 0``.
         """
         l, k = float(l), float(k)
         if np.isnan(l) or np.isnan(k):
@@ -262,6 +346,11 @@ class Barcode:
         """All intervals as ``(dim, (birth, death))`` pairs (GUDHI's format), by dimension then birth.
 
         Thesis: Definition 2.34 (the P-intervals of every dimension).
+
+        Returns
+        -------
+        list of (int, (float, float))
+            Every computed dimension's intervals, complete or not.
         """
         return [(d, (float(b), float(e))) for d in self._dims for b, e in self.intervals(d).tolist()]
 
@@ -269,6 +358,18 @@ class Barcode:
         """Indices (into :meth:`intervals`) of the ``n`` longest intervals in ``dim``, longest first.
 
         Thesis: §2.3 (long bars are the persistent features, short ones noise).
+
+        Parameters
+        ----------
+        dim : int
+            The homology dimension.
+        n : int
+            How many (≥ 0); fewer when the dimension has fewer intervals.
+
+        Returns
+        -------
+        numpy.ndarray of int
+            Row indices into ``intervals(dim)``; essential intervals count as longest, ties by birth.
         """
         from .._validate import check_int
 
@@ -289,6 +390,18 @@ class Barcode:
         """Same intervals in every dimension up to ``atol`` (dimensions without intervals are ignored).
 
         Thesis: Corollary 2.35 (a barcode determines the persistence module up to isomorphism).
+
+        Parameters
+        ----------
+        other : Barcode
+            The barcode to compare with (complete dimensions of either are compared).
+        atol : float
+            Absolute tolerance on each finite birth and death; ``inf`` must meet ``inf``.
+
+        Returns
+        -------
+        bool
+            True when :meth:`difference` finds none.
         """
         return self.difference(other, atol=atol) is None
 
@@ -296,6 +409,18 @@ class Barcode:
         """``None`` if both barcodes agree up to ``atol``, else a message naming the first difference.
 
         Thesis: Corollary 2.35 (equal barcodes ⇔ isomorphic persistence modules).
+
+        Parameters
+        ----------
+        other : Barcode
+            The barcode to compare with, over the union of both complete dimensions.
+        atol : float
+            Absolute tolerance on each finite birth and death; ``inf`` must meet ``inf``.
+
+        Returns
+        -------
+        str or None
+            ``None`` when they agree, else e.g. ``"H1: 3 intervals vs 2"``.
         """
         for d in sorted(set(self._complete) | set(other.complete_dimensions)):
             a, b = self.intervals(d), other.intervals(d)
@@ -329,6 +454,21 @@ class Barcode:
         ``simplices[dim + 1]``, ``-1`` if essential) of each interval of :meth:`intervals`.
 
         Thesis: Algorithm 2 (each interval is a pair (σ^i, σ^j) of simplices).
+
+        Parameters
+        ----------
+        dim : int
+            The homology dimension.
+
+        Returns
+        -------
+        numpy.ndarray of int64, shape (k, 2)
+            Read-only, row i belonging to row i of :meth:`intervals` ``(dim)``.
+
+        Raises
+        ------
+        ValueError
+            A barcode that does not know its simplices (not computed from a filtration).
         """
         if not self._has_simplices:
             raise ValueError("this barcode does not know its simplices (it was not computed from a filtration)")
@@ -348,7 +488,23 @@ class Barcode:
         Thesis: Theorem 2.39 (z_i: a cycle born at the interval's birth; for a finite interval it is
         the reduced boundary of the killing simplex, so it becomes a boundary at the death).
 
-        Coefficients lie in ``1 .. p - 1``; simplices are vertex tuples, listed in filtration order.
+        Parameters
+        ----------
+        dim : int
+            The homology dimension.
+        i : int
+            The row of the interval in :meth:`intervals` ``(dim)``.
+
+        Returns
+        -------
+        list of (tuple of int, int)
+            ``(simplex, coefficient)``: simplices as vertex tuples, listed in filtration order;
+            coefficients in ``1 .. p − 1``.
+
+        Raises
+        ------
+        ValueError
+            A barcode not computed from a filtration, or no interval ``i`` in ``dim``.
         """
         from .representatives import Representatives
 

@@ -3,8 +3,8 @@
 Used for the Morse complex of a filtration (:mod:`thesis_lib.morse.reduction`), whose cells are the
 critical simplices and whose boundary comes from gradient paths, not from vertices.  The reduction
 is Algorithm 2's column reduction on the boundary side with the twist (clearing): higher dimensions
-first, a column whose index is already a pivot is skipped.  Its field arithmetic and its working
-column are the library's one kernel (:mod:`.kernels`).
+first, a column whose index is already a pivot is skipped.  The reduction loop is the library's one
+stored-matrix kernel, :func:`~thesis_lib.persistence.kernels.reduce_columns`.
 """
 
 from __future__ import annotations
@@ -12,70 +12,32 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import check_coefficients
-from ..jit import njit
 from .barcode import Barcode
-from .kernels import grow, heap_push, mod_inverse, pop_pivot
+from .kernels import KEEP_REDUCED, reduce_columns
 
 __all__ = ["chain_persistence"]
 
 
-@njit(cache=True)
-def _reduce(n, indptr, indices, data, col_order, p):
-    """Column reduction with clearing mod p on a boundary matrix in filtration positions.
+def _reduce(mat, dims_pos: np.ndarray, p: int) -> np.ndarray:
+    """low[col] (−1 for a zero column) of the boundary matrix ``mat`` (CSC, rows and columns the cells in
+    filtration order, entries in 1 .. p − 1, sorted within each column) reduced mod p with the twist.
 
-    ``indices`` are row positions in the total order; ``col_order`` lists the columns to process
-    (higher dimensions first, each by increasing position).  The working column is a heap keyed by
-    −row (its pivot is the lowest, i.e. latest, row).  Returns low[col] (−1 for a zero column).
+    One dimension at a time, the highest first, each by increasing position; the columns whose cell
+    is already a pivot one dimension up are cleared.  Rows are ordered by −position, so the pivot of
+    a column is its latest face.
     """
+    n = mat.shape[0]
+    indptr, rows, coefs = mat.indptr.astype(np.int64), mat.indices.astype(np.int64), mat.data.astype(np.int64)
+    nonempty = indptr[1:] > indptr[:-1]
+    pivot = np.where(nonempty, rows[np.maximum(indptr[1:] - 1, 0)] if rows.size else -1, -1)
+    pivot_coef = np.where(nonempty, coefs[np.maximum(indptr[1:] - 1, 0)] if rows.size else 0, 0)
+    row_value = -np.arange(n, dtype=np.float64)
     low = np.full(n, -1, dtype=np.int64)
-    owner = np.full(n, -1, dtype=np.int64)
     cleared = np.zeros(n, dtype=np.bool_)
-    pcoef = np.zeros(n, dtype=np.int64)
-    start = np.zeros(n, dtype=np.int64)
-    length = np.zeros(n, dtype=np.int64)
-    pool_r = np.empty(max(16, indptr[n]), dtype=np.int64)
-    pool_v = np.empty(max(16, indptr[n]), dtype=np.int64)
-    used = 0
-    hv = np.zeros(64)
-    hk = np.empty(64, dtype=np.int64)
-    hc = np.empty(64, dtype=np.int64)
-    for c in col_order:
-        if cleared[c] or indptr[c + 1] == indptr[c]:
-            continue
-        hn = 0
-        hv, hk, hc = grow(hv, hk, hc, 0, indptr[c + 1] - indptr[c])
-        for e in range(indptr[c], indptr[c + 1]):
-            hn = heap_push(hv, hk, hc, hn, 0.0, -indices[e], data[e] % p)
-        piv, pc = np.int64(-1), np.int64(0)
-        while True:
-            hn, _, key, coef = pop_pivot(hv, hk, hc, hn, p)
-            if coef == 0:
-                break
-            o = owner[-key]
-            if o < 0:
-                piv, pc = -key, coef
-                break
-            factor = (p - coef) * mod_inverse(pcoef[o], p) % p  # kills row -key; that entry is not pushed
-            hv, hk, hc = grow(hv, hk, hc, hn, hn + length[o])
-            for e in range(start[o], start[o] + length[o]):
-                hn = heap_push(hv, hk, hc, hn, 0.0, -pool_r[e], factor * pool_v[e] % p)
-        if piv < 0:
-            continue
-        # store the rest of the reduced column (below the pivot) for later additions
-        m0 = used
-        while True:
-            hn, _, key, coef = pop_pivot(hv, hk, hc, hn, p)
-            if coef == 0:
-                break
-            if used == pool_r.shape[0]:
-                pool_r, pool_v, _ = grow(pool_r, pool_v, pool_v, used, used + 1)
-            pool_r[used] = -key
-            pool_v[used] = coef
-            used += 1
-        start[c], length[c] = m0, used - m0
-        owner[piv] = c
-        pcoef[c] = pc
-        low[c] = piv
+    for d in range(int(dims_pos.max(initial=0)), 0, -1):
+        cols, piv = reduce_columns(indptr, rows, coefs, row_value, np.flatnonzero(dims_pos == d), cleared, pivot,
+                                   pivot_coef, np.int64(p), KEEP_REDUCED)[:2]
+        low[cols] = piv
         cleared[piv] = True
     return low
 
@@ -135,9 +97,7 @@ def chain_persistence(values: list[np.ndarray], boundaries: list, p: int = 2) ->
     mat.eliminate_zeros()
     mat.sort_indices()
     dims_pos = dims[order]
-    col_order = np.lexsort((np.arange(n), -dims_pos)).astype(np.int64)
-    low = _reduce(n, mat.indptr.astype(np.int64), mat.indices.astype(np.int64), mat.data.astype(np.int64), col_order,
-                  np.int64(p))
+    low = _reduce(mat, dims_pos, p)
     vals_pos = vals[order]
     paired = np.zeros(n, dtype=bool)
     has = low >= 0

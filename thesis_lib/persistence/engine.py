@@ -15,19 +15,23 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
   columns of simplices already paired one dimension lower are cleared (skipped), columns whose
   pivot is still free (apparent/emergent pairs, the common case) are paired without any work,
   and only colliding columns are reduced, lazily as in Ripser (Bauer 2021): a heap of coface
-  entries, added columns kept as combinations V of original coboundaries, in a numba loop.
+  entries, added columns kept as combinations V of original coboundaries, in the library's one
+  stored-matrix reduction loop (:func:`~thesis_lib.persistence.kernels.reduce_columns`).
 """
 
 from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 
 from .._unionfind import find as _find
 from .._validate import resolve_coefficients
-from ..filtration import as_complex
+from ..filtration import Filtration, as_complex
 from ..jit import njit
 from .barcode import Barcode
-from .kernels import grow, heap_push, merge_entries, mod_inverse, pop_pivot
+from .kernels import KEEP_V, reduce_columns
 
 __all__ = ["persistence"]
 
@@ -171,140 +175,38 @@ def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
     return indptr, rows, signs, pivot, pivot_sign
 
 
-# ---------------------------------------------------------------------------- reduction over Z/p
-@njit(cache=True)
-def _reduce_cohomology(indptr, rows, signs, pivot, pivot_sign, order_d, cleared, up_values, p):
-    """Reduce the coboundary columns, latest d-simplex first, with clearing (Ripser's scheme).
-
-    ``order_d``: the d-simplices in filtration order; ``cleared[c]``: skip column c (its simplex was
-    paired one dimension lower).  The pivot of a column is its earliest coface.  A column whose
-    pivot is still free is paired as it stands (apparent/emergent pair: no work at all).  A
-    colliding column is reduced lazily: the working column is a heap of coface entries, the added
-    columns are stored as their combinations V of original coboundaries (never as reduced columns,
-    which fill in), and only entries up to the next pivot are ever combined.  Returns (pair
-    columns, pair rows, essential columns, number of column additions), all as simplex indices.
-    """
-    m_d = indptr.shape[0] - 1
-    m_up = up_values.shape[0]
-    owner = np.full(m_up, -1, dtype=np.int32)  # column owning each pivot
-    pcoef = np.zeros(m_d, dtype=np.int64)  # coefficient of its pivot in each reduced column
-    vstart = np.full(m_d, -1, dtype=np.int64)  # -1: V_c = c (the column was not reduced)
-    vlen = np.zeros(m_d, dtype=np.int64)
-    pool_k = np.empty(1024, dtype=np.int64)
-    pool_c = np.empty(1024, dtype=np.int64)
-    vused = 0
-    hcap = 1024
-    hv = np.empty(hcap)
-    ht = np.empty(hcap, dtype=np.int64)
-    hc = np.empty(hcap, dtype=np.int64)
-    wk = np.empty(64, dtype=np.int64)
-    wc = np.empty(64, dtype=np.int64)
-    npmax = min(m_d, m_up)
-    pair_c = np.empty(npmax, dtype=np.int64)
-    pair_r = np.empty(npmax, dtype=np.int64)
-    npairs = 0
-    ess = np.empty(m_d, dtype=np.int64)
-    ness = 0
-    additions = 0
-    for pos in range(m_d - 1, -1, -1):
-        c = order_d[pos]
-        if cleared[c]:
-            continue
-        if pivot[c] == -1:  # no cofaces at all
-            ess[ness] = c
-            ness += 1
-            continue
-        piv = pivot[c]
-        if owner[piv] == -1:  # pivot still free: the column is already reduced (apparent/emergent pair)
-            owner[piv] = c
-            pcoef[c] = pivot_sign[c] % p
-            pair_c[npairs] = c
-            pair_r[npairs] = piv
-            npairs += 1
-            continue
-        # ---- lazy reduction: heap of (value, coface, coefficient); V as a list of (simplex, coef)
-        hn = 0
-        wn = 0
-        wk[0] = c
-        wc[0] = 1
-        wn = 1
-        a, b = indptr[c], indptr[c + 1]
-        hv, ht, hc = grow(hv, ht, hc, 0, b - a)
-        for k in range(a, b):
-            t = np.int64(rows[k])
-            hn = heap_push(hv, ht, hc, hn, up_values[t], t, np.int64(signs[k]) % p)
-        piv = -1
-        pc = 0
-        while True:
-            # pop the pivot: the earliest coface whose coefficients do not cancel
-            hn, _, piv, pc = pop_pivot(hv, ht, hc, hn, p)
-            if pc == 0:
-                piv = -1
-                break
-            o = np.int64(owner[piv])
-            if o == -1:
-                break
-            # add factor · (reduced column of o) = factor · Σ_k V_o[k] δ(σ_k)
-            additions += 1
-            factor = (p - pc * mod_inverse(pcoef[o], p) % p) % p
-            # the pivot entry cancels exactly: drop it rather than pushing it back
-            if vstart[o] == -1:
-                ol = 1
-            else:
-                ol = vlen[o]
-            for q in range(ol):
-                if vstart[o] == -1:
-                    k_s, k_c = o, np.int64(1)
-                else:
-                    k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
-                f = factor * k_c % p
-                if wn == wk.shape[0]:
-                    wk, wc, _ = grow(wk, wc, wc, wn, wn + 1)
-                wk[wn] = k_s
-                wc[wn] = f
-                wn += 1
-                a, b = indptr[k_s], indptr[k_s + 1]
-                hv, ht, hc = grow(hv, ht, hc, hn, hn + (b - a))
-                for k in range(a, b):
-                    t = np.int64(rows[k])
-                    if t == piv:  # σ_k's entry at the pivot: it cancels with the popped one
-                        continue
-                    hn = heap_push(hv, ht, hc, hn, up_values[t], t, f * (np.int64(signs[k]) % p) % p)
-        if piv == -1:
-            ess[ness] = c
-            ness += 1
-            continue
-        # store V_c (duplicates merged, zeros dropped) and the pair
-        pos, sums = merge_entries(wk, wc, wn, p)
-        if vused + pos.shape[0] > pool_k.shape[0]:
-            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + pos.shape[0])
-        vstart[c] = vused
-        for q in range(pos.shape[0]):
-            pool_k[vused + q] = wk[pos[q]]
-            pool_c[vused + q] = sums[q]
-        vlen[c] = pos.shape[0]
-        vused += pos.shape[0]
-        owner[piv] = c
-        pcoef[c] = pc
-        pair_c[npairs] = c
-        pair_r[npairs] = piv
-        npairs += 1
-    return pair_c[:npairs], pair_r[:npairs], ess[:ness], additions
-
-
 # ---------------------------------------------------------------------------- driver
-def persistence(filtration, coefficients: int | None = None, *, stats: dict | None = None,
-                p: int | None = None) -> Barcode:
+def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
+                stats: dict[int, dict[str, int]] | None = None, p: int | None = None) -> Barcode:
     """Barcode of a filtration over Z/p by the fast engine (same result as :func:`compute_intervals`).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
 
     Parameters
     ----------
-    filtration : a :class:`~thesis_lib.complexes.Filtration` or an iterable of ``(simplex, value)`` pairs.
-    coefficients : a prime p, the field Z/p (default 2).
-    stats : optional dict, filled with counts (columns reduced, column additions) per dimension.
-    p : deprecated alias of ``coefficients``.
+    filtration : Filtration or iterable of (simplex, value) pairs
+        A :class:`~thesis_lib.filtration.Filtration` (e.g. from :func:`~thesis_lib.complexes.rips`),
+        or anything :func:`~thesis_lib.filtration.as_complex` takes.
+    coefficients : int, optional
+        A prime p: the field Z/p (default 2).
+    stats : dict, optional
+        Filled per dimension d < dim K with ``{"columns": ..., "additions": ...}`` (columns of the
+        reduction after clearing, column additions).
+    p : int, optional
+        Deprecated alias of ``coefficients`` (warns).
+
+    Returns
+    -------
+    Barcode
+        Dimensions 0 .. dim K with the creating and killing simplices of every interval (for
+        :meth:`~Barcode.representative`); the top dimension is listed as complete unless the
+        filtration is ``truncated``.
+
+    Raises
+    ------
+    ValueError
+        A complex :func:`~thesis_lib.filtration.as_complex` refuses, ``coefficients`` not a prime, a
+        triangle with a missing edge, or more than 2³¹ − 1 simplices in one dimension.
 
     Notes
     -----
@@ -358,8 +260,10 @@ def persistence(filtration, coefficients: int | None = None, *, stats: dict | No
             raise ValueError("more than 2**31 simplices in one dimension are not supported")
         up_values = np.ascontiguousarray(K.values[d + 1])
         indptr, rows, signs, pivot, pivot_sign = _coboundary_matrix(K, d, up_values)
-        born, dies, essential, adds = _reduce_cohomology(
-            indptr, rows, signs, pivot, pivot_sign, orders[d], cleared, up_values, np.int64(p)
+        # cohomology: latest d-simplex first, pivot = earliest coface (rows ordered by value, then index)
+        born, dies, essential, adds, *_ = reduce_columns(
+            indptr, rows, signs, up_values, np.ascontiguousarray(orders[d][::-1]), cleared, pivot, pivot_sign,
+            np.int64(p), KEEP_V,
         )
         del indptr, rows, signs, pivot, pivot_sign
         finish(d, born, dies, essential)

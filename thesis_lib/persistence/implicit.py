@@ -48,14 +48,19 @@ enumerators.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from .._unionfind import find as _find
 from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
 from ..jit import load_numba, njit, prange
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
+
+if TYPE_CHECKING:
+    import scipy.sparse
 
 __all__ = ["rips_persistence", "rips_graph"]
 
@@ -65,15 +70,40 @@ DENSE_MAX = 4096
 
 
 # ---------------------------------------------------------------------------- the graph
-def rips_graph(points=None, *, max_radius: float = np.inf, distance_matrix=None):
+def rips_graph(
+    points: npt.ArrayLike | None = None, *, max_radius: float = np.inf,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = None,
+) -> tuple[int, npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.float64]]:
     """The neighbour graph of a Rips filtration: ``(n, indptr, neighbours, lengths)``.
 
     Thesis: Definition 2.11 (an edge when the distance is at most 2ε).
 
-    ``neighbours[indptr[v]:indptr[v + 1]]`` are the vertices adjacent to v (distance ≤ 2 · max_radius)
-    in decreasing order, ``lengths`` their distances.  Exactly one of ``points`` ((n, d) array) and
-    ``distance_matrix`` (a dense (n, n) array, or a scipy.sparse matrix whose stored entries are the
-    only edges, as ripser's sparse input) is given.
+    Parameters
+    ----------
+    points : array_like, shape (n, d), optional
+        The point cloud (Euclidean distances); give exactly one of ``points`` and ``distance_matrix``.
+    max_radius : float
+        Scale ε: an edge joins two vertices at distance at most 2ε (default ∞: every pair).
+    distance_matrix : array_like, shape (n, n), or scipy.sparse matrix, optional
+        A dense symmetric matrix of distances, or a scipy.sparse matrix whose stored entries are the
+        only edges (as ripser's sparse input; the diagonal is ignored, entries above 2ε dropped).
+
+    Returns
+    -------
+    n : int
+        The number of vertices.
+    indptr : numpy.ndarray of int64, shape (n + 1,)
+        ``neighbours[indptr[v]:indptr[v + 1]]`` are the vertices adjacent to v.
+    neighbours : numpy.ndarray of int64
+        Each vertex's neighbours in decreasing order.
+    lengths : numpy.ndarray of float64
+        The distances, parallel to ``neighbours``.
+
+    Raises
+    ------
+    ValueError
+        Both or neither of ``points`` and ``distance_matrix``; a bad radius, point cloud or
+        distance matrix (not square, NaN, negative or asymmetric entries).
     """
     from ..complexes._flag import edges_within, matrix_edges
 
@@ -804,6 +834,8 @@ def _record(wk, wc, wd, wn, s, c, d):
 def _reduce(k, col_i, col_d, col_tau, col_sign, app_keys, app_vals, n, indptr, nbr, length, D, dnbr, dlen, B, p):
     """Reduce the coboundary columns of the k-simplices ``col_i`` (latest first) over Z/p.
 
+    The implicit kernel: the library's one reduction loop over coboundaries enumerated on the fly
+    (the stored-matrix one is :func:`~thesis_lib.persistence.kernels.reduce_columns`).
     ``col_tau``/``col_sign``: each column's earliest coface when it has the column's diameter (else
     −1) and its sign; ``app_keys``/``app_vals``: the table τ → σ of the zero apparent pairs (σ, τ)
     of this dimension.  Returns (births, deaths, essential births, pivot table keys, number of
@@ -978,8 +1010,11 @@ def _apparent_table(cand_i, tau, apparent):
 
 
 # ---------------------------------------------------------------------------- driver
-def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
-                     distance_matrix=None, stats: dict | None = None) -> Barcode:
+def rips_persistence(
+    points: npt.ArrayLike | None = None, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = None,
+    stats: dict[int, dict[str, int]] | None = None,
+) -> Barcode:
     """Barcode of the Vietoris–Rips filtration of ``points`` without building it (implicit engine).
 
     Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, computed by the dual
@@ -987,19 +1022,25 @@ def rips_persistence(points=None, *, max_radius: float = np.inf, max_dim: int = 
 
     Parameters
     ----------
-    points : (n, d) array of points, or give ``distance_matrix``.
-    max_radius : ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as
+    points : array_like, shape (n, d), optional
+        The point cloud; or give ``distance_matrix``.
+    max_radius : float
+        Scale ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as
         :func:`~thesis_lib.complexes.rips`).
-    max_dim : the largest simplex dimension of the complex (as :func:`~thesis_lib.complexes.rips`);
+    max_dim : int
+        The largest simplex dimension of the complex (as :func:`~thesis_lib.complexes.rips`), ≥ 1;
         homology of dimensions 0 .. max_dim − 1 is computed, and it is complete (the top dimension
         of a truncated complex is not: its classes could only die in dimensions that are not built).
-    coefficients : a prime p, the field Z/p.
-    distance_matrix : a dense symmetric (n, n) array, or a scipy.sparse matrix whose stored entries
-        are the only edges (entries above 2ε dropped); keyword only, instead of ``points``.
-    stats : optional dict, filled per dimension with ``simplices`` (k-simplices not killing a
-        (k−1)-class), ``apparent`` (zero apparent pairs σ < τ found), ``columns`` (columns left),
-        ``emergent`` (paired without enumerating their coboundary), ``reduced`` (columns that needed
-        an addition) and ``additions``.
+    coefficients : int
+        A prime p: the field Z/p.
+    distance_matrix : array_like, shape (n, n), or scipy.sparse matrix, optional
+        A dense symmetric matrix, or a scipy.sparse matrix whose stored entries are the only edges
+        (entries above 2ε dropped); keyword only, instead of ``points``.
+    stats : dict, optional
+        Filled per dimension with ``simplices`` (k-simplices not killing a (k−1)-class),
+        ``apparent`` (zero apparent pairs σ < τ found), ``columns`` (columns left), ``emergent``
+        (paired without enumerating their coboundary), ``reduced`` (columns that needed an addition)
+        and ``additions``.
 
     Returns
     -------

@@ -1,26 +1,52 @@
-"""The field arithmetic and the column heap shared by every persistence reduction of the library.
+"""The column reduction, field arithmetic and column heap shared by every persistence reduction.
 
-One modular inverse and one heap serve the explicit engine (:mod:`.engine`), the implicit Rips
-engine (:mod:`.implicit`), the reduction of a general filtered chain complex (:mod:`.chains`, used by
-the Morse reduction) and the thesis's literal Algorithms 1–2 (:mod:`.algorithm`, through
-:func:`inverse`).  A working column of a reduction is a binary min-heap of entries
-``(value, key, coefficient)`` ordered by ``(value, key)``: the *pivot* of the column is its least entry
-whose coefficients (entries of the same key are summed lazily, as in Ripser) do not cancel mod p.
+Two reduction loops exist in the library, and only two:
+
+* :func:`reduce_columns`, **the stored-matrix kernel**: the column reduction mod p, with clearing,
+  of a matrix held in compressed columns.  It serves the explicit engine (:mod:`.engine`,
+  coboundary columns: cohomology), the persistence of a general filtered chain complex
+  (:mod:`.chains`, boundary columns, hence the Morse reduction of :mod:`thesis_lib.morse`) and the
+  representative cycles (:mod:`.representatives`, which read R or V off its record).
+* ``_reduce`` in :mod:`.implicit`, **the implicit kernel** of the Rips engine: its coboundaries are
+  enumerated on the fly from the neighbour graph, never stored, so it cannot share a loop over
+  stored columns; it is built from this module's primitives only (heap, pivot popping, chain
+  merging, modular inverse).
+
+The thesis's literal Algorithms 1–2 (:mod:`.algorithm`) stay readable Python on dicts and use
+:func:`inverse`, the one modular inverse for Python integers (:func:`mod_inverse` inside compiled
+code).  A working column of a reduction is a binary min-heap of entries ``(value, key, coefficient)``
+ordered by ``(value, key)``: the *pivot* of the column is its least entry whose coefficients
+(entries of the same key are summed lazily, as in Ripser) do not cancel mod p.
 """
 
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from ..jit import njit
 
-__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "merge_entries", "grow"]
+__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "merge_entries", "grow",
+           "reduce_columns", "KEEP_V", "KEEP_V_ALL", "KEEP_REDUCED"]
 
 
 def inverse(a: int, p: int) -> int:
     """a⁻¹ in Z/p for a prime p (Python integers; Fermat: a^(p−2)).
 
     Thesis: Algorithm 1 (Reduce), the factor q⁻¹ of ``d = d − q⁻¹ T[i]``.
+
+    Parameters
+    ----------
+    a : int
+        The element to invert; any integer not divisible by ``p`` (reduced mod ``p`` first).
+    p : int
+        A prime: the field Z/p.
+
+    Returns
+    -------
+    int
+        The residue b in ``1 .. p − 1`` with ``a · b ≡ 1 (mod p)`` (0 when ``p`` divides ``a``, which
+        has no inverse: callers never ask for it).
     """
     return pow(int(a) % p, p - 2, p)
 
@@ -36,6 +62,14 @@ def mod_inverse(a: np.int64, p: np.int64) -> np.int64:
     return t % p
 
 
+@njit(cache=True, inline="always")
+def _put(hv, hk, hc, i, v, k, c):
+    """Write the entry ``(v, k, c)`` at position i of the heap (sift-up and sift-down move entries so)."""
+    hv[i] = v
+    hk[i] = k
+    hc[i] = c
+
+
 @njit(cache=True)
 def heap_push(hv, hk, hc, n, v, k, c):
     """Push ``(value v, key k, coefficient c)`` on the heap of size ``n`` (arrays large enough); returns n + 1."""
@@ -43,15 +77,11 @@ def heap_push(hv, hk, hc, n, v, k, c):
     while i > 0:
         par = (i - 1) >> 1
         if v < hv[par] or (v == hv[par] and k < hk[par]):
-            hv[i] = hv[par]
-            hk[i] = hk[par]
-            hc[i] = hc[par]
+            _put(hv, hk, hc, i, hv[par], hk[par], hc[par])
             i = par
         else:
             break
-    hv[i] = v
-    hk[i] = k
-    hc[i] = c
+    _put(hv, hk, hc, i, v, k, c)
     return n + 1
 
 
@@ -77,15 +107,11 @@ def heap_replace_top(hv, hk, hc, n, v, k, c):
         if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and hk[right] < hk[left])):
             m = right
         if hv[m] < v or (hv[m] == v and hk[m] < k):
-            hv[i] = hv[m]
-            hk[i] = hk[m]
-            hc[i] = hc[m]
+            _put(hv, hk, hc, i, hv[m], hk[m], hc[m])
             i = m
         else:
             break
-    hv[i] = v
-    hk[i] = k
-    hc[i] = c
+    _put(hv, hk, hc, i, v, k, c)
 
 
 @njit(cache=True)
@@ -151,3 +177,197 @@ def grow(hv, hk, hc, n, need):
     nk[:n] = hk[:n]
     nc[:n] = hc[:n]
     return nv, nk, nc
+
+
+#: what :func:`reduce_columns` keeps of a reduced column: its chain V (cohomology, as Ripser), V also
+#: for the columns that reduce to zero (representative cycles), or the reduced column itself (homology)
+KEEP_V, KEEP_V_ALL, KEEP_REDUCED = 0, 1, 2
+
+
+@njit(cache=True)
+def reduce_columns(
+    indptr: npt.NDArray[np.int64], rows: npt.NDArray[np.integer], coefs: npt.NDArray[np.integer],
+    row_value: npt.NDArray[np.float64], columns: npt.NDArray[np.int64], cleared: npt.NDArray[np.bool_],
+    pivot: npt.NDArray[np.int64], pivot_coef: npt.NDArray[np.int64], p: np.int64, keep: int,
+) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.int64], int,
+           npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+    """Reduce the columns of a compressed (CSC) matrix over Z/p, with clearing: the library's one
+    stored-matrix column reduction.
+
+    Thesis: Algorithm 1 (Reduce) inside Algorithm 2 (ComputeIntervals), §2.3.5: add earlier columns
+    to a column until no earlier column has its pivot; with clearing (a column known to be paired is
+    skipped) and on either side of the duality (boundary or coboundary columns).
+
+    The rows are ordered by ``(row_value[r], r)`` and the *pivot* of a column is its least row: give
+    ``row_value = −(position in the filtration)`` for boundary columns (pivot = latest face), the
+    cofaces' values for coboundary columns (pivot = earliest coface).  A column whose pivot is still
+    free is paired as it stands, without touching its entries (apparent and emergent pairs: the
+    common case).  A colliding column is reduced lazily, as in Ripser (Bauer 2021): the working
+    column is a heap of entries (:func:`heap_push`, :func:`pop_pivot`) summed only when they reach
+    the top, and only the entries up to the next free pivot are ever combined.  A column added to
+    another is either regenerated from its chain V of original columns (``KEEP_V``: cohomology, where
+    reduced columns fill in) or read from its stored reduced column (``KEEP_REDUCED``: homology).
+
+    Parameters
+    ----------
+    indptr : numpy.ndarray of int64, shape (m + 1,)
+        Column ``c`` holds the entries ``indptr[c] .. indptr[c + 1] − 1``.
+    rows : numpy.ndarray of int, shape (nnz,)
+        The row of each entry; no row twice in one column.
+    coefs : numpy.ndarray of int, shape (nnz,)
+        The coefficient of each entry (integers taken mod p; none divisible by p).
+    row_value : numpy.ndarray of float64, shape (number of rows,)
+        The first key of the row order (the row index is the second).
+    columns : numpy.ndarray of int64
+        The columns to reduce, in the order of the reduction.
+    cleared : numpy.ndarray of bool, shape (m,)
+        Columns to skip (cleared: paired already, as a pivot row one dimension away).
+    pivot : numpy.ndarray of int64, shape (m,)
+        The least row of each column, −1 for an empty column.
+    pivot_coef : numpy.ndarray of int64, shape (m,)
+        The coefficient at that row.
+    p : numpy.int64
+        A prime below 2³¹ (a product of two residues fits in int64).
+    keep : int
+        ``KEEP_V``: keep the chain V_c of every paired column that needed additions (the columns a
+        later column may add); ``KEEP_V_ALL``: also of the columns that reduce to zero (their V is a
+        cycle: representatives); ``KEEP_REDUCED``: keep the reduced column of every paired column
+        that needed additions, pivot entry first.
+
+    Returns
+    -------
+    pair_columns, pair_rows : numpy.ndarray of int64
+        The persistence pairs: column ``pair_columns[i]`` reduced to pivot ``pair_rows[i]``.
+    zero_columns : numpy.ndarray of int64
+        The columns that reduced to zero (empty ones included), in the order of ``columns``.
+    additions : int
+        The number of column additions.
+    start, length : numpy.ndarray of int64, shape (m,)
+        What is kept of column c is ``pool_keys[start[c]:start[c] + length[c]]`` with the
+        coefficients ``pool_coefs`` at the same places: the columns of V_c (increasing; the reduced
+        column is ``Σ_k V_c[k] · column k``) or the rows of the reduced column (pivot first).
+        ``start[c] = −1``: column c was not added to (V_c = c, reduced column = column c).
+    pool_keys, pool_coefs : numpy.ndarray of int64
+        The kept chains or columns, coefficients in ``1 .. p − 1``.
+    """
+    m = indptr.shape[0] - 1
+    owner = np.full(row_value.shape[0], -1, dtype=np.int32)  # the column owning each pivot
+    pcoef = np.zeros(m, dtype=np.int64)  # coefficient of its pivot in each reduced column
+    vstart = np.full(m, -1, dtype=np.int64)
+    vlen = np.zeros(m, dtype=np.int64)
+    pool_k = np.empty(1024, dtype=np.int64)
+    pool_c = np.empty(1024, dtype=np.int64)
+    vused = 0
+    hv = np.empty(1024)
+    hk = np.empty(1024, dtype=np.int64)
+    hc = np.empty(1024, dtype=np.int64)
+    wk = np.empty(64, dtype=np.int64)
+    wc = np.empty(64, dtype=np.int64)
+    npmax = min(columns.shape[0], row_value.shape[0])
+    pair_c = np.empty(npmax, dtype=np.int64)
+    pair_r = np.empty(npmax, dtype=np.int64)
+    npairs = 0
+    zero = np.empty(columns.shape[0], dtype=np.int64)
+    nzero = 0
+    additions = 0
+    reduced = keep == KEEP_REDUCED
+    for pos in range(columns.shape[0]):
+        c = columns[pos]
+        if cleared[c]:
+            continue
+        piv = pivot[c]
+        if piv == -1:  # an empty column
+            zero[nzero] = c
+            nzero += 1
+            continue
+        if owner[piv] == -1:  # pivot still free: the column is already reduced (apparent/emergent pair)
+            owner[piv] = c
+            pcoef[c] = pivot_coef[c] % p
+            pair_c[npairs] = c
+            pair_r[npairs] = piv
+            npairs += 1
+            continue
+        # ---- lazy reduction: a heap of (row value, row, coefficient); V as a list of (column, coefficient)
+        wk[0] = c
+        wc[0] = 1
+        wn = 1
+        a, b = indptr[c], indptr[c + 1]
+        hv, hk, hc = grow(hv, hk, hc, 0, b - a)
+        hn = 0
+        for e in range(a, b):
+            r = np.int64(rows[e])
+            hn = heap_push(hv, hk, hc, hn, row_value[r], r, np.int64(coefs[e]) % p)
+        while True:
+            # pop the pivot: the least row whose coefficients do not cancel
+            hn, _, piv, pc = pop_pivot(hv, hk, hc, hn, p)
+            if pc == 0:
+                piv = -1
+                break
+            o = np.int64(owner[piv])
+            if o == -1:
+                break
+            # add factor · (reduced column of o); its pivot entry cancels the popped one: never pushed
+            additions += 1
+            factor = (p - pc * mod_inverse(pcoef[o], p) % p) % p
+            if reduced and vstart[o] != -1:
+                a, b = vstart[o] + 1, vstart[o] + vlen[o]
+                hv, hk, hc = grow(hv, hk, hc, hn, hn + (b - a))
+                for e in range(a, b):
+                    r = pool_k[e]
+                    hn = heap_push(hv, hk, hc, hn, row_value[r], r, factor * pool_c[e] % p)
+                continue
+            ol = 1 if vstart[o] == -1 else vlen[o]
+            for q in range(ol):  # factor · Σ_k V_o[k] · column k
+                if vstart[o] == -1:
+                    k_s, k_c = o, np.int64(1)
+                else:
+                    k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
+                f = factor * k_c % p
+                if wn == wk.shape[0]:
+                    wk, wc, _ = grow(wk, wc, wc, wn, wn + 1)
+                wk[wn] = k_s
+                wc[wn] = f
+                wn += 1
+                a, b = indptr[k_s], indptr[k_s + 1]
+                hv, hk, hc = grow(hv, hk, hc, hn, hn + (b - a))
+                for e in range(a, b):
+                    r = np.int64(rows[e])
+                    if r != piv:
+                        hn = heap_push(hv, hk, hc, hn, row_value[r], r, f * (np.int64(coefs[e]) % p) % p)
+        if piv == -1:
+            zero[nzero] = c
+            nzero += 1
+            if keep != KEEP_V_ALL:
+                continue
+        vstart[c] = vused
+        if reduced:  # the reduced column: its pivot, then the rest of the heap
+            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + 1)
+            pool_k[vused] = piv
+            pool_c[vused] = pc
+            vused += 1
+            while True:
+                hn, _, r, rc = pop_pivot(hv, hk, hc, hn, p)
+                if rc == 0:
+                    break
+                if vused == pool_k.shape[0]:
+                    pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + 1)
+                pool_k[vused] = r
+                pool_c[vused] = rc
+                vused += 1
+        else:  # V_c, duplicates merged and zeros dropped
+            at, sums = merge_entries(wk, wc, wn, p)
+            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + at.shape[0])
+            for q in range(at.shape[0]):
+                pool_k[vused + q] = wk[at[q]]
+                pool_c[vused + q] = sums[q]
+            vused += at.shape[0]
+        vlen[c] = vused - vstart[c]
+        if piv == -1:
+            continue
+        owner[piv] = c
+        pcoef[c] = pc
+        pair_c[npairs] = c
+        pair_r[npairs] = piv
+        npairs += 1
+    return (pair_c[:npairs], pair_r[:npairs], zero[:nzero], additions, vstart, vlen, pool_k[:vused],
+            pool_c[:vused])

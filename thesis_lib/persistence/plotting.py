@@ -3,10 +3,15 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .barcode import Barcode
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
 __all__ = ["plot_barcode", "plot_diagram"]
 
@@ -42,33 +47,52 @@ def plot_barcode(
     barcode: Barcode,
     dims: Sequence[int] | None = None,
     *,
-    axes=None,
+    axes: Axes | Sequence[Axes] | None = None,
     max_value: float | None = None,
     min_length: float = 0.0,
     min_fraction: float = 0.01,
     max_bars: int = MAX_BARS,
     xlabel: str = "filtration value",
     title: str | None = None,
-):
+) -> Figure:
     """Draw a barcode: one panel per dimension, one horizontal bar per interval, arrows for ∞.
 
     Thesis: Figures 2.10 and 2.12 (barcodes; the vertical axis is an arbitrary ordering).
 
     Parameters
     ----------
-    barcode : the Barcode.
-    dims : dimensions to draw (default: the complete ones), one panel each, top to bottom.
-    axes : optional sequence of matplotlib axes (one per dimension); a new figure otherwise.
-    max_value : right end of the axis; essential bars run to it and end in an arrow.
-    min_length : leave out bars shorter than this (noise).
-    min_fraction : also leave out bars shorter than this fraction of the drawn range (default 1 %:
-        bars thinner than a line width; 0 draws every bar).
-    max_bars : refuse (ValueError) to draw more bars than this; raise ``min_length`` or
-        ``min_fraction``, or choose ``dims``, to draw fewer.
+    barcode : Barcode
+        The barcode to draw.
+    dims : sequence of int, optional
+        Dimensions to draw (default: the complete ones), one panel each, top to bottom.
+    axes : matplotlib Axes or sequence of Axes, optional
+        One axes per dimension to draw into; a new figure otherwise.
+    max_value : float, optional
+        Right end of the axis; essential bars run to it and end in an arrow (default: a little past
+        the largest finite value).
+    min_length : float
+        Leave out bars shorter than this (noise); ≥ 0.
+    min_fraction : float
+        Also leave out bars shorter than this fraction of the drawn range (default 1 %: bars thinner
+        than a line width; 0 draws every bar).
+    max_bars : int
+        Refuse to draw more bars than this; raise ``min_length`` or ``min_fraction``, or choose
+        ``dims``, to draw fewer.
+    xlabel : str
+        Label of the horizontal axis (under the bottom panel).
+    title : str, optional
+        Title over the top panel.
 
     Returns
     -------
-    The matplotlib figure.
+    matplotlib.figure.Figure
+        The figure holding the panels.
+
+    Raises
+    ------
+    ValueError
+        No dimension to draw, a negative ``min_length`` or ``min_fraction``, more than ``max_bars``
+        bars, or a number of ``axes`` other than of ``dims``.
     """
     import matplotlib.pyplot as plt
 
@@ -135,14 +159,37 @@ def plot_diagram(
     barcode: Barcode,
     dims: Sequence[int] | None = None,
     *,
-    ax=None,
+    ax: Axes | None = None,
     max_value: float | None = None,
     title: str | None = None,
-):
+) -> Figure:
     """Persistence diagram: each interval as a point (birth, death); essential ones on a line marked ∞.
 
     Thesis: Theorem 2.37 (β^{l,k} counts the points up-left of (l, l + k)); §2.3 barcodes as points.
-    Returns the figure.
+
+    Parameters
+    ----------
+    barcode : Barcode
+        Each of its intervals becomes one point.
+    dims : sequence of int, optional
+        The dimensions shown, one colour each, all in one panel (default: the complete ones).
+    ax : matplotlib Axes, optional
+        Where to draw; without it, in a new figure.
+    max_value : float, optional
+        Where the line of essential classes (∞) is drawn and the axes end (default: a little past
+        the largest finite value).
+    title : str, optional
+        Title of the panel.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure holding the diagram.
+
+    Raises
+    ------
+    ValueError
+        No dimension to draw.
     """
     import matplotlib.pyplot as plt
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
+
 import numpy as np
 
 from .barcode import Barcode
@@ -14,6 +16,25 @@ def long_bars(barcode: Barcode, dim: int, min_length: float) -> np.ndarray:
 
     Thesis: §2.3 (a feature that persists for a significant filtration time is "real"; short
     bars are noise).  The threshold is the caller's explicit choice, never inferred.
+
+    Parameters
+    ----------
+    barcode : Barcode
+        The barcode to read.
+    dim : int
+        The homology dimension.
+    min_length : float
+        The least length death − birth of a long bar; finite, ≥ 0.
+
+    Returns
+    -------
+    numpy.ndarray, shape (k, 2)
+        The long intervals of ``barcode.intervals(dim)``, in its order.
+
+    Raises
+    ------
+    ValueError
+        ``min_length`` negative, infinite or NaN.
     """
     if not np.isfinite(min_length) or min_length < 0:
         raise ValueError(f"min_length must be a finite non-negative number, got {min_length!r}")
@@ -21,10 +42,24 @@ def long_bars(barcode: Barcode, dim: int, min_length: float) -> np.ndarray:
     return iv[(iv[:, 1] - iv[:, 0]) >= min_length]
 
 
-def long_betti(barcode: Barcode, min_length: float, dims=None) -> list[int]:
+def long_betti(barcode: Barcode, min_length: float, dims: Iterable[int] | None = None) -> list[int]:
     """Number of long bars in each dimension (``dims`` default: all computed ones).
 
     Thesis: §2.4 (Betti numbers read off a barcode as its long bars, e.g. β = (1, 3) for two circles).
+
+    Parameters
+    ----------
+    barcode : Barcode
+        The barcode to read.
+    min_length : float
+        The least length of a long bar (as :func:`long_bars`).
+    dims : iterable of int, optional
+        The dimensions to count (default: ``barcode.dimensions``, complete or not).
+
+    Returns
+    -------
+    list of int
+        The number of long bars of each dimension of ``dims``, in that order.
     """
     dims = barcode.dimensions if dims is None else dims
     return [int(long_bars(barcode, d, min_length).shape[0]) for d in dims]
