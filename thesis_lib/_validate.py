@@ -20,6 +20,7 @@ import warnings
 import numpy as np
 
 __all__ = [
+    "as_distance_matrix",
     "InvalidTypeError",
     "as_points",
     "check_radius",
@@ -140,6 +141,21 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
             dup = np.flatnonzero(counts[inverse.ravel()] > 1)[:2]
             raise ValueError(f"duplicate {name}: rows {int(dup[0])} and {int(dup[1])} are equal")
     return arr
+
+
+def as_distance_matrix(distance_matrix) -> np.ndarray:
+    """A dense distance matrix: a non-empty square, symmetric float64 array without NaN or negative
+    entries (C-contiguous), or a ``ValueError`` saying what is wrong."""
+    dm = np.asarray(distance_matrix, dtype=np.float64)
+    if dm.ndim != 2 or dm.shape[0] != dm.shape[1] or dm.shape[0] == 0:
+        raise ValueError(f"distance_matrix must be a non-empty square (n, n) array, got shape {dm.shape}")
+    if np.isnan(dm).any():
+        raise ValueError("distance_matrix contains NaN")
+    if np.any(dm < 0):
+        raise ValueError("distance_matrix has a negative distance")
+    if not np.allclose(dm, dm.T, rtol=1e-12, atol=0):
+        raise ValueError("distance_matrix is not symmetric")
+    return np.ascontiguousarray(dm)
 
 
 def check_weights(weights, n: int) -> np.ndarray:

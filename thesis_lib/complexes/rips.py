@@ -5,25 +5,12 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points, check_max_dim, check_radius
+from .._validate import as_distance_matrix, as_points, check_max_dim, check_radius
 from ..filtration import Filtration
 from ._flag import edges_within, flag_levels, matrix_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["rips"]
-
-
-def _as_distance_matrix(distance_matrix) -> np.ndarray:
-    dm = np.asarray(distance_matrix, dtype=np.float64)
-    if dm.ndim != 2 or dm.shape[0] != dm.shape[1] or dm.shape[0] == 0:
-        raise ValueError(f"distance_matrix must be a non-empty square (n, n) array, got shape {dm.shape}")
-    if np.isnan(dm).any():
-        raise ValueError("distance_matrix contains NaN")
-    if np.any(dm < 0):
-        raise ValueError("distance_matrix has a negative distance")
-    if not np.allclose(dm, dm.T, rtol=1e-12, atol=0):
-        raise ValueError("distance_matrix is not symmetric")
-    return np.ascontiguousarray(dm)
 
 
 def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
@@ -53,7 +40,7 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
         raise ValueError("give exactly one of points and distance_matrix")
     none = (np.empty((0, 2), np.int64), np.empty(0))
     if distance_matrix is not None:
-        dm = _as_distance_matrix(distance_matrix)
+        dm = as_distance_matrix(distance_matrix)
         n = dm.shape[0]
         edges, lengths = matrix_edges(dm, 2.0 * eps) if max_dim >= 1 else none
     else:

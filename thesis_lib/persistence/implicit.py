@@ -54,7 +54,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._unionfind import find as _find
-from .._validate import as_points, check_max_dim, check_radius, resolve_coefficients
+from .._validate import as_distance_matrix, as_points, check_max_dim, check_radius, resolve_coefficients
 from ..jit import load_numba, njit, prange
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
@@ -136,9 +136,7 @@ def rips_graph(
         edges = np.column_stack([key[keep] // n, key[keep] % n])
         lengths = v[keep]
     else:
-        from ..complexes.rips import _as_distance_matrix
-
-        dm = _as_distance_matrix(distance_matrix)
+        dm = as_distance_matrix(distance_matrix)
         n = dm.shape[0]
         edges, lengths = matrix_edges(dm, threshold)
     return (n, *_csr(n, np.asarray(edges, np.int64).reshape(-1, 2), np.asarray(lengths, np.float64)))
