@@ -29,6 +29,26 @@ def test_tables_from_rows(tmp_path, monkeypatch):
         bench.load("missing")
 
 
+def test_targets_report_the_worst_case_and_what_is_missing(tmp_path, monkeypatch):
+    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    (tmp_path / "benchmarks" / "results").mkdir(parents=True)
+    rows = [{"case": "a", "ratio_x": 0.5, "rounds": 5, "mb": 10.0, "base": 100.0},
+            {"case": "b", "ratio_x": 1.2, "rounds": 15, "mb": 20.0, "base": 100.0}]
+    (tmp_path / "benchmarks" / "results" / "t.json").write_text(json.dumps({"meta": {}, "rows": rows}))
+    table = bench.targets([
+        dict(label="fast", topic="t", cases=["a", "b"], value="ratio_x", bound=1.0, unit="×"),
+        dict(label="fast a", topic="t", cases=["a"], value="ratio_x", bound=1.0),
+        dict(label="memory", topic="t", cases=["b"], value=lambda r: r["mb"] + r["base"], bound=100, unit=" MB"),
+        dict(label="later", topic="t", cases=["a", "z"], value="ratio_x", bound=1.0),
+    ]).splitlines()
+    assert table[2] == "| fast | a, b | 1.2× (b) | 1× | no | 15 |"
+    assert table[3] == "| fast a | a | 0.5 (a) | 1 | yes | 5 |"
+    assert table[4] == "| memory | b | 120 MB (b) | 100 MB | no | 15 |"
+    assert table[5] == "| later | a, z |  | 1 | not measured (z) |  |"
+    with pytest.raises(ValueError, match="lacks"):
+        bench.targets([dict(label="x", topic="t")])
+
+
 def test_every_stored_benchmark_is_readable():
     for topic in bench.topics():
         assert bench.load(topic), topic

@@ -9,9 +9,9 @@ number of rounds is ``rounds``.  Older files are a bare list of rows (no provena
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
@@ -24,7 +24,7 @@ if TYPE_CHECKING:  # matplotlib is imported only when a figure is drawn
     from matplotlib.figure import Figure
 
 __all__ = ["topics", "load", "meta", "markdown", "ratios", "fit_exponent", "ratio_figure", "scaling_figure",
-           "provenance"]
+           "provenance", "targets"]
 
 #: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
 PEERS = {"ripser": "Ripser", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
@@ -175,6 +175,49 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
         if missing:
             raise ValueError(f"benchmark {topic!r} has no columns {missing}")
     return markdown_table(columns, ([r.get(c) for c in columns] for r in rows), digits=3)
+
+
+def targets(specs: Sequence[Mapping[str, Any]]) -> str:
+    """The performance targets beside the stored figures, as a Markdown table.
+
+    Parameters
+    ----------
+    specs : sequence of mapping
+        One per target: ``label`` (str), ``topic`` (str), ``cases`` (list of case names; a missing
+        one is reported as not measured), ``value`` (a row key, or a callable of the row giving the
+        number), ``bound`` (float) and optionally ``unit`` (str, shown after the numbers).  A
+        target is met when the largest value over its cases is at most ``bound``.
+
+    Returns
+    -------
+    str
+        Columns: target, cases, worst value, bound, met (``yes``/``no``/``not measured``), and the
+        round counts of the worst case; every value read from ``benchmarks/results``.
+
+    Raises
+    ------
+    ValueError
+        On a spec without one of the required keys.
+    """
+    lines = []
+    for spec in specs:
+        missing = [k for k in ("label", "topic", "cases", "value", "bound") if k not in spec]
+        if missing:
+            raise ValueError(f"target spec {spec!r} lacks {missing}")
+        rows = {r.get("case"): r for r in load(spec["topic"])}
+        value = spec["value"] if callable(spec["value"]) else (lambda row, key=spec["value"]: row[key])
+        unit = spec.get("unit", "")
+        found = [(float(value(rows[c])), c) for c in spec["cases"] if c in rows]
+        if len(found) < len(spec["cases"]):
+            absent = [c for c in spec["cases"] if c not in rows]
+            lines.append([spec["label"], ", ".join(spec["cases"]), "", f"{spec['bound']:g}{unit}",
+                          f"not measured ({', '.join(absent)})", ""])
+            continue
+        worst, case = max(found)
+        met = "yes" if worst <= spec["bound"] else "no"
+        lines.append([spec["label"], ", ".join(spec["cases"]), f"{worst:.3g}{unit} ({case})",
+                      f"{spec['bound']:g}{unit}", met, rows[case].get("rounds", "")])
+    return markdown_table(["target", "cases", "worst", "bound", "met", "rounds"], lines, digits=3)
 
 
 def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:
