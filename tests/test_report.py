@@ -198,3 +198,19 @@ def test_corrupt_results_and_claims_give_clear_errors(registry, tmp_path, capsys
     (tmp_path / "experiments" / "claims" / "t.toml").write_text("[[claim]\n")
     assert cli.main(["report", "--json"]) == 2
     assert "t.toml is not valid TOML" in capsys.readouterr().err
+
+
+def test_findings_list_what_is_not_reproduced_with_badges():
+    from thesis_lib.lab.report import findings
+
+    rows = [
+        {"section": "thesis", "where": "Example 2.36", "status": "differs", "thesis": 1.0, "ours": [2.0, 3.5],
+         "note": "a | b\nc"},
+        {"section": "thesis", "where": "Figure 2.13", "status": "reproduced", "thesis": 3, "ours": 3, "note": ""},
+        {"section": "beyond", "where": "§2.4", "status": "new", "thesis": None, "ours": 1, "note": ""},
+        {"section": "thesis", "where": "Figure 3.5", "status": "reproduced", "thesis": 1, "ours": 1, "note": ""},
+    ]
+    lines = findings(rows, "2").splitlines()
+    assert lines[:2] == ["| thesis place | thesis | ours | status | why |", "|---|---|---|---|---|"]
+    assert lines[2:] == ["| Example 2.36 | 1 | (2, 3.5) | {bdg-danger}`differs` | a \\| b c |"]
+    assert findings(rows, "3") == "Every claim of this chapter is reproduced."

@@ -31,8 +31,8 @@ from .registry import read_tables
 from .results import ResultsError, check_name, load
 from .tables import markdown_table
 
-__all__ = ["Claim", "ClaimError", "STATUSES", "load_claims", "evaluate", "report", "summary", "summary_markdown",
-           "markdown", "to_json", "place_line"]
+__all__ = ["BADGES", "findings", "Claim", "ClaimError", "STATUSES", "load_claims", "evaluate", "report", "summary",
+           "summary_markdown", "markdown", "to_json", "place_line"]
 
 STATUSES = ("reproduced", "erratum", "differs", "not-reproducible", "figure-only", "new")
 COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
@@ -499,6 +499,43 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
     if beyond:
         parts.append("### Beyond the thesis\n\n" + table(beyond))
     return "\n".join(parts)
+
+
+#: the sphinx-design badge colour of each status (the summary page's tables)
+BADGES = {"reproduced": "success", "differs": "danger", "erratum": "warning", "not-reproducible": "muted",
+          "figure-only": "light", "new": "primary"}
+
+
+def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
+    """The thesis's claims of one chapter that are not simply reproduced, as a Markdown table.
+
+    Parameters
+    ----------
+    rows : list of dict or None
+        The evaluated claims (:func:`report`); None evaluates them.
+    chapter : str
+        The chapter number, ``"2"`` .. ``"4"`` (``"5"`` for the Summary), as the claims' places say.
+
+    Returns
+    -------
+    str
+        Columns thesis place, thesis, ours, status (a badge, :data:`BADGES`) and why (the claim's
+        note); a sentence instead when every claim of the chapter is reproduced.
+    """
+    rows = report() if rows is None else rows
+
+    def cell(value: object) -> str:
+        return str(value).replace("|", "\\|").replace("\n", " ")
+
+    shown = [r for r in rows if r.get("section", "thesis") == "thesis" and _chapter(str(r["where"])) == chapter
+             and r["status"] != "reproduced"]
+    if not shown:
+        return "Every claim of this chapter is reproduced."
+    lines = ["| thesis place | thesis | ours | status | why |", "|---|---|---|---|---|"]
+    for r in shown:
+        lines.append(f"| {cell(r['where'])} | {cell(_fmt(r['thesis']))} | {cell(_fmt(r['ours']))} "
+                     f"| {{bdg-{BADGES[str(r['status'])]}}}`{r['status']}` | {cell(r['note'])} |")
+    return "\n".join(lines) + "\n"
 
 
 def to_json(rows: list[dict[str, object]] | None = None) -> str:
