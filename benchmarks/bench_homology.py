@@ -54,9 +54,9 @@ CASES = {
     "hypertree-60": {"kind": "hypertree", "n": 60},
     "hypertree-90": {"kind": "hypertree", "n": 90},
 }
-FULL = ["rips-2d-3000", "rips-3d-2500", "torus-grid-180", "klein-grid-180", "linial-meshulam-100",
-        "linial-meshulam-150", "linial-meshulam-200", "hypertree-60", "hypertree-90"]
 QUICK = ["rips-2d-300", "torus-grid-20", "linial-meshulam-40", "hypertree-30"]
+FULL = QUICK + ["rips-2d-3000", "rips-3d-2500", "torus-grid-180", "klein-grid-180", "linial-meshulam-100",
+        "linial-meshulam-150", "linial-meshulam-200", "hypertree-60", "hypertree-90"]
 #: cases with a dense core worth the step-only comparison with PARI
 CORE_CASES = {"linial-meshulam-40", "linial-meshulam-100", "linial-meshulam-150", "linial-meshulam-200",
               "hypertree-30", "hypertree-60", "hypertree-90"}
@@ -290,20 +290,21 @@ def main(argv: list[str] | None = None) -> list[dict]:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="small cases only (smoke test)")
     ap.add_argument("--repeat", type=int, default=None, help="rounds (default 5, 15 under 0.1 s)")
-    ap.add_argument("--case", nargs="+", default=None, help="only these cases (rows of the stored file are kept)")
+    ap.add_argument("--case", nargs="+", default=None,
+                    help="only these cases, updated in the stored results with their own provenance")
     ap.add_argument("--worker", nargs=2, metavar=("TOOL", "CASE"), help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.worker:
         print(json.dumps(worker(*args.worker)))
         return []
     names = args.case or (QUICK if args.quick else FULL)
+    meta = harness.environment()
     rows = harness.stream_table(COLUMNS, names, lambda name: make_row(name, args.repeat))
-    if args.case and not args.quick:  # refresh some rows of the stored results
-        path = harness.RESULTS / "homology.json"
-        stored = harness.read_results(path)[1] if path.exists() else []
-        fresh = {r["case"]: r for r in rows}
-        rows = [fresh.pop(r["case"], r) for r in stored] + list(fresh.values())
-    harness.write_rows("homology", rows, args.quick)
+    if args.case and not args.quick:  # refresh some rows of the stored results, each with its own run
+        for row in rows:
+            harness.update_results("homology", row, meta, order=FULL)
+    else:
+        harness.write_results("homology", rows, args.quick, meta=meta)
     return rows
 
 

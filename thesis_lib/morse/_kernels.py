@@ -9,32 +9,6 @@ import numpy as np
 
 
 @numba.njit(cache=True)
-def _queue_where(count, target, queue):
-    """Put every cell with ``count == target`` in ``queue`` (in id order); returns the tail."""
-    tail = 0
-    for g in range(count.shape[0]):
-        if count[g] == target:
-            queue[tail] = g
-            tail += 1
-    return tail
-
-
-@numba.njit(cache=True)
-def _count_down(ptr, idx, c, count, target, removed, vals, queue, tail):
-    """The peeling step of Kahn's order and of the greedy matchings: ``c`` leaves, so each neighbour
-    h of ``c`` (CSR ``ptr``/``idx``) not removed and of the same value loses one from ``count``;
-    those that reach ``target`` join ``queue``.  Returns the new tail."""
-    for e in range(ptr[c], ptr[c + 1]):
-        h = idx[e]
-        if not removed[h] and vals[h] == vals[c]:
-            count[h] -= 1
-            if count[h] == target:
-                queue[tail] = h
-                tail += 1
-    return tail
-
-
-@numba.njit(cache=True)
 def topological_rank(n, ptr, idx):
     """Kahn's algorithm on the digraph (CSR ``ptr``/``idx``); rank[v] = position, -1 if on/after a cycle."""
     indeg = np.zeros(n, dtype=np.int64)
@@ -42,15 +16,22 @@ def topological_rank(n, ptr, idx):
         indeg[idx[e]] += 1
     queue = np.empty(n, dtype=np.int64)
     head = 0
-    tail = _queue_where(indeg, 0, queue)
-    # every vertex counts (one value, none removed: an edge is consumed once, when its tail leaves)
-    removed = np.zeros(n, dtype=np.bool_)
-    vals = np.zeros(n)
+    tail = 0
+    for v in range(n):
+        if indeg[v] == 0:
+            queue[tail] = v
+            tail += 1
     rank = np.full(n, -1, dtype=np.int64)
-    while head < tail:  # the queue is the order: rank = position in it
-        rank[queue[head]] = head
-        tail = _count_down(ptr, idx, queue[head], indeg, 0, removed, vals, queue, tail)
+    while head < tail:
+        v = queue[head]
+        rank[v] = head
         head += 1
+        for e in range(ptr[v], ptr[v + 1]):
+            w = idx[e]
+            indeg[w] -= 1
+            if indeg[w] == 0:
+                queue[tail] = w
+                tail += 1
     return rank
 
 
@@ -72,7 +53,11 @@ def greedy_matching(n, down_ptr, down_idx, up_ptr, up_idx, vals, order):
         cnt[g] = c
     queue = np.empty(2 * n + 1, dtype=np.int64)
     head = 0
-    tail = _queue_where(cnt, 1, queue)
+    tail = 0
+    for g in range(n):
+        if cnt[g] == 1:
+            queue[tail] = g
+            tail += 1
     partner = np.full(n, -1, dtype=np.int64)
     pointer = 0
     done = 0
@@ -102,22 +87,14 @@ def greedy_matching(n, down_ptr, down_idx, up_ptr, up_idx, vals, order):
             c = gone[k]
             removed[c] = True
             done += 1
-            tail = _count_down(up_ptr, up_idx, c, cnt, 1, removed, vals, queue, tail)
+            for e in range(up_ptr[c], up_ptr[c + 1]):
+                h = up_idx[e]
+                if not removed[h] and vals[h] == vals[c]:
+                    cnt[h] -= 1
+                    if cnt[h] == 1:
+                        queue[tail] = h
+                        tail += 1
     return partner
-
-
-@numba.njit(cache=True)
-def _touch(s, inheap, touched, nt, partner, rank, heap):
-    """First visit of cell ``s`` in a column of :func:`morse_columns`: list it in ``touched`` (to be
-    reset after the column) and, when it is paired upwards, queue it by its rank.  Returns the new
-    count ``nt`` of touched cells."""
-    if not inheap[s]:
-        inheap[s] = True
-        touched[nt] = s
-        nt += 1
-        if partner[s] > s:
-            heapq.heappush(heap, (rank[s], s))
-    return nt
 
 
 @numba.njit(cache=True)
@@ -143,7 +120,12 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
         for e in range(ptr[t], ptr[t + 1]):
             s = idx[e]
             acc[s] += data[e]
-            nt = _touch(s, inheap, touched, nt, partner, rank, heap)
+            if not inheap[s]:
+                inheap[s] = True
+                touched[nt] = s
+                nt += 1
+                if partner[s] > s:
+                    heapq.heappush(heap, (rank[s], s))
         while len(heap) > 0:
             item = heapq.heappop(heap)
             s = item[1]
@@ -165,7 +147,12 @@ def morse_columns(n, ptr, idx, data, partner, rank, is_crit, sources, p):
                     acc[s2] = acc[s2] % p
                 elif acc[s2] > limit or acc[s2] < -limit:
                     overflow = True
-                nt = _touch(s2, inheap, touched, nt, partner, rank, heap)
+                if not inheap[s2]:
+                    inheap[s2] = True
+                    touched[nt] = s2
+                    nt += 1
+                    if partner[s2] > s2:
+                        heapq.heappush(heap, (rank[s2], s2))
         for i in range(nt):
             s = touched[i]
             a = acc[s]
