@@ -530,7 +530,7 @@ def triangulate(geo: Geometry) -> Triangulation:
     Parameters
     ----------
     geo : Geometry
-        Prepared points and weights (:func:`prepare_geometry`).
+        Prepared points and weights (``prepare_geometry``).
 
     Returns
     -------
@@ -624,7 +624,7 @@ def regular_triangulation(points: npt.ArrayLike,
     Raises
     ------
     ValueError
-        As :func:`prepare_geometry`, or for points on a hyperplane.
+        As ``prepare_geometry``, or for points on a hyperplane.
     """
     geo, _ = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))

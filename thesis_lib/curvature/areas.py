@@ -143,7 +143,7 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
     Parameters
     ----------
     mesh : Mesh
-        A validated mesh (from :func:`~.manifold.checked_mesh`).
+        A validated mesh (from ``checked_mesh``).
     area : {"mixed", "voronoi", "barycentric"}, default "mixed"
         The vertex region; ``"mixed"`` needs n = 2.
 

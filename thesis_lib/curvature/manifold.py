@@ -185,7 +185,7 @@ def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.nd
     ----------
     simplices : ndarray of int64, shape (m, n + 1)
         Top simplices with vertex indices in ``range(n_vertices)`` (trusted: validate first, e.g.
-        with :func:`~.validate.validate_mesh`).
+        with ``validate_mesh``).
     n_vertices : int
         Number of vertices nv.
 
@@ -204,14 +204,14 @@ def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.nd
 
 
 def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
-    """:func:`~.validate.validate_mesh`, then the pseudo-manifold check with pinched vertices marked.
+    """``validate_mesh``, then the pseudo-manifold check with pinched vertices marked.
 
     Thesis: Definition 3.13 (a triangulated hypersurface) and §3.3.
 
     Parameters
     ----------
     vertices : array_like, shape (nv, n + 1)
-        Vertex coordinates, as in :func:`~.validate.validate_mesh`.
+        Vertex coordinates, as in ``validate_mesh``.
     simplices : array_like of int, shape (m, n + 1)
         Top simplices (rows in orientation order).
 

@@ -267,7 +267,7 @@ def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     Parameters
     ----------
     simplices : array_like of int, shape (m, n + 1)
-        Top simplices of a validated mesh (trusted, as in :func:`ridges`).
+        Top simplices of a validated mesh (trusted, as in ``ridges``).
     nv : int
         Number of vertices: the length of the mask.
 
@@ -296,15 +296,15 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
     count_ridges : bool, default True
         Count the top simplices at each ridge: raise on a ridge in three or more and mark the
         boundary vertices.  ``False`` leaves ``boundary`` None, for a caller that counts them in its
-        own pass (:func:`~.manifold.checked_mesh`).
+        own pass (``checked_mesh``).
 
     Returns
     -------
     Mesh
         The vertices (float64) and simplices (int64, rows as given), the hyperarea of each simplex,
         the boundary (None without ``count_ridges``) and isolated vertex masks, and for n = 2 the
-        per-corner :class:`TriangleGeometry`; ``pinched`` is left None (see
-        :func:`~.manifold.checked_mesh`).
+        per-corner ``TriangleGeometry``; ``pinched`` is left None (see
+        ``checked_mesh``).
 
     Raises
     ------

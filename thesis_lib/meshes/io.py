@@ -84,8 +84,8 @@ def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
 
     Raises
     ------
-    InvalidTypeError
-        If ``mesh`` is not a pyvista data set.
+    TypeError
+        If ``mesh`` is not a pyvista data set (``InvalidTypeError``, also a ``ValueError``).
     ValueError
         If it has no faces, or its faces could not be triangulated.
     """

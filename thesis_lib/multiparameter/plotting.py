@@ -90,7 +90,7 @@ def line_fan(bounds: npt.ArrayLike, n_lines: int = 5, *, base: npt.ArrayLike | N
     ----------
     bounds : array_like, shape (2, 2)
         The box ``[[ε_min, κ_min], [ε_max, κ_max]]`` with a positive span, e.g.
-        :meth:`Bifiltration.bounds`.
+        :meth:`~thesis_lib.multiparameter.Bifiltration.bounds`.
     n_lines : int, default 5
         How many lines.
     base : array_like, shape (2,), optional
