@@ -373,6 +373,13 @@ class Geometry:
         self.scalar = ScalarPredicates(self)
 
     # -------------------------------------------------------------------------- exact integers
+    def _scale(self, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """``(idx, pe, we, K)``: the indices as int64, their coordinate and weight exponents, and the
+        one K that makes every coordinate ×2^K and weight ×4^K of the batch an integer."""
+        idx = np.asarray(idx, dtype=np.int64)
+        pe, we = self.exponents[idx], self.weight_exponents[idx]
+        return idx, pe, we, int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
+
     def ints(self, idx: np.ndarray) -> tuple[np.ndarray, np.ndarray, int]:
         """Coordinates ×2^K and weights ×4^K of the points ``idx`` (any shape) as Python integers.
 
@@ -390,9 +397,7 @@ class Geometry:
         K : int
             One exponent for the whole batch (so every value is an integer).
         """
-        idx = np.asarray(idx, dtype=np.int64)
-        pe, we = self.exponents[idx], self.weight_exponents[idx]
-        k = int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
+        idx, pe, we, k = self._scale(idx)
         x = self.mantissas[idx].astype(object) * np.power(2, (k - pe).astype(object))
         w = self.weight_mantissas[idx].astype(object) * np.power(2, (2 * k - we).astype(object))
         return x, w, k
@@ -420,9 +425,7 @@ class Geometry:
             ``(x, w)``: int64 coordinates ×2^K (shape ``idx.shape + (d,)``) and weights ×4^K (shape
             ``idx.shape``); None when K > 60 or the polynomial could overflow int64.
         """
-        idx = np.asarray(idx, dtype=np.int64)
-        pe, we = self.exponents[idx], self.weight_exponents[idx]
-        k = int(max(pe.max(initial=0), (int(we.max(initial=0)) + 1) // 2))
+        idx, pe, we, k = self._scale(idx)
         if k > 60:
             return None
         scale = 2.0**k
