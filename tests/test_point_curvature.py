@@ -99,3 +99,17 @@ def test_knn_weights_alias_is_deprecated_and_equal():
         point_curvature(sample_sphere(200, 4, seed=0), estimator="crust", area="mixed")
     with pytest.raises(ValueError, match="NaN"):
         knn_curvature(np.vstack([pts, [[np.nan, 0, 0]]]))
+
+
+def test_mixed_area_off_r3_is_refused_before_reconstruction(monkeypatch):
+    """The refusal of area="mixed" off R³ comes before the Crust runs (no wasted reconstruction)."""
+    import thesis_lib.meshes.point_curvature as module
+
+    def no_crust(*args, **kwargs):
+        raise AssertionError("the Crust ran before the area was checked")
+
+    monkeypatch.setattr(module, "crust_nd", no_crust)
+    with pytest.raises(ValueError, match="mixed area"):
+        point_curvature(sample_sphere(200, 4, seed=0), estimator="crust", area="mixed")
+    with pytest.raises(AssertionError, match="Crust ran"):  # the stub is reached for a valid area
+        point_curvature(sample_sphere(200, 4, seed=0), estimator="crust", area="voronoi")

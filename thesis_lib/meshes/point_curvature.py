@@ -68,12 +68,9 @@ def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", kind: str 
     if kind == "gaussian" and pts.shape[1] != 3:
         raise ValueError("the Gaussian curvature (Definition 3.21) is for surfaces in R³, "
                          f"got points in R^{pts.shape[1]}")
-    if pts.shape[1] == 3:
-        faces = crust(pts)
-    else:
-        faces = crust_nd(pts).simplices
-        if area == "mixed":
-            raise ValueError("the mixed area is defined for surfaces in R³; use area='voronoi' or 'barycentric'")
+    if pts.shape[1] != 3 and area == "mixed":  # refused before the (costly) reconstruction
+        raise ValueError("the mixed area is defined for surfaces in R³; use area='voronoi' or 'barycentric'")
+    faces = crust(pts) if pts.shape[1] == 3 else crust_nd(pts).simplices
     if kind == "gaussian":
         return gaussian_curvature(pts, faces, area=area)
     return mean_curvature(pts, faces, area=area)
