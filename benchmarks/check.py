@@ -47,6 +47,10 @@ def main(argv: list[str] | None = None) -> int:
         _, fresh = harness.read_results(harness.RESULTS / f"{topic}_quick.json")
         problems = harness.ratio_changes(rows, fresh, args.tolerance)
         failures += [f"{topic}: {p}" for p in problems]
+        moves = harness.ratio_moves(rows, fresh)
+        if moves:
+            case, key, ref, value = max(moves, key=lambda m: abs(m[3] / m[2] - 1.0))
+            print(f"largest move: {case} {key} {value / ref - 1.0:+.0%} (stored {ref:.3g}, now {value:.3g})")
         print("ok" if not problems else "\n".join(problems), flush=True)
     if failures:
         print(f"\nbench-check FAILED (tolerance ±{args.tolerance:.0%}):", *failures, sep="\n  ")

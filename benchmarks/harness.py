@@ -8,11 +8,12 @@ benchmark follows these rules, and this module gives one function for each:
     ``compare({"ours": f, "ripser": g}, rounds=None)`` calls each contender once to warm it up
     (numba compilation, caches; the warm-up time is kept as ``warmup_s``), then runs *rounds*
     rounds A, B, A, B, ... so that a burst of load hits every contender alike.  The default
-    number of rounds is :func:`default_rounds`: at least 5, and 15 when the slowest warm-up took
-    under 0.1 s.  The result holds every time, the median per contender and, from
-    :func:`paired_ratio`, the median over rounds of the ratio of the two times of one round (the
-    figure to publish: ``ratio_<peer>``).  Compare **whole pipelines** (points → barcode for every
-    tool); a step-only figure is named as such (``step_ratio_<peer>``, ``<step>_s``).
+    number of rounds is :func:`default_rounds`: at least 5, and 15 when the slowest contender's
+    first timed round took under 0.1 s (not its warm-up, which includes compilation).  The result
+    holds every time, the median per contender and, from :func:`paired_ratio`, the median over
+    rounds of the ratio of the two times of one round (the figure to publish: ``ratio_<peer>``).
+    Compare **whole pipelines** (points → barcode for every tool); a step-only figure is named as
+    such (``step_ratio_<peer>``, ``<step>_s``).
 
 **Peak memory: separate processes, import baseline subtracted** — :func:`memory` (parent) and
     :func:`memory_worker` (child).  The parent runs ``python SCRIPT --memory ARGS...`` in a fresh
@@ -79,8 +80,9 @@ def compare(contenders: Mapping[str, Callable[[], object]], *, rounds: int | Non
     Parameters
     ----------
     contenders : name -> zero-argument callable running one whole pipeline.
-    rounds : timed rounds; default :func:`default_rounds` of the slowest warm-up (5, or 15 when
-        every contender took under 0.1 s).
+    rounds : timed rounds; default :func:`default_rounds` of the slowest contender's first timed
+        round (5, or 15 when every contender took under 0.1 s; the warm-up is not used, as it
+        includes compilation).
     check : optional; called once with ``{name: warm-up result}`` (e.g. to assert that every tool
         computed the same barcode) before the results are dropped.
 
@@ -102,17 +104,21 @@ def compare(contenders: Mapping[str, Callable[[], object]], *, rounds: int | Non
     if check is not None:
         check(results)
     results.clear()
-    n = int(rounds) if rounds is not None else default_rounds(max(warm.values()))
-    if n < 1:
+    n = int(rounds) if rounds is not None else None
+    if n is not None and n < 1:
         raise ValueError(f"rounds must be >= 1, got {n}")
     times: dict[str, list[float]] = {name: [] for name in contenders}
-    for _ in range(n):
+    done = 0
+    while n is None or done < n:
         for name, fn in contenders.items():
             gc.collect()
             t0 = time.perf_counter()
             out = fn()
             times[name].append(time.perf_counter() - t0)
             del out
+        done += 1
+        if n is None:  # the first timed round, compiled code warm, sets the count
+            n = default_rounds(max(t[0] for t in times.values()))
     return {"rounds": n, "warmup_s": warm, "times_s": times,
             "median_s": {name: statistics.median(t) for name, t in times.items()}}
 
@@ -278,6 +284,21 @@ def read_results(path: str | Path) -> tuple[dict, list[dict]]:
     return data.get("meta", {}), data["rows"]
 
 
+def ratio_moves(stored: Sequence[Mapping], fresh: Sequence[Mapping]) -> list[tuple[str, str, float, float]]:
+    """``(case, key, stored, fresh)`` for every ``ratio*`` value of a fresh row whose case has a
+    stored positive figure under the same key."""
+    by_case = {r.get("case"): r for r in stored}
+    moves = []
+    for row in fresh:
+        old = by_case.get(row.get("case"), {})
+        for key, value in row.items():
+            if key.startswith("ratio") and isinstance(value, (int, float)) and not isinstance(value, bool):
+                ref = old.get(key)
+                if isinstance(ref, (int, float)) and ref > 0:
+                    moves.append((row["case"], key, ref, value))
+    return moves
+
+
 def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance: float = TOLERANCE) -> list[str]:
     """Problems found by ``make bench-check``: every ``ratio*`` value of each fresh row against the
     stored row of the same ``case``; a move beyond ``tolerance`` (relative), a fresh case without a
@@ -290,15 +311,14 @@ def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance
             problems.append(f"{row.get('case')}: no stored result for this quick case")
             continue
         for key, value in row.items():
-            if not key.startswith("ratio") or not isinstance(value, (int, float)) or isinstance(value, bool):
-                continue
-            ref = old.get(key)
-            if not isinstance(ref, (int, float)) or ref <= 0:
-                problems.append(f"{row['case']}: {key} = {value:.3g} has no stored figure")
-                continue
-            move = value / ref - 1.0
-            if abs(move) > tolerance:
-                problems.append(f"{row['case']}: {key} moved {move:+.0%} (stored {ref:.3g}, now {value:.3g})")
+            if key.startswith("ratio") and isinstance(value, (int, float)) and not isinstance(value, bool):
+                ref = old.get(key)
+                if not isinstance(ref, (int, float)) or ref <= 0:
+                    problems.append(f"{row['case']}: {key} = {value:.3g} has no stored figure")
+    for case, key, ref, value in ratio_moves(stored, fresh):
+        move = value / ref - 1.0
+        if abs(move) > tolerance:
+            problems.append(f"{case}: {key} moved {move:+.0%} (stored {ref:.3g}, now {value:.3g})")
     return problems
 
 # A table column is a row key (the title; floats shown with 3 significant digits) or a pair

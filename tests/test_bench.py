@@ -86,6 +86,26 @@ def test_compare_interleaves_rounds_and_pairs_ratios():
         h.compare({})
 
 
+def test_default_rounds_follow_the_first_timed_round_not_the_warm_up():
+    """A contender whose warm-up is slow (compilation) but whose calls are fast gets 15 rounds."""
+    import time
+
+    h = _harness()
+    calls = []
+
+    def compiled_once():
+        time.sleep(0.15 if not calls else 0.0)  # the first call "compiles"
+        calls.append(1)
+
+    r = h.compare({"a": compiled_once, "b": lambda: None})
+    assert r["warmup_s"]["a"] >= 0.15
+    assert r["rounds"] == h.FAST_ROUNDS and len(r["times_s"]["a"]) == h.FAST_ROUNDS == len(calls) - 1
+    slow = h.compare({"a": lambda: time.sleep(0.11)})
+    assert slow["rounds"] == h.MIN_ROUNDS and len(slow["times_s"]["a"]) == h.MIN_ROUNDS
+    with pytest.raises(ValueError, match="rounds"):
+        h.compare({"a": lambda: None}, rounds=0)
+
+
 def test_results_carry_provenance_and_ratio_changes_are_caught(tmp_path):
     h = _harness()
     out = h.write_results("t", [{"case": "c", "ratio_ripser": 1.0}], output=str(tmp_path / "t.json"))
@@ -99,6 +119,8 @@ def test_results_carry_provenance_and_ratio_changes_are_caught(tmp_path):
     assert len(moved) == 1 and "ratio_ripser moved +40%" in moved[0]
     assert "no stored result" in h.ratio_changes(stored, [{"case": "d", "ratio_ripser": 1.0}])[0]
     assert "no stored figure" in h.ratio_changes(stored, [{"case": "c", "ratio_new": 1.0}])[0]
+    assert h.ratio_moves(stored, [{"case": "c", "ratio_ripser": 1.4, "ratio_new": 2.0, "n": 3}]) == [
+        ("c", "ratio_ripser", 1.0, 1.4)]
 
 
 def test_update_replaces_one_row_and_keeps_both_provenances(tmp_path, monkeypatch):
