@@ -6,10 +6,11 @@ library's persistence engine (Algorithm 2 / Theorem 2.39):
 * Hilbert function: HF_k(ε_i, κ_j) = dim H_k(K_{ε_i,κ_j}).  For each κ_j the complex K_{·,κ_j} is a
   filtration in ε, and its barcode gives dim H_k at every ε_i (bars with birth ≤ ε_i < death).
 * Rank invariant: rk(a, b) = rank H_k(K_a) → H_k(K_b) for grid points a ≤ b.  Any monotone path from
-  a to b gives the same map (the grid commutes), so for a = (ε_i, κ_j) and every κ_{j'} ≥ κ_j one
-  staircase — along κ_j up to ε_i, up to κ_{j'}, then along κ_{j'} — is a one-parameter filtration
-  through a and through every b = (ε_{i'}, κ_{j'}) with i' ≥ i; rk(a, b) is the number of its bars
-  alive at both (Definition 2.23: the persistent Betti number).
+  a to b gives the same map (the grid commutes), so one L-shaped path — up the column ε_i to κ_{j'},
+  then right along κ_{j'} — is a one-parameter filtration through every a = (ε_i, κ_j) with j ≤ j'
+  and, later, every b = (ε_{i'}, κ_{j'}) with i' ≥ i; rk(a, b) is the number of its bars alive at
+  both (Definition 2.23: the persistent Betti number).  Every pair a ≤ b lies on the path
+  (i_a, j_b), so a g × g grid needs g² barcodes.
 * Fibered barcode: the filtration along a line ℓ(t) = base + t·direction of positive slope, where σ
   enters at t(σ) = max_c (grade_c(σ) − base_c) / direction_c.
 """
@@ -137,17 +138,14 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
     return out
 
 
-def _staircase_values(bif: Bifiltration, te: list[np.ndarray], tk: list[np.ndarray], i: int, j: int, j2: int,
-                      n_eps: int):
-    """Entry positions along the staircase (ε_0..ε_i at κ_j, then ε_i..ε_last at κ_j2): a grid
-    point (ε_i', κ_j2), i' ≥ i, sits at position i' + 1 and (ε_i, κ_j) at position i."""
+def _corner_path_values(te: list[np.ndarray], tk: list[np.ndarray], i: int, j2: int, n_eps: int):
+    """Entry positions along the L-shaped path up the column ε_i (κ_0..κ_j2, position = κ index),
+    then right along the row κ_j2 (ε_i..ε_last, position j2 + i' − i); a simplex enters at the first
+    point of the path above its grades (grid indices ``te``, ``tk``), and is left out when none is."""
     values, keep = [], []
     for e, k in zip(te, tk):
-        first = (k <= j) & (e <= i)
-        second = ~first & (k <= j2) & (e < n_eps)
-        v = np.where(first, e, i + 1 + np.maximum(e - i, 0)).astype(np.float64)
-        values.append(v)
-        keep.append(first | second)
+        values.append(np.where(e <= i, k, j2 + e - i).astype(np.float64))
+        keep.append((k <= j2) & (e < n_eps))
     return values, keep
 
 
@@ -189,19 +187,19 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
     # grid index of each grade: the first grid value at or above it (len(grid) when above all)
     te = [np.searchsorted(eps, g[:, 0], side="left") for g in bifiltration.grades]
     tk = [np.searchsorted(kappa, g[:, 1], side="left") for g in bifiltration.grades]
-    later = np.arange(ne)
-    for j in range(nk):
-        for j2 in range(j, nk):
-            for i in range(ne):
-                values, keep = _staircase_values(bifiltration, te, tk, i, j, j2, ne)
-                if not keep[0].any():
-                    continue
-                arr = persistence(bifiltration.filtration(values, keep), p).intervals(dim)
-                alive = arr[arr[:, 0] <= i]
-                # bars alive at position i (a) and at position i2 + 1 (b = (ε_i2, κ_j2)), i2 >= i
-                deaths = np.sort(alive[:, 1])
-                count = alive.shape[0] - np.searchsorted(deaths, later[i:] + 1, side="right")
-                out[i, j, i:, j2] = count
+    # One barcode per L-shaped path (up the column ε_i to κ_j2, then right along κ_j2): it holds
+    # every a = (ε_i, κ_j), j ≤ j2, before every b = (ε_i2, κ_j2), i2 ≥ i, so the rank from a to b
+    # is the number of its bars alive at both (the rank is the same along any path through a and b).
+    for i in range(ne):
+        for j2 in range(nk):
+            values, keep = _corner_path_values(te, tk, i, j2, ne)
+            if not keep[0].any():
+                continue
+            arr = persistence(bifiltration.filtration(values, keep), p).intervals(dim)
+            later = j2 + np.arange(ne - i)  # the positions of b = (ε_i2, κ_j2), i2 = i .. ne − 1
+            for j in range(j2 + 1):
+                deaths = np.sort(arr[arr[:, 0] <= j, 1])  # bars alive at a = (ε_i, κ_j), position j
+                out[i, j, i:, j2] = deaths.shape[0] - np.searchsorted(deaths, later, side="right")
     return out
 
 
