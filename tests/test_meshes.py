@@ -316,3 +316,22 @@ def test_mesh_io_bad_input(tmp_path):
         to_pyvista(V, F + len(V))
     with pytest.raises(TypeError, match="pyvista mesh"):
         from_pyvista((V, F))
+
+
+@pytest.mark.parametrize("scale", [1e159, 2.0**500, 1e-159, 2.0**-500])
+def test_orientation_is_the_same_at_any_magnitude(scale):
+    """orient_outward's determinants overflowed (coordinates near 1e159: a RuntimeWarning and a sign
+    read from inf/nan) or underflowed to 0 (tiny coordinates: no facet flipped); the orientation of
+    a scaled surface must be that of the surface."""
+    import warnings
+
+    from thesis_lib.meshes import convex_hull_surface, orient_outward, sample_sphere
+
+    for dim in (2, 3, 4):
+        pts = sample_sphere(40, dim, seed=dim)
+        faces = convex_hull_surface(pts)
+        shuffled = faces[:, ::-1].copy()  # every facet reversed: half of them need a flip
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            assert np.array_equal(orient_outward(pts * scale, shuffled), orient_outward(pts, shuffled))
+            assert np.array_equal(convex_hull_surface(pts * scale), faces)

@@ -47,9 +47,15 @@ def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
         if c.shape != (1, v.shape[1]):
             raise ValueError(f"centre must be one point of R^{v.shape[1]}, got shape {np.shape(centre)}")
         c = c[0]
+    # the sign of the determinant is unchanged by positive scalings: scale the points, then each
+    # facet's matrix, so that it neither overflows nor underflows at any magnitude of coordinates
+    big = max(float(np.abs(v).max()), float(np.abs(c).max()))
+    if big > 0:
+        v, c = v / big, c / big
     p = v[s]
     mat = np.concatenate([p[:, 1:] - p[:, :1], (p[:, 0] - c)[:, None]], axis=1)
-    flip = np.linalg.det(mat) < 0
+    size = np.abs(mat).max(axis=(1, 2), keepdims=True)
+    flip = np.linalg.det(mat / np.where(size > 0, size, 1.0)) < 0
     s[flip, 0], s[flip, 1] = s[flip, 1], s[flip, 0].copy()
     return s
 
