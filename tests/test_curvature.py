@@ -598,3 +598,30 @@ def test_check_pseudomanifold_accepts_manifolds_and_boundaries():
         check_pseudomanifold(np.array([[0, 1, 2], [0, 1, 3], [0, 1, 4]]), 5)
     # curves (n = 1): a vertex in two edges is fine, links are not checked
     check_pseudomanifold(np.array([[0, 1], [1, 2], [2, 0]]), 3)
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_scale_covariance_up_to_the_float_range_and_refusal_beyond(n):
+    """Mean curvature scales as 1/s and hyperareas as s^n at any representable scale; a mesh so large
+    or small that products of 2n lengths leave float64 is refused (it returned NaN at 1e100 and
+    called a sphere of extent 1e-100 degenerate)."""
+    import warnings
+
+    from thesis_lib.curvature import mean_curvature, total_hyperarea
+    from thesis_lib.curvature.validate import SCALE_BITS
+    from thesis_lib.meshes import convex_hull_surface, sample_sphere
+
+    pts = sample_sphere(150, n + 1, seed=n)
+    faces = convex_hull_surface(pts)
+    area = "mixed" if n == 2 else "voronoi"
+    limit = SCALE_BITS // (2 * n)
+    h, a = mean_curvature(pts, faces, area=area), total_hyperarea(pts, faces)
+    for bits in (limit - 2, -(limit - 2)):  # the sphere's extent is about 2: just inside the range
+        s = 2.0**bits
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            np.testing.assert_allclose(mean_curvature(pts * s, faces, area=area) * s, h, rtol=1e-12)
+            np.testing.assert_allclose(total_hyperarea(pts * s, faces) / s**n, a, rtol=1e-12)
+    for bits in (limit + 1, -(limit + 2)):
+        with pytest.raises(ValueError, match="rescale the vertices"):
+            mean_curvature(pts * 2.0**bits, faces, area=area)

@@ -8,6 +8,9 @@ which raises a ``ValueError`` naming the problem:
 * wrong shapes: vertices not ``(nv, d)`` with ``d >= 2``, simplices not ``(m, d)`` (an n-simplex of a
   hypersurface in R^{n+1} has ``n + 1`` vertices, as many as the ambient dimension);
 * NaN or infinite coordinates; empty inputs; non-integral, negative or out-of-range indices;
+* a mesh whose extent is so large or so small that products of 2n lengths (Gram determinants,
+  hyperareas squared) would overflow or underflow float64: beyond 2^±``SCALE_BITS``/(2n), for
+  n = 2 about 10^±68 (rescale it: curvature scales as 1/s, hyperareas as s^n);
 * a simplex with a repeated vertex, or a degenerate (zero-hyperarea) simplex;
 * a non-manifold ridge: an (n-1)-face (an edge for surfaces) lying in more than two top simplices.
 
@@ -35,10 +38,16 @@ __all__ = [
     "boundary_vertices",
     "check_orientation",
     "DEGENERATE_RTOL",
+    "SCALE_BITS",
 ]
 
 #: A simplex whose hyperarea is below ``DEGENERATE_RTOL * (longest edge) ** n`` counts as degenerate.
 DEGENERATE_RTOL = 1e-10
+
+#: The extent e of a mesh (largest coordinate range) must have |log2 e| ≤ SCALE_BITS / (2n): the
+#: formulas multiply up to 2n lengths, and float64 holds 2^±1022 (measured: wrong values past 2^±250
+#: for n = 2, 2^±170 for n = 3, 2^±130 for n = 4).
+SCALE_BITS = 900
 
 
 class TriangleGeometry(NamedTuple):
@@ -324,6 +333,14 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
         bad = int(np.flatnonzero(~np.all(np.isfinite(v), axis=1))[0])
         raise ValueError(f"vertex {bad} has a NaN or infinite coordinate: {v[bad].tolist()}")
     nv, d = v.shape
+    extent = float((v.max(axis=0) - v.min(axis=0)).max())
+    limit = SCALE_BITS // (2 * (d - 1))
+    if extent > 0 and abs(np.log2(extent)) > limit:
+        raise ValueError(
+            f"the mesh extends over {extent:.3g}: its {d - 1}-dimensional hyperareas and curvatures would "
+            f"overflow or underflow float64 (extent must lie within 2^±{limit}); rescale the vertices "
+            f"(curvature scales as 1/s, hyperareas as s^{d - 1})"
+        )
     s = np.asarray(simplices)
     if s.ndim != 2:
         raise ValueError(f"simplices must be a 2-D (m, n + 1) array, got shape {s.shape}")
