@@ -600,7 +600,7 @@ def test_check_pseudomanifold_accepts_manifolds_and_boundaries():
     check_pseudomanifold(np.array([[0, 1], [1, 2], [2, 0]]), 3)
 
 
-@pytest.mark.parametrize("n", [2, 3])
+@pytest.mark.parametrize("n", [2, 3, 4])
 def test_scale_covariance_up_to_the_float_range_and_refusal_beyond(n):
     """Mean curvature scales as 1/s and hyperareas as s^n at any representable scale; a mesh so large
     or small that products of 2n lengths leave float64 is refused (it returned NaN at 1e100 and
@@ -622,6 +622,8 @@ def test_scale_covariance_up_to_the_float_range_and_refusal_beyond(n):
             warnings.simplefilter("error")
             np.testing.assert_allclose(mean_curvature(pts * s, faces, area=area) * s, h, rtol=1e-12)
             np.testing.assert_allclose(total_hyperarea(pts * s, faces) / s**n, a, rtol=1e-12)
-    for bits in (limit + 1, -(limit + 2)):
-        with pytest.raises(ValueError, match="rescale the vertices"):
-            mean_curvature(pts * 2.0**bits, faces, area=area)
+    for bits in (limit + 1, -(limit + 2), 300, -300):
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # refused with no overflow warning on the way
+            with pytest.raises(ValueError, match="rescale the vertices"):
+                mean_curvature(pts * 2.0**bits, faces, area=area)

@@ -69,9 +69,11 @@ class TriangleGeometry(NamedTuple):
 @njit(cache=True)
 def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cover - compiled
     """Fill the corner data; return (first simplex with a repeated vertex, first degenerate one,
-    number of degenerate ones), -1 for none (area <= rtol * longest edge², as in validate_mesh)."""
+    number of degenerate ones, longest squared edge), -1 for none (area <= rtol * longest edge², as
+    in validate_mesh)."""
     m = s.shape[0]
     first_repeated, first_degenerate, n_degenerate = -1, -1, 0
+    longest = 0.0
     for t in range(m):
         if first_repeated < 0 and (s[t, 0] == s[t, 1] or s[t, 1] == s[t, 2] or s[t, 0] == s[t, 2]):
             first_repeated = t
@@ -98,6 +100,7 @@ def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cov
         sq[0, t] = s0
         sq[1, t] = s1
         sq[2, t] = s2
+        longest = max(longest, s0, s1, s2)
         dot[0, t] = 0.5 * (s1 + s2 - s0)  # law of cosines
         dot[1, t] = 0.5 * (s2 + s0 - s1)
         dot[2, t] = 0.5 * (s0 + s1 - s2)
@@ -109,7 +112,7 @@ def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cov
             n_degenerate += 1
             if first_degenerate < 0:
                 first_degenerate = t
-    return first_repeated, first_degenerate, n_degenerate
+    return first_repeated, first_degenerate, n_degenerate, longest
 
 
 def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
@@ -134,8 +137,9 @@ def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
     return _checked_triangle_geometry(v, s)[0]
 
 
-def _checked_triangle_geometry(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeometry, int, int, int]:
-    """:func:`triangle_geometry` and the kernel's (first repeated, first degenerate, count degenerate)."""
+def _checked_triangle_geometry(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeometry, int, int, int, float]:
+    """:func:`triangle_geometry` and the kernel's (first repeated, first degenerate, count degenerate,
+    longest squared edge)."""
     m = len(s)
     dot, sq = np.empty((3, m)), np.empty((3, m))
     twice, pts = np.empty(m), np.empty((3, 3, m))
@@ -291,6 +295,21 @@ def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     return mask
 
 
+def _check_scale(v: np.ndarray, longest_sq: float, n: int) -> None:
+    """Refuse a mesh whose extent leaves 2^±(SCALE_BITS / 2n); the extent is computed only when the
+    longest edge (squared, overflowed to inf or underflowed to 0 when far out) is outside that range."""
+    limit = SCALE_BITS // (2 * n)
+    if 2.0 ** (-2 * limit) <= longest_sq <= 2.0 ** (2 * limit):
+        return
+    extent = float((v.max(axis=0) - v.min(axis=0)).max())
+    if extent > 0 and abs(np.log2(extent)) > limit:
+        raise ValueError(
+            f"the mesh extends over {extent:.3g}: its {n}-dimensional hyperareas and curvatures would "
+            f"overflow or underflow float64 (extent must lie within 2^±{limit}); rescale the vertices "
+            f"(curvature scales as 1/s, hyperareas as s^{n})"
+        )
+
+
 def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ridges: bool = True) -> Mesh:
     """Check a triangulated hypersurface and return it as a ``Mesh``.
 
@@ -333,14 +352,6 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
         bad = int(np.flatnonzero(~np.all(np.isfinite(v), axis=1))[0])
         raise ValueError(f"vertex {bad} has a NaN or infinite coordinate: {v[bad].tolist()}")
     nv, d = v.shape
-    extent = float((v.max(axis=0) - v.min(axis=0)).max())
-    limit = SCALE_BITS // (2 * (d - 1))
-    if extent > 0 and abs(np.log2(extent)) > limit:
-        raise ValueError(
-            f"the mesh extends over {extent:.3g}: its {d - 1}-dimensional hyperareas and curvatures would "
-            f"overflow or underflow float64 (extent must lie within 2^±{limit}); rescale the vertices "
-            f"(curvature scales as 1/s, hyperareas as s^{d - 1})"
-        )
     s = np.asarray(simplices)
     if s.ndim != 2:
         raise ValueError(f"simplices must be a 2-D (m, n + 1) array, got shape {s.shape}")
@@ -364,21 +375,24 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
     n = d - 1
     tri = None
     if n == 2:  # one compiled pass: geometry, repeated vertices, degenerate triangles
-        tri, repeated, degenerate, n_degenerate = _checked_triangle_geometry(v, s)
+        tri, repeated, degenerate, n_degenerate, longest_sq = _checked_triangle_geometry(v, s)
         areas = 0.5 * tri.twice_area
     else:
         ss = np.sort(s, axis=1)
         rep = np.flatnonzero(np.any(ss[:, 1:] == ss[:, :-1], axis=1))
         repeated = int(rep[0]) if rep.size else -1
-        areas = simplex_hyperareas(v, s)
-        p = v[s]
-        longest_sq = np.zeros(len(s))
-        for i in range(1, d):
-            for j in range(i):
-                e = p[:, i] - p[:, j]
-                np.maximum(longest_sq, np.einsum("ma,ma->m", e, e), out=longest_sq)
-        flat = np.flatnonzero(areas <= DEGENERATE_RTOL * np.sqrt(longest_sq) ** n)
+        with np.errstate(over="ignore", under="ignore", invalid="ignore"):  # far out: refused below
+            areas = simplex_hyperareas(v, s)
+            p = v[s]
+            longest_sq = np.zeros(len(s))
+            for i in range(1, d):
+                for j in range(i):
+                    e = p[:, i] - p[:, j]
+                    np.maximum(longest_sq, np.einsum("ma,ma->m", e, e), out=longest_sq)
+            flat = np.flatnonzero(areas <= DEGENERATE_RTOL * np.sqrt(longest_sq) ** n)
         degenerate, n_degenerate = (int(flat[0]) if flat.size else -1), flat.size
+        longest_sq = float(longest_sq.max())
+    _check_scale(v, longest_sq, n)
     if repeated >= 0:
         raise ValueError(f"simplex {repeated} {s[repeated].tolist()} has a repeated vertex")
     if degenerate >= 0:
