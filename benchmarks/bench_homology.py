@@ -38,7 +38,6 @@ import argparse
 import itertools
 import json
 import statistics
-import sys
 
 import harness
 
@@ -189,27 +188,18 @@ def worker(tool: str, name: str) -> dict:
         summary = lambda inv: {"core_rank": len(inv), "core_invariants": [_big(x) for x in inv if x != 1]}  # noqa: E731
     else:
         raise ValueError(f"unknown tool {tool!r}")
-    base = harness.rss_mb()
-    best, result = harness.best_of(run, 1, summary)
-    if best < SHORT_S:  # a cold first call is noisy: best of SHORT_REPEAT calls on the same input
-        best = min(best, harness.best_of(run, SHORT_REPEAT - 1, summary)[0])
-    peak = harness.rss_mb()
-    return {**out, "time_s": best, "base_mb": base, "peak_mb": peak, "work_mb": peak - base, **result}
+    stats, result = harness.measure_rss(run, SHORT_REPEAT, summary, short_s=SHORT_S)
+    return {**out, **stats, **result}
 
 
 def _run(tool: str, name: str) -> dict | None:
-    """One timed call in a fresh process; None when it exceeds the PARI limit."""
+    """One worker in a fresh process (:func:`harness.run_worker`); None when PARI exceeds its limit."""
     import subprocess
 
-    cmd = [sys.executable, __file__, "--worker", tool, name]
     try:
-        proc = subprocess.run(cmd, capture_output=True, text=True, check=False,
-                              timeout=PARI_LIMIT_S if tool == "pari-core" else None)
+        return harness.run_worker(__file__, tool, name, timeout=PARI_LIMIT_S if tool == "pari-core" else None)
     except subprocess.TimeoutExpired:
         return None
-    if proc.returncode != 0:
-        raise RuntimeError(f"worker {tool} {name} failed:\n{proc.stderr}")
-    return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
 def make_row(name: str, rounds: int | None) -> dict:

@@ -36,8 +36,9 @@ benchmark follows these rules, and this module gives one function for each:
     every time ratio it stores is a key starting with ``ratio`` (median of paired ratios, ours /
     peer; below 1 means we are faster).
 
-Older helpers (:func:`best_of`, :func:`best_times`, :func:`measure_rss`, :func:`run_worker`,
-:func:`main_per_case`) are kept for the scripts that still call them; new code uses the above.
+**One timed call per fresh process** — :func:`run_worker` (parent) and :func:`measure_rss` (child),
+    for tools that must not share a process (``bench_homology``: PARI, GUDHI and ours, each in
+    its own interpreter, interleaved by the parent).
 """
 
 from __future__ import annotations
@@ -53,7 +54,6 @@ import statistics
 import subprocess
 import sys
 import time
-import tracemalloc
 from collections.abc import Callable, Mapping, Sequence
 from importlib import metadata
 from pathlib import Path
@@ -284,41 +284,38 @@ def read_results(path: str | Path) -> tuple[dict, list[dict]]:
     return data.get("meta", {}), data["rows"]
 
 
-def ratio_moves(stored: Sequence[Mapping], fresh: Sequence[Mapping]) -> list[tuple[str, str, float, float]]:
-    """``(case, key, stored, fresh)`` for every ``ratio*`` value of a fresh row whose case has a
-    stored positive figure under the same key."""
+def _ratio_pairs(stored: Sequence[Mapping], fresh: Sequence[Mapping]):
+    """``(case, key, fresh value, stored value or None)`` for every ``ratio*`` number of each fresh
+    row whose case is stored (None: no positive stored figure under that key)."""
     by_case = {r.get("case"): r for r in stored}
-    moves = []
     for row in fresh:
-        old = by_case.get(row.get("case"), {})
+        old = by_case.get(row.get("case"))
+        if old is None:
+            continue
         for key, value in row.items():
             if key.startswith("ratio") and isinstance(value, (int, float)) and not isinstance(value, bool):
                 ref = old.get(key)
-                if isinstance(ref, (int, float)) and ref > 0:
-                    moves.append((row["case"], key, ref, value))
-    return moves
+                yield row["case"], key, value, ref if isinstance(ref, (int, float)) and ref > 0 else None
+
+
+def ratio_moves(stored: Sequence[Mapping], fresh: Sequence[Mapping]) -> list[tuple[str, str, float, float]]:
+    """``(case, key, stored, fresh)`` for every ``ratio*`` value of a fresh row whose case has a
+    stored positive figure under the same key."""
+    return [(case, key, ref, value) for case, key, value, ref in _ratio_pairs(stored, fresh) if ref is not None]
 
 
 def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance: float = TOLERANCE) -> list[str]:
     """Problems found by ``make bench-check``: every ``ratio*`` value of each fresh row against the
     stored row of the same ``case``; a move beyond ``tolerance`` (relative), a fresh case without a
     stored row, or a stored ratio missing from the fresh row."""
-    by_case = {r.get("case"): r for r in stored}
-    problems = []
-    for row in fresh:
-        old = by_case.get(row.get("case"))
-        if old is None:
-            problems.append(f"{row.get('case')}: no stored result for this quick case")
-            continue
-        for key, value in row.items():
-            if key.startswith("ratio") and isinstance(value, (int, float)) and not isinstance(value, bool):
-                ref = old.get(key)
-                if not isinstance(ref, (int, float)) or ref <= 0:
-                    problems.append(f"{row['case']}: {key} = {value:.3g} has no stored figure")
-    for case, key, ref, value in ratio_moves(stored, fresh):
-        move = value / ref - 1.0
-        if abs(move) > tolerance:
-            problems.append(f"{case}: {key} moved {move:+.0%} (stored {ref:.3g}, now {value:.3g})")
+    cases = {r.get("case") for r in stored}
+    problems = [f"{row.get('case')}: no stored result for this quick case" for row in fresh
+                if row.get("case") not in cases]
+    for case, key, value, ref in _ratio_pairs(stored, fresh):
+        if ref is None:
+            problems.append(f"{case}: {key} = {value:.3g} has no stored figure")
+        elif abs(value / ref - 1.0) > tolerance:
+            problems.append(f"{case}: {key} moved {value / ref - 1.0:+.0%} (stored {ref:.3g}, now {value:.3g})")
     return problems
 
 # A table column is a row key (the title; floats shown with 3 significant digits) or a pair
@@ -326,46 +323,18 @@ def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance
 
 
 # ---------------------------------------------------------------------------- command line
-def main_per_case(
-    topic: str,
-    doc: str,
-    argv: list[str] | None,
-    *,
-    worker: Callable[[str, str, int], dict],
-    make_row: Callable[[str, int], dict],
-    columns: Sequence,
-    cases: tuple[Sequence[str], Sequence[str]],
-    repeat: tuple[int, int],
-) -> list[dict]:
-    """The ``main`` of a benchmark whose tools each run a case in their own subprocess.
-
-    ``--worker TOOL CASE`` (the subprocess): print ``worker(tool, case, repeat)`` as JSON.  Otherwise
-    ``make_row(case, repeat)`` (which calls :func:`run_worker`) for ``cases`` = (quick, full), streamed
-    as a table, then :func:`write_rows`.  ``repeat`` = (quick, full) defaults of ``--repeat``.
-    """
-    args = arguments(doc, argv, repeat=None, worker=("TOOL", "CASE"))
-    n = args.repeat or (repeat[0] if args.quick else repeat[1])
-    if args.worker:
-        print(json.dumps(worker(args.worker[0], args.worker[1], n)))
-        return []
-    rows = stream_table(columns, cases[0] if args.quick else cases[1], lambda name: make_row(name, n))
-    write_rows(topic, rows, args.quick)
-    return rows
-
-
 def arguments(
     doc: str,
     argv: list[str] | None = None,
     *,
     quick_help: str = "small cases only (smoke test)",
     repeat: int | None | bool = False,
-    worker: Sequence[str] | None = None,
     output: bool = False,
     memory: Sequence[str] | None = None,
     cases: Sequence[str] | None = None,
 ) -> argparse.Namespace:
     """Parse the common options: ``--quick``; ``--repeat N`` (default ``repeat``; omitted when False);
-    ``--worker`` with the metavars ``worker`` (hidden, for the subprocesses); ``--memory`` with the
+    ``--memory`` with the
     metavars ``memory`` (hidden, for :func:`memory`); ``--output FILE`` (default None:
     :func:`write_results` picks the file); ``--rounds N`` (default None: :func:`default_rounds`);
     with ``cases`` (the known case names) ``--cases NAME ...`` to run only some (``args.cases``, None
@@ -374,8 +343,6 @@ def arguments(
     ap.add_argument("--quick", action="store_true", help=quick_help)
     if repeat is not False:
         ap.add_argument("--repeat", type=int, default=repeat, help="timed runs per case (best is kept)")
-    if worker:
-        ap.add_argument("--worker", nargs=len(worker), metavar=tuple(worker), help=argparse.SUPPRESS)
     if memory:
         ap.add_argument("--memory", nargs=len(memory), metavar=tuple(memory), help=argparse.SUPPRESS)
         ap.add_argument("--rounds", type=int, default=None,
@@ -409,77 +376,34 @@ def best_of(run: Callable[[], object], repeat: int, summary: Callable[[object], 
     return best, out
 
 
-def best_times(fns: Sequence[Callable], args: tuple, repeat: int) -> list[float]:
-    """Best wall time of each ``fn(*args)`` after one warm-up call each; the calls are interleaved
-    (fn0, fn1, fn0, ...) so that machine load hits all alike."""
-    for fn in fns:
-        fn(*args)  # warm-up
-    best = [float("inf")] * len(fns)
-    for _ in range(repeat):
-        for i, fn in enumerate(fns):
-            t0 = time.perf_counter()
-            fn(*args)
-            best[i] = min(best[i], time.perf_counter() - t0)
-    return best
-
-
 def rss_mb() -> float:
     """This process's resident-set high-water mark (``getrusage``), MB."""
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
 
 
-def status_mb(field: str) -> float:
-    """A field of ``/proc/self/status`` (``VmRSS``, ``VmHWM``, ...), MB."""
-    with open("/proc/self/status") as fh:
-        for line in fh:
-            if line.startswith(field + ":"):
-                return int(line.split()[1]) / 1024  # kB
-    raise RuntimeError(f"{field} not in /proc/self/status")
+def measure_rss(run: Callable[[], object], repeat: int, summary: Callable[[object], object] | None = None,
+                *, short_s: float | None = None):
+    """Time ``run`` (:func:`best_of` of ``repeat`` calls) between two reads of the RSS high-water mark.
 
-
-def measure_rss(run: Callable[[], object], repeat: int, summary: Callable[[object], object] | None = None):
-    """Time ``run`` (:func:`best_of`) between two reads of the RSS high-water mark.
-
+    With ``short_s``, the calls after the first are made only when it took under ``short_s`` seconds
+    (a single cold call of a few milliseconds is noisy; a long one is not, and is not repeated).
     Returns ``({"time_s", "base_mb", "peak_mb", "work_mb"}, last result)``; ``work_mb = peak - base``
     is what the timed calls added to what the process held before.
     """
     base = rss_mb()
-    best, out = best_of(run, repeat, summary)
+    best, out = best_of(run, 1, summary)
+    if repeat > 1 and (short_s is None or best < short_s):
+        more, out = best_of(run, repeat - 1, summary)
+        best = min(best, more)
     peak = rss_mb()
     return {"time_s": best, "base_mb": base, "peak_mb": peak, "work_mb": peak - base}, out
 
 
-def peak_growth_mb(call: Callable[[], object]) -> float:
-    """Peak RSS growth (MB) of one ``call()``: the high-water mark is reset first (``clear_refs``),
-    or, where that is not possible, the lifetime peak is used."""
-    try:  # reset the high-water mark (VmHWM) so imports and loading do not count
-        with open("/proc/self/clear_refs", "w") as fh:
-            fh.write("5")
-        before = status_mb("VmRSS")
-        call()
-        peak = status_mb("VmHWM")
-    except OSError:  # no clear_refs: fall back to the lifetime peak
-        before = status_mb("VmRSS")
-        call()
-        peak = rss_mb()
-    return max(peak - before, 0.0)
-
-
-def tracemalloc_timed(fn: Callable[[], object], repeat: int):
-    """``(best time, last result, peak MB)``: :func:`best_of`, then one more call under ``tracemalloc``
-    (Python-side allocations only)."""
-    best, out = best_of(fn, repeat)
-    tracemalloc.start()
-    fn()
-    peak = tracemalloc.get_traced_memory()[1] / 2**20
-    tracemalloc.stop()
-    return best, out, peak
-
-
-def run_worker(script: str, *args: object):
-    """Run ``python script --worker args...`` in a fresh process; the JSON of its last output line."""
+def run_worker(script: str, *args: object, timeout: float | None = None):
+    """Run ``python script --worker args...`` in a fresh process; the JSON of its last output line.
+    A run longer than ``timeout`` seconds is stopped (``subprocess.TimeoutExpired``)."""
     cmd = [sys.executable, str(Path(script).resolve()), "--worker", *map(str, args)]
-    proc = subprocess.run(cmd, capture_output=True, text=True, check=False)
+    proc = subprocess.run(cmd, capture_output=True, text=True, check=False, timeout=timeout)
     if proc.returncode != 0:
         raise RuntimeError(f"worker {' '.join(map(str, args))} failed:\n{proc.stderr}")
     return json.loads(proc.stdout.strip().splitlines()[-1])
