@@ -7,7 +7,7 @@ import numpy.typing as npt
 from scipy.spatial import ConvexHull, QhullError
 
 from .._validate import as_points, check_int, check_simplices
-from ..complexes.scaling import scaled
+from ..complexes.scaling import power_of_two_scale, scaled
 from .sampling import sample_sphere
 
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]
@@ -48,14 +48,14 @@ def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
             raise ValueError(f"centre must be one point of R^{v.shape[1]}, got shape {np.shape(centre)}")
         c = c[0]
     # the sign of the determinant is unchanged by positive scalings: scale the points, then each
-    # facet's matrix, so that it neither overflows nor underflows at any magnitude of coordinates
-    big = max(float(np.abs(v).max()), float(np.abs(c).max()))
-    if big > 0:
-        v, c = v / big, c / big
+    # facet's matrix, by powers of two (exact: the computed determinant scales exactly), so that it
+    # neither overflows nor underflows at any magnitude of coordinates
+    e = power_of_two_scale(np.vstack([v, c[None]]))
+    v, c = np.ldexp(v, e), np.ldexp(c, e)
     p = v[s]
     mat = np.concatenate([p[:, 1:] - p[:, :1], (p[:, 0] - c)[:, None]], axis=1)
-    size = np.abs(mat).max(axis=(1, 2), keepdims=True)
-    flip = np.linalg.det(mat / np.where(size > 0, size, 1.0)) < 0
+    _, size = np.frexp(np.abs(mat).max(axis=(1, 2), keepdims=True))
+    flip = np.linalg.det(np.ldexp(mat, -size)) < 0
     s[flip, 0], s[flip, 1] = s[flip, 1], s[flip, 0].copy()
     return s
 
