@@ -36,7 +36,7 @@ __all__ = ["BADGES", "findings", "Claim", "ClaimError", "STATUSES", "load_claims
 
 STATUSES = ("reproduced", "erratum", "differs", "not-reproducible", "figure-only", "new")
 COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
-PROVENANCES = ("computed", "reconstructed input", "transcribed")
+PROVENANCES = ("transcribed", "thesis data", "reconstructed input", "substitute input", "computed")
 SECTIONS = ("thesis", "beyond")
 THESIS_TEXT = "botnan-2011-three-approaches.txt"
 
@@ -66,6 +66,11 @@ class Claim:
     provenance: str | None = None
     section: str = "thesis"
     link: str | None = None
+    by_construction: str | None = None
+    own_tolerance: bool = False
+    not_comparable: bool = False
+    corrected: str | None = None
+    check: str | None = None
 
     def reference(self, which: str = "thesis") -> list[float]:
         """The numbers the comparison uses, one per result key.
@@ -108,11 +113,52 @@ def claims_dir() -> Path:
 
 
 _KEYS = {"id", "where", "thesis", "result", "compare", "value", "correct", "rtol", "atol", "low", "high", "note",
-         "not_reproducible", "provenance", "section", "link"}
+         "not_reproducible", "provenance", "section", "link", "by_construction", "own_tolerance", "not_comparable",
+         "corrected", "check"}
 _LINK = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_./-]*#[A-Za-z0-9_][A-Za-z0-9_.-]*")
 
 
-def _parse(item: object, source: str) -> Claim:
+def _check_kind(item: dict, where: str, *, strict: bool) -> None:
+    """The keys that say what kind of claim this is (identity, own tolerance, not comparable, erratum)."""
+    if not isinstance(item.get("note", ""), str):
+        raise ClaimError(f"{where}: note must be a string, got {item['note']!r}")
+    for key in ("by_construction", "corrected", "check"):
+        if key in item and (not isinstance(item[key], str) or not item[key].strip()):
+            raise ClaimError(f"{where}: {key} must be a non-empty string (one sentence), got {item[key]!r}")
+    for key in ("own_tolerance", "not_comparable", "not_reproducible"):
+        if key in item and not isinstance(item[key], bool):
+            raise ClaimError(f"{where}: {key} must be true or false, got {item[key]!r}")
+    compare = item["compare"]
+    if item.get("not_comparable"):
+        clash = [k for k in ("by_construction", "own_tolerance", "correct", "not_reproducible")
+                 if item.get(k) not in (None, False)]
+        if clash:
+            raise ClaimError(f"{where}: not_comparable (a statement about another program's run) cannot be combined "
+                             f"with {', '.join(clash)}")
+        if not item.get("note"):
+            raise ClaimError(f"{where}: not_comparable needs a note saying what was run and why it is not compared")
+    if item.get("own_tolerance"):
+        if compare == "none":
+            raise ClaimError(f"{where}: own_tolerance needs a comparison with a tolerance or a value, not 'none'")
+        need = {"rel": "rtol", "abs": "atol"}.get(compare)
+        if need and not item.get(need):
+            raise ClaimError(f"{where}: own_tolerance with compare = {compare!r} needs a nonzero {need} (the tolerance "
+                             f"of ours)")
+    if "by_construction" in item and "correct" in item:
+        raise ClaimError(f"{where}: by_construction cannot be an erratum (correct): an erratum needs a computation "
+                         f"that could have given the thesis's value")
+    if "correct" not in item:
+        extra = [k for k in ("corrected", "check") if k in item]
+        if extra:
+            raise ClaimError(f"{where}: {' and '.join(extra)} only go with an erratum (a claim with correct)")
+    elif strict:
+        missing = [k for k in ("corrected", "check") if k not in item]
+        if missing:
+            raise ClaimError(f"{where}: an erratum (correct) needs {' and '.join(missing)}: the corrected statement "
+                             f"and the decisive check, one sentence each")
+
+
+def _parse(item: object, source: str, *, strict: bool = True) -> Claim:
     if not isinstance(item, dict):
         raise ClaimError(f"{source}: a [[claim]] must be a table, got {item!r}")
     cid = item.get("id", "?")
@@ -150,17 +196,20 @@ def _parse(item: object, source: str) -> Claim:
     for key in ("rtol", "atol", "low", "high"):
         if key in item and (isinstance(item[key], bool) or not isinstance(item[key], (int, float))):
             raise ClaimError(f"{where}: {key} must be a number, got {item[key]!r}")
+    _check_kind(item, where, strict=strict)
     fields = {k: v for k, v in item.items() if k != "result"}
     return Claim(result=result, source=source, **fields)
 
 
-def load_claims(directory: Path | None = None) -> list[Claim]:
+def load_claims(directory: Path | None = None, *, strict: bool = False) -> list[Claim]:
     """Every claim of the registry in the thesis's order (stable); ids must be unique.
 
     Parameters
     ----------
     directory : pathlib.Path, optional
         Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
+    strict : bool, default False
+        Also require ``corrected`` and ``check`` of every erratum (claims with ``correct``).
 
     Returns
     -------
@@ -175,7 +224,7 @@ def load_claims(directory: Path | None = None) -> list[Claim]:
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
         items = read_tables(file, "claim", ClaimError)
-        claims += [_parse(item, file.name) for item in items]
+        claims += [_parse(item, file.name, strict=strict) for item in items]
     ids = [c.id for c in claims]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
