@@ -182,3 +182,47 @@ def test_diagrams_round_trip_with_ripser():
     assert ours.allclose(theirs, atol=1e-6)  # ripser computes in float32
     again = Barcode.from_diagrams(ours.to_diagrams())
     assert again == ours and len(ours.to_diagrams()) == len(ours.complete_dimensions)
+
+
+def test_hostile_tolerances_dimensions_and_fields_are_refused_by_name():
+    """Issue 21: atol=NaN said two different barcodes were close, atol=-1 that a barcode differs
+    from itself; fractional or string dimensions and a non-prime field were accepted; a dimension
+    of 10¹² made to_diagrams build 10¹² arrays."""
+    a, b = Barcode({0: [[0, 1]]}), Barcode({0: [[0, 5]]})
+    assert not a.allclose(b, atol=1.0) and a.allclose(b, atol=np.inf) and a.allclose(a, atol=0)
+    with pytest.raises(ValueError, match="atol is NaN"):
+        a.allclose(b, atol=float("nan"))
+    with pytest.raises(ValueError, match="atol must be >= 0"):
+        a.allclose(a, atol=-1)
+    with pytest.raises(TypeError, match="atol must be a number"):
+        a.difference(a, atol="0.1")
+    with pytest.raises(TypeError, match="other must be a Barcode"):
+        a.difference([[0, 1]])
+    for bad in (1.5, "1", True):
+        with pytest.raises(TypeError, match="homology dimension"):
+            Barcode({bad: [[0, 1]]})
+        with pytest.raises(TypeError, match="homology dimension"):
+            Barcode({0: [[0, 1]]}, [0, bad])
+        with pytest.raises(TypeError, match="homology dimension"):
+            Barcode.from_pairs([(bad, (0.0, 1.0))])
+    with pytest.raises(ValueError, match="homology dimension must be >= 0"):
+        Barcode({-1: [[0, 1]]})
+    with pytest.raises(TypeError, match="dimensions must be an iterable"):
+        Barcode({0: [[0, 1]]}, 1)
+    with pytest.raises(TypeError, match="intervals must be a mapping"):
+        Barcode([[0, 1]])
+    for p in (4, 0, 1, -3, 2.0, "2", True):
+        with pytest.raises(ValueError, match="coefficients"):
+            Barcode.from_diagrams([[[0, 1]]], p=p)
+        with pytest.raises(ValueError, match="coefficients"):
+            Barcode({0: [[0, 1]]}, p=p)
+    assert Barcode.from_diagrams([[[0, 1]]], p=3).p == 3 and Barcode({0: []}, p=np.int64(5)).p == 5
+    with pytest.raises(TypeError, match="dims must be an iterable"):
+        a.to_diagrams("01")
+    with pytest.raises(TypeError, match="dims must be an iterable"):
+        a.to_diagrams(3)
+    with pytest.raises(TypeError, match="homology dimension"):
+        a.to_diagrams([0.5])
+    with pytest.raises(ValueError, match=r"1,000,000,000,001 diagrams.*limit of 10,000"):
+        a.to_diagrams([10**12])
+    assert [d.tolist() for d in a.to_diagrams([2])] == [[[0, 1]], [], []]

@@ -50,10 +50,40 @@ def _is_sorted(b: np.ndarray, d: np.ndarray) -> bool:
 
 
 def _dimension(dim) -> int:
-    """A homology dimension: a non-negative integer (``1.5`` and ``True`` are refused)."""
+    """A homology dimension: a non-negative integer (``1.5``, ``'1'`` and ``True`` are refused)."""
     from .._validate import check_int
 
     return check_int(dim, "homology dimension", minimum=0)
+
+
+def _dimension_list(dims, name: str) -> list[int]:
+    """An iterable of homology dimensions (a string or a single number is refused, not iterated)."""
+    from .._validate import InvalidTypeError
+
+    if isinstance(dims, (str, bytes)) or not isinstance(dims, Iterable):
+        raise InvalidTypeError(f"{name} must be an iterable of homology dimensions (integers), got {dims!r}")
+    return [_dimension(d) for d in dims]
+
+
+def _field(p) -> int | None:
+    """The coefficient field of a barcode: ``None`` (unknown) or a prime."""
+    if p is None:
+        return None
+    from .._validate import MAX_EXACT_PRIME, check_coefficients
+
+    return check_coefficients(p, field=True, max_prime=MAX_EXACT_PRIME)
+
+
+def _tolerance(atol) -> float:
+    """An absolute tolerance: a number >= 0 (``inf`` allowed), not NaN."""
+    from .._validate import check_real
+
+    return check_real(atol, "atol", minimum=0.0, finite=False)
+
+
+#: the most persistence diagrams :meth:`Barcode.to_diagrams` returns (dimensions 0 .. 9999): a
+#: homology dimension above it would need a simplex of more than 10⁴ vertices (2^(10⁴) faces)
+MAX_DIAGRAMS = 10_000
 
 
 class Barcode:
@@ -100,23 +130,25 @@ class Barcode:
         essential: Mapping[int, tuple[np.ndarray, np.ndarray]] | None = None,
         complete: Iterable[int] | None = None,
     ):
-        dims = sorted(set(int(d) for d in (intervals.keys() if dimensions is None else dimensions)))
-        if any(d < 0 for d in dims):
-            raise ValueError("homology dimensions must be non-negative")
-        done = dims if complete is None else sorted(set(int(d) for d in complete))
+        if not isinstance(intervals, Mapping):
+            raise TypeError(f"intervals must be a mapping dim -> (k, 2) array, got {type(intervals).__name__}")
+        given = _dimension_list(intervals.keys(), "the keys of intervals")
+        dims = sorted(set(given if dimensions is None else _dimension_list(dimensions, "dimensions")))
+        done = dims if complete is None else sorted(set(_dimension_list(complete, "complete")))
         if set(done) - set(dims):
             raise ValueError(f"complete dimensions {sorted(set(done) - set(dims))} were not computed")
         self._complete = tuple(done)
-        extra_dims = set(int(d) for d in intervals) - set(dims)
+        extra_dims = set(given) - set(dims)
         if extra_dims:
             raise ValueError(f"intervals given for dimensions {sorted(extra_dims)} outside {dims}")
         self._dims = tuple(dims)
-        self.p = p
+        self.p = _field(p)
         self.filtration = filtration
         # raw (validated) arrays; each dimension is put in canonical form on first use
         self._raw: dict[int, tuple[np.ndarray, np.ndarray | None]] = {}
         self._done: dict[int, tuple[np.ndarray, np.ndarray | None]] = {}
         self._has_simplices = simplices is not None
+        intervals = dict(zip(given, intervals.values()))
         for d in dims:
             arr = _as_interval_array(intervals.get(d, []))
             extra = None
@@ -128,7 +160,7 @@ class Barcode:
         self._lazy: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         self._lazy_pairs: dict[int, np.ndarray] = {}
         for d, (vals, mask) in (essential or {}).items():
-            d = int(d)
+            d = _dimension(d)
             if d in intervals or d not in dims:
                 raise ValueError(f"dimension {d} is given both as intervals and as essential classes")
             vals, mask = np.asarray(vals, dtype=np.float64), np.asarray(mask, dtype=bool)
@@ -162,7 +194,7 @@ class Barcode:
         """
         by_dim: dict[int, list[tuple[float, float]]] = {}
         for dim, (b, d) in pairs:
-            by_dim.setdefault(int(dim), []).append((float(b), float(d)))
+            by_dim.setdefault(_dimension(dim), []).append((float(b), float(d)))
         return cls(by_dim, dimensions)
 
     @classmethod
@@ -194,6 +226,7 @@ class Barcode:
         """
         if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
             raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
+        p = _field(p)
         by_dim = {}
         for d, dgm in enumerate(diagrams):
             arr = np.asarray(dgm, dtype=np.float64)
@@ -219,9 +252,19 @@ class Barcode:
         -------
         list of numpy.ndarray, shape (m, 2)
             ``diagrams[k]``: a writable copy of :meth:`intervals` ``(k)``.
+
+        Raises
+        ------
+        TypeError
+            ``dims`` is a string or holds a non-integer.
+        ValueError
+            A negative dimension, or more than :data:`MAX_DIAGRAMS` diagrams asked for.
         """
-        dims = self._complete if dims is None else tuple(int(d) for d in dims)
+        dims = self._complete if dims is None else tuple(_dimension_list(dims, "dims"))
         top = max(dims, default=-1)
+        if top >= MAX_DIAGRAMS:
+            raise ValueError(f"dims asks for {top + 1:,} diagrams (0 .. {top:,}), more than the limit of "
+                             f"{MAX_DIAGRAMS:,} (this barcode's dimensions are {list(self._dims)})")
         return [np.array(self.intervals(d)) for d in range(top + 1)]
 
     # ------------------------------------------------------------------ queries
@@ -421,7 +464,17 @@ class Barcode:
         -------
         str or None
             ``None`` when they agree, else e.g. ``"H1: 3 intervals vs 2"``.
+
+        Raises
+        ------
+        TypeError
+            ``other`` is not a Barcode, or ``atol`` is not a number.
+        ValueError
+            ``atol`` is NaN or negative.
         """
+        if not isinstance(other, Barcode):
+            raise TypeError(f"other must be a Barcode, got {type(other).__name__}")
+        atol = _tolerance(atol)
         for d in sorted(set(self._complete) | set(other.complete_dimensions)):
             a, b = self.intervals(d), other.intervals(d)
             if a.shape != b.shape:
