@@ -118,7 +118,7 @@ _KEYS = {"id", "where", "thesis", "result", "compare", "value", "correct", "rtol
 _LINK = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_./-]*#[A-Za-z0-9_][A-Za-z0-9_.-]*")
 
 
-def _check_kind(item: dict, where: str, *, strict: bool) -> None:
+def _check_kind(item: dict, where: str) -> None:
     """The keys that say what kind of claim this is (identity, own tolerance, not comparable, erratum)."""
     if not isinstance(item.get("note", ""), str):
         raise ClaimError(f"{where}: note must be a string, got {item['note']!r}")
@@ -151,14 +151,14 @@ def _check_kind(item: dict, where: str, *, strict: bool) -> None:
         extra = [k for k in ("corrected", "check") if k in item]
         if extra:
             raise ClaimError(f"{where}: {' and '.join(extra)} only go with an erratum (a claim with correct)")
-    elif strict:
+    else:
         missing = [k for k in ("corrected", "check") if k not in item]
         if missing:
             raise ClaimError(f"{where}: an erratum (correct) needs {' and '.join(missing)}: the corrected statement "
                              f"and the decisive check, one sentence each")
 
 
-def _parse(item: object, source: str, *, strict: bool = True) -> Claim:
+def _parse(item: object, source: str) -> Claim:
     if not isinstance(item, dict):
         raise ClaimError(f"{source}: a [[claim]] must be a table, got {item!r}")
     cid = item.get("id", "?")
@@ -196,20 +196,18 @@ def _parse(item: object, source: str, *, strict: bool = True) -> Claim:
     for key in ("rtol", "atol", "low", "high"):
         if key in item and (isinstance(item[key], bool) or not isinstance(item[key], (int, float))):
             raise ClaimError(f"{where}: {key} must be a number, got {item[key]!r}")
-    _check_kind(item, where, strict=strict)
+    _check_kind(item, where)
     fields = {k: v for k, v in item.items() if k != "result"}
     return Claim(result=result, source=source, **fields)
 
 
-def load_claims(directory: Path | None = None, *, strict: bool = False) -> list[Claim]:
+def load_claims(directory: Path | None = None) -> list[Claim]:
     """Every claim of the registry in the thesis's order (stable); ids must be unique.
 
     Parameters
     ----------
     directory : pathlib.Path, optional
         Folder of the ``*.toml`` claim files; by default ``experiments/claims/`` (``claims_dir()``).
-    strict : bool, default False
-        Also require ``corrected`` and ``check`` of every erratum (claims with ``correct``).
 
     Returns
     -------
@@ -224,7 +222,7 @@ def load_claims(directory: Path | None = None, *, strict: bool = False) -> list[
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
         items = read_tables(file, "claim", ClaimError)
-        claims += [_parse(item, file.name, strict=strict) for item in items]
+        claims += [_parse(item, file.name) for item in items]
     ids = [c.id for c in claims]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
