@@ -75,8 +75,18 @@ def check_int(value, name: str, *, minimum: int | None = None, maximum: int | No
     return v
 
 
-def check_seed(seed) -> int:
-    """A random seed: a non-negative integer (every random draw of the library takes one)."""
+def check_seed(seed, *, optional: bool = False) -> int | None:
+    """A random seed: a non-negative integer (every random draw of the library takes one).
+
+    Bools, floats, strings, lists and arrays are refused by name (``numpy.random.default_rng``
+    would take ``True`` or ``[1, 2]`` as a seed, or fail deep inside ``SeedSequence``);
+    ``optional=True`` lets ``None`` through (a function whose default is a fixed order).
+    """
+    if seed is None and optional:
+        return None
+    if isinstance(seed, bool) or not isinstance(seed, numbers.Integral):
+        raise InvalidTypeError(f"seed must be a non-negative integer{' or None' if optional else ''}, "
+                               f"got {seed!r} ({type(seed).__name__})")
     return check_int(seed, "seed", minimum=0)
 
 

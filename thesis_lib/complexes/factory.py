@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import check_seed
 from ..filtration import Filtration
 from .landmarks import maxmin_landmarks, random_landmarks
 from .rips import rips
@@ -67,6 +68,7 @@ def build_filtration(
     """
     if not isinstance(kind, str):
         raise ValueError(f"complex must be one of {COMPLEXES}, got {kind!r}")
+    seed = check_seed(seed)  # checked for every kind, also where it is not used (a rips call)
     if kind == "rips":
         return rips(points, max_radius, max_dim)
     if kind in ("witness", "lazy-witness"):

@@ -13,6 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import check_seed
 from ._cells import CellComplex, ComplexLike, Pairs, Simplex, cell_complex, pairs_from_partner, partner_array
 from ._kernels import greedy_partner
 
@@ -138,10 +139,12 @@ def morse_matching(
     ------
     ValueError
         An unknown method, ``values`` missing for (or given to) a method, or vertex values that are
-        not finite, not 1-D or do not cover every vertex.
+        not finite, not 1-D or do not cover every vertex; a seed that is not a non-negative
+        integer or None (``True``, ``[1, 2]``, ``numpy.array([1])``, ``1.5``, ``-1``).
     """
     if method not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
+    seed = check_seed(seed, optional=True)
     cx = cell_complex(simplices)
     if method == "lower-star":
         if values is None:
