@@ -198,11 +198,13 @@ class Recorder:
         Returns
         -------
         pathlib.Path
-            The written file, ``<output folder>/<stem>.png`` (replaced atomically).
+            The written file, ``<output folder>/<stem>.png`` (replaced atomically); it carries the
+            height of the figure's smallest text in a ``tEXt`` chunk (``graphics.style.figure_png``).
         """
+        from ..graphics.style import figure_png
+
         out = self.path / f"{check_name(stem)}.png"
-        with atomic.replacing(out) as tmp:
-            fig.savefig(tmp, format="png", dpi=dpi, bbox_inches="tight", metadata={"Software": None})
+        atomic.write_bytes(out, figure_png(fig, dpi=dpi))
         return out
 
     def _write(self) -> None:
