@@ -3,6 +3,18 @@
 Readable pure Python on sparse chains ``{index: coefficient}``; meant for small complexes, the
 notebook and as a reference for the fast engine in :mod:`thesis_lib.persistence.engine`.  The field
 arithmetic is the library's one modular inverse, :func:`~thesis_lib.persistence.kernels.inverse`.
+
+Reduce is the thesis's loop as printed: while the chain ``d`` is not empty, take its largest index
+``i``; stop if ``T[i]`` is empty; otherwise ``d = d − q⁻¹T[i]`` with ``q`` the coefficient of σ^i in
+``T[i]``.  Why it terminates over Z/p: the stored column ``T[i]`` has its largest index at ``i``, so
+``q⁻¹T[i]`` is 1 at σ^i and touches only smaller indices besides.  One pass lowers the coefficient
+``d_i`` of σ^i by one, as a residue in ``1 .. p − 1``, and leaves every larger index alone.  If
+``d_i = 1`` the term σ^i is gone and the largest index drops; if ``d_i ≠ 1`` (possible only when
+p > 2) the loop meets the same ``i`` again and subtracts ``q⁻¹T[i]`` once more, ``d_i`` times in
+all, which is the single subtraction ``d − d_i q⁻¹T[i]`` done in unit steps.  So the pair (largest
+index, its coefficient) decreases lexicographically and Reduce(σ^j) makes at most (p − 1)·j passes;
+over Z/2 every coefficient is 1 and each pass lowers the largest index.  The reduced chains, hence
+the intervals, are those of the one-step elimination used by the fast engine.
 """
 
 from __future__ import annotations
@@ -38,8 +50,9 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
     trace : list of dict, optional
         If given, one dict per simplex σ^j is appended recording the steps of Reduce(σ^j): ``j``,
         ``simplex``, ``dim``, ``value``, ``boundary`` (∂σ^j as ``{i: coeff}``), ``removed`` (the
-        unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per subtraction
-        ``d = d − factor·T[i]``), ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
+        unmarked terms dropped), ``steps`` (one ``{"i", "q", "factor", "T"}`` per pass of the loop,
+        ``d = d − factor·T[i]`` with ``factor = q⁻¹``: a term of coefficient c takes c passes),
+        ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
         Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; the first entry also holds
         ``order``, the list of all simplices in that order.
     p : int, optional
@@ -109,9 +122,11 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
             # Let q be the coefficient of σ^i in T[i];
             _, Ti = T[i]
             q = Ti[i]
-            # d = d − q^{-1} T[i];   (the thesis's line assumes the coefficient of σ^i in d is 1; in
-            # general we subtract d_i q^{-1} T[i], which clears the term σ^i over Z/p)
-            factor = d[i] * inverse(q, p) % p
+            # d = d − q⁻¹T[i];
+            # q⁻¹T[i] has coefficient 1 at σ^i, so this lowers the coefficient d_i of σ^i by one and
+            # changes only terms of smaller index.  When d_i ≠ 1 the term σ^i survives and the loop
+            # comes back to the same i: d_i subtractions in all clear it (see the module docstring).
+            factor = inverse(q, p)
             for k, c in Ti.items():
                 v = (d.get(k, 0) - factor * c) % p
                 if v:
