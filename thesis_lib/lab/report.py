@@ -29,12 +29,17 @@ from pathlib import Path
 from .paths import project_root, shared_dir
 from .registry import read_tables
 from .results import ResultsError, check_name, load
-from .tables import markdown_table
+from .tables import header, markdown_table
 
-__all__ = ["BADGES", "findings", "Claim", "ClaimError", "STATUSES", "load_claims", "evaluate", "report", "summary",
-           "summary_markdown", "markdown", "to_json", "place_line"]
+__all__ = ["BADGES", "COULD_FAIL", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
+           "ClaimError", "STATUSES", "compared_as", "errata_markdown", "headline", "load_claims", "evaluate",
+           "math_text", "number_text", "report", "summary", "summary_markdown", "markdown", "table_cell", "to_json",
+           "place_line", "why"]
 
-STATUSES = ("reproduced", "erratum", "differs", "not-reproducible", "figure-only", "new")
+STATUSES = ("reproduced", "erratum", "differs", "identity", "consistent", "not-comparable", "figure-only",
+            "not-reproducible", "new")
+#: the statuses of claims that could have failed (the report's headline counts these)
+COULD_FAIL = ("reproduced", "erratum", "differs")
 COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
 PROVENANCES = ("transcribed", "thesis data", "reconstructed input", "substitute input", "computed")
 SECTIONS = ("thesis", "beyond")
@@ -366,20 +371,123 @@ def _holds(claim: Claim, ours: list[float], reference: list[float] | None) -> bo
 def _status(claim: Claim, ours: list[float] | None) -> str:
     if claim.section == "beyond":
         return "new"
+    if claim.not_comparable:
+        return "not-comparable"
     if claim.not_reproducible or (ours is None and claim.compare != "none"):
         return "not-reproducible"
     if claim.compare == "none":
         return "figure-only"
     reference = None if claim.compare == "between" else claim.reference()
     if _holds(claim, ours, reference):
-        return "reproduced"
+        return "identity" if claim.by_construction else "consistent" if claim.own_tolerance else "reproduced"
     if claim.correct is not None and _holds(claim, ours, claim.reference("correct")):
         return "erratum"
     return "differs"
 
 
+# ---------------------------------------------------------------------------- "compared as"
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def number_text(x: object) -> str:
+    """A number written compactly: integers in full (below 10⁶), four significant digits, and powers
+    of ten with Unicode superscripts (``0.004`` → ``4·10⁻³``, ``1e-5`` → ``10⁻⁵``); minus as ``−``.
+
+    Parameters
+    ----------
+    x : object
+        A number (int, float, bool) or anything else, written with ``str``.
+
+    Returns
+    -------
+    str
+        The text: ``nan``, ``∞`` and ``−∞`` for non-finite floats.
+    """
+    if isinstance(x, bool) or not isinstance(x, (int, float)):
+        return str(x)
+    x = float(x)
+    if math.isnan(x):
+        return "nan"
+    if math.isinf(x):
+        return "∞" if x > 0 else "−∞"
+    if x == 0:
+        return "0"
+    exp = math.floor(math.log10(abs(x)))
+    if x.is_integer() and abs(x) < 1e6:
+        text = str(int(x))
+    elif -3 < exp < 4:
+        text = f"{x:.4g}"
+    elif 4 <= exp < 6:
+        text = str(round(x))
+    else:
+        mant = f"{x / 10.0 ** exp:.3g}"
+        if mant.lstrip("-") == "10":
+            mant, exp = mant.replace("10", "1"), exp + 1
+        power = "10" + str(exp).translate(_SUPERSCRIPT)
+        text = power if mant == "1" else "-" + power if mant == "-1" else f"{mant}·{power}"
+    return text.replace("-", "−")
+
+
+def _values_text(values: list[float]) -> str:
+    if len(set(values)) == 1:
+        return number_text(values[0])
+    return "(" + ", ".join(number_text(v) for v in values) + ")"
+
+
+def _condition(claim: Claim, values: list[float], *, tolerance: bool = True) -> str:
+    v = _values_text(values)
+    if claim.compare == "le":
+        return f"≤ {v}"
+    if claim.compare == "ge":
+        return f"≥ {v}"
+    if claim.compare == "rel" and tolerance and claim.rtol:
+        pct = claim.rtol * 100
+        return f"= {v} ± {number_text(pct)} %" if claim.rtol >= 1e-3 else f"= {v} (rel. {number_text(claim.rtol)})"
+    if claim.compare == "abs" and tolerance and claim.atol:
+        if set(values) == {0.0}:
+            return f"within {number_text(claim.atol)} of 0"
+        return f"= {v} ± {number_text(claim.atol)}"
+    return f"= {v}"
+
+
+def compared_as(claim: Claim) -> str:
+    """How the stored result is compared, as a short formula: ``= 3``, ``≤ 0``, ``≥ 1``,
+    ``= 2.329 ± 21 %``, ``within 4·10⁻³ of 0``, ``= 3.142 (rel. 10⁻⁵)``, ``in [a, b]``, ``—`` (nothing).
+
+    Thesis: the claims of all chapters (the report's "compared as" column).
+
+    Parameters
+    ----------
+    claim : Claim
+        The claim.
+
+    Returns
+    -------
+    str
+        The formula.  ``(ours)`` is added when the tolerance or constant is ours (``own_tolerance``);
+        an erratum shows both sides, ``= <thesis>; corrected = <correct>`` (the tolerance on the
+        corrected side); ``—`` for ``compare = "none"``, for a statement about another program
+        (``not_comparable``) and when the claim gives no number.
+    """
+    if claim.compare == "none" or claim.not_comparable:
+        return "—"
+    if claim.compare == "between":
+        text = f"in [{number_text(claim.low)}, {number_text(claim.high)}]"
+    else:
+        try:
+            thesis = claim.reference()
+            if claim.correct is None:
+                text = _condition(claim, thesis)
+            else:
+                text = f"{_condition(claim, thesis, tolerance=False)}; corrected {_condition(claim, claim.reference('correct'))}"
+        except ClaimError:
+            return "—"
+    return text + " (ours)" if claim.own_tolerance else text
+
+
+# ---------------------------------------------------------------------------- rows
 def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, object]:
-    """The report row of one claim: id, where, thesis, ours, status, note, provenance, section, link, correct.
+    """The report row of one claim.
 
     Parameters
     ----------
@@ -392,22 +500,22 @@ def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, ob
     Returns
     -------
     dict of str to object
-        The row.  ``ours`` is the stored value (a list for several result keys; integral floats as
-        ints) or None; ``status`` one of ``STATUSES``; ``note`` says what to run when no result is
-        stored.
+        The row, with the fields listed in :func:`to_json`.  ``ours`` is the stored value (a list for
+        several result keys; integral floats as ints) or None; ``status`` one of ``STATUSES``;
+        ``note`` says what to run when no result is stored.
 
     Raises
     ------
     ClaimError
-        If the status is not ``reproduced`` and the claim has no note, or a reference value is not
-        a number.
+        If the status is not ``reproduced`` and the claim has no note (an identity's
+        ``by_construction`` counts as its note), or a reference value is not a number.
     """
     ours = _ours(claim, {} if cache is None else cache)
     status = _status(claim, ours)
     note = claim.note
-    if ours is None and claim.result and not claim.not_reproducible:
+    if ours is None and claim.result and not claim.not_reproducible and not claim.not_comparable:
         note = f"no stored result for {', '.join(claim.result)}: run `make experiments`"
-    if status != "reproduced" and not note:
+    if status not in ("reproduced", "identity") and not note:
         raise ClaimError(f"claim {claim.id} is {status} but has no note saying why")
     shown = None if ours is None else (ours[0] if len(ours) == 1 else ours)
     if isinstance(shown, float) and shown.is_integer():
@@ -415,8 +523,10 @@ def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, ob
     elif isinstance(shown, list):
         shown = [int(v) if float(v).is_integer() else v for v in shown]
     return {"id": claim.id, "where": claim.where, "thesis": claim.thesis, "ours": shown, "status": status,
-            "note": note, "provenance": claim.provenance, "section": claim.section, "link": claim.link,
-            "correct": claim.correct}
+            "compared_as": compared_as(claim), "note": note, "provenance": claim.provenance,
+            "section": claim.section, "link": claim.link, "correct": claim.correct, "corrected": claim.corrected,
+            "check": claim.check, "by_construction": claim.by_construction, "own_tolerance": claim.own_tolerance,
+            "not_comparable": claim.not_comparable}
 
 
 def report(directory: Path | None = None) -> list[dict[str, object]]:
@@ -441,6 +551,7 @@ def report(directory: Path | None = None) -> list[dict[str, object]]:
     return [evaluate(c, cache) for c in load_claims(directory)]
 
 
+# ---------------------------------------------------------------------------- counts
 def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
     """Counts of the report.
 
@@ -452,9 +563,10 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
     Returns
     -------
     dict of str to object
-        ``total``, ``by_status`` (every status, zeros included), ``by_chapter`` (chapter → status →
-        count, thesis section only, chapters in numeric order), ``by_provenance`` and ``beyond``
-        (new work).
+        ``total``, ``thesis`` (claims of the thesis), ``could_fail`` (those of them with a status in
+        :data:`COULD_FAIL`), ``by_status`` (every status, zeros included), ``thesis_by_status`` (the
+        same for the thesis's claims only), ``by_chapter`` (chapter → status → count, thesis section
+        only, chapters in numeric order), ``by_provenance`` and ``beyond`` (new work).
     """
     rows = report() if rows is None else rows
     thesis = [r for r in rows if r.get("section", "thesis") == "thesis"]
@@ -464,15 +576,24 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
         counts[r["status"]] = counts.get(r["status"], 0) + 1
     return {
         "total": len(rows),
+        "thesis": len(thesis),
+        "could_fail": sum(r["status"] in COULD_FAIL for r in thesis),
         "by_status": {s: sum(r["status"] == s for r in rows) for s in STATUSES},
+        "thesis_by_status": {s: sum(r["status"] == s for r in thesis) for s in STATUSES},
         "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (not kv[0].isdigit(), kv[0].zfill(3)))),
         "by_provenance": dict(Counter(r["provenance"] for r in rows)),
         "beyond": len(rows) - len(thesis),
     }
 
 
-def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
-    """The summary as Markdown: one sentence of counts, then claims per chapter by status.
+def _count(n: int, one: str, many: str) -> str:
+    return f"{n} {one if n == 1 else many}"
+
+
+def headline(rows: list[dict[str, object]] | None = None) -> str:
+    """The report's headline: the thesis's claims that could have failed, and how they came out,
+    then those shown apart (identities, tolerances of ours, other programs' runs, figures, claims
+    that cannot be reproduced) and the new work.
 
     Parameters
     ----------
@@ -482,13 +603,42 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
     Returns
     -------
     str
-        The sentence, then (when a chapter has claims) a table with one column per status present
-        and the total, ending with a newline.
+        ``"Of N claims of the thesis, K could have failed: R reproduced, E errata, D differ. Shown
+        apart: I identities, C consistent within a tolerance of ours, X not comparable, F
+        figure-only, U not reproducible."``, plus ``" Beyond the thesis: B new results."`` when
+        there is new work.
     """
     s = summary(rows)
-    counts = ", ".join(f"{n} {status}" for status, n in s["by_status"].items() if n)
-    prov = ", ".join(f"{n} {p}" for p, n in sorted(s["by_provenance"].items()))
-    lines = [f"{s['total']} claims: {counts}. Provenance: {prov}."]
+    n = s["thesis_by_status"]
+    text = (f"Of {_count(s['thesis'], 'claim', 'claims')} of the thesis, {s['could_fail']} could have failed: "
+            f"{n['reproduced']} reproduced, {_count(n['erratum'], 'erratum', 'errata')}, "
+            f"{n['differs']} {'differs' if n['differs'] == 1 else 'differ'}. "
+            f"Shown apart: {_count(n['identity'], 'identity', 'identities')}, {n['consistent']} consistent within a "
+            f"tolerance of ours, {n['not-comparable']} not comparable, {n['figure-only']} figure-only, "
+            f"{n['not-reproducible']} not reproducible.")
+    if s["beyond"]:
+        text += f" Beyond the thesis: {_count(s['beyond'], 'new result', 'new results')}."
+    return text
+
+
+def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
+    """The summary as Markdown: the headline, the inputs' provenance, then claims per chapter by status.
+
+    Parameters
+    ----------
+    rows : list of dict, optional
+        The rows to count, as for :func:`summary`.
+
+    Returns
+    -------
+    str
+        The :func:`headline`, a sentence of provenance counts, then (when a chapter has claims) a
+        table with one column per status present and the total, ending with a newline.
+    """
+    rows = report() if rows is None else rows
+    s = summary(rows)
+    prov = ", ".join(f"{n} {p}" for p, n in sorted(s["by_provenance"].items(), key=lambda kv: _prov_order(kv[0])))
+    lines = [headline(rows), "", f"Inputs: {prov}."]
     shown = [st for st in STATUSES if st != "new" and any(st in c for c in s["by_chapter"].values())]
     if shown:
         table = [[f"Chapter {ch}" if ch.isdigit() else ch] + [c.get(st, 0) for st in shown] + [sum(c.values())]
@@ -497,12 +647,105 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _prov_order(p: object) -> int:
+    return PROVENANCES.index(p) if p in PROVENANCES else len(PROVENANCES)
+
+
+# ---------------------------------------------------------------------------- Markdown
 def _fmt(value: object) -> str:
     if isinstance(value, float):
         return f"{value:.4g}"
     if isinstance(value, list):
         return "(" + ", ".join(_fmt(v) for v in value) + ")"
     return "—" if value is None else str(value)
+
+
+_BRACED = re.compile(r"[_^]\{")
+
+
+def math_text(text: str) -> str:
+    r"""Text with every TeX fragment (a word holding ``_{…}``, ``^{…}`` or a backslash) put in ``$…$``,
+    so that rendered Markdown shows no raw ``_{``, ``^{`` or ``\``.
+
+    Parameters
+    ----------
+    text : str
+        Prose with formulas in Unicode, perhaps with TeX sub- and superscripts (``Σ_{i ∈ N(q)}``).
+
+    Returns
+    -------
+    str
+        The text, each such fragment wrapped (``$Σ_{i ∈ N(q)}$``); text already holding ``$`` is
+        returned unchanged.
+    """
+    if "$" in text or not (_BRACED.search(text) or "\\" in text):
+        return text
+    out, i = [], 0
+    stop = set(" \t\n([,;:")
+    while i < len(text):
+        m = _BRACED.search(text, i)
+        b = text.find("\\", i)
+        start = min(x for x in (m.start() if m else -1, b) if x >= 0) if (m or b >= 0) else -1
+        if start < 0:
+            out.append(text[i:])
+            break
+        left = start
+        while left > i and text[left - 1] not in stop:
+            left -= 1
+        right, depth = start, 0
+        while right < len(text):  # to the end of the word, braces balanced
+            ch = text[right]
+            depth += ch == "{"
+            depth -= ch == "}"
+            if depth <= 0 and (ch in stop or ch in ").") and ch != "}":
+                break
+            right += 1
+        while right > start and text[right - 1] in ",.;:":
+            right -= 1
+        out += [text[i:left], "$", text[left:right], "$"]
+        i = right
+    return "".join(out)
+
+
+def table_cell(value: object) -> str:
+    """A report value as the text of one Markdown table cell: numbers to four significant digits,
+    lists in parentheses, None as ``—``, TeX fragments in ``$…$`` (:func:`math_text`), ``|`` escaped.
+
+    Parameters
+    ----------
+    value : object
+        A row's value (thesis, ours, note, ...).
+
+    Returns
+    -------
+    str
+        The cell's text, on one line.
+    """
+    return math_text(_fmt(value)).replace("|", "\\|").replace("\n", " ")
+
+
+def why(row: dict[str, object]) -> str:
+    """The reason shown with a row: ``By construction: …`` for an identity, the note, and for an
+    erratum the corrected statement and the decisive check.
+
+    Parameters
+    ----------
+    row : dict
+        A report row (:func:`evaluate`).
+
+    Returns
+    -------
+    str
+        The sentences, joined by spaces.
+    """
+    parts = []
+    if row.get("by_construction"):
+        parts.append(f"By construction: {str(row['by_construction']).rstrip('.')}.")
+    if row.get("note"):
+        parts.append(str(row["note"]))
+    if row.get("status") == "erratum":
+        parts += [f"Corrected: {row.get('corrected')}", f"Decisive check: {row.get('check')}"]
+    return " ".join(parts)
 
 
 def _place(row: dict[str, object], link_suffix: str) -> str:
@@ -513,9 +756,35 @@ def _place(row: dict[str, object], link_suffix: str) -> str:
     return f"[{row['where']}]({page}{link_suffix}#{label})"
 
 
+def errata_markdown(rows: list[dict[str, object]] | None = None, *, place=None) -> str:
+    """The errata as a Markdown table: thesis place, as printed, corrected, decisive check, ours.
+
+    Parameters
+    ----------
+    rows : list of dict, optional
+        The rows, as for :func:`summary`; only those with status ``erratum`` are shown.
+    place : callable, optional
+        Writes a row's thesis place (e.g. as a link); by default its ``where``.
+
+    Returns
+    -------
+    str
+        The table ending with a newline, or ``""`` when there is no erratum.
+    """
+    rows = report() if rows is None else rows
+    place = place or (lambda r: table_cell(r["where"]))
+    errata = [r for r in rows if r["status"] == "erratum"]
+    if not errata:
+        return ""
+    lines = ["| thesis place | as printed | corrected | decisive check | ours |", "|---|---|---|---|---|"]
+    lines += [f"| {place(r)} | {table_cell(r['thesis'])} | {table_cell(r['corrected'])} | {table_cell(r['check'])} "
+              f"| {table_cell(r['ours'])} |" for r in errata]
+    return "\n".join(lines) + "\n"
+
+
 def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool = False,
              link_suffix: str = ".html") -> str:
-    """The report as Markdown: the thesis's claims in its order, then new work beyond the thesis.
+    """The report as Markdown: the thesis's claims in its order, the errata, then new work.
 
     Parameters
     ----------
@@ -529,28 +798,59 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
     Returns
     -------
     str
-        The Markdown: the summary when asked, the table of the thesis's claims, then a section
-        ``Beyond the thesis`` when there is new work.
+        The Markdown: the summary when asked, the table of the thesis's claims (columns claim,
+        thesis place, thesis, compared as, ours, status, input (provenance), why), a section
+        ``Errata`` (table ``tbl-report-errata``) when there are errata, a legend of the inputs'
+        provenances, then a section ``Beyond the thesis`` when there is new work.
     """
     rows = report() if rows is None else rows
-    titles = ["claim", "thesis place", "thesis", "ours", "status", "provenance", "note"]
+    titles = ["claim", "thesis place", "thesis", "compared as", "ours", "status", "input", "why"]
 
     def table(part):
-        return markdown_table(titles, [[r["id"], _place(r, link_suffix), _fmt(r["thesis"]), _fmt(r["ours"]),
-                                         f"**{r['status']}**", r.get("provenance") or "", r["note"]] for r in part])
+        return "\n".join([header(titles)] + [f"| {r['id']} | {_place(r, link_suffix)} | {table_cell(r['thesis'])} "
+                            f"| {table_cell(r.get('compared_as'))} | {table_cell(r['ours'])} | **{r['status']}** "
+                            f"| {table_cell(r.get('provenance') or '')} | {table_cell(why(r))} |" for r in part]) + "\n"
 
     thesis = [r for r in rows if r.get("section", "thesis") == "thesis"]
     beyond = [r for r in rows if r.get("section") == "beyond"]
     parts = [summary_markdown(rows)] if with_summary else []
     parts.append(table(thesis))
+    errata = errata_markdown(thesis, place=lambda r: _place(r, link_suffix))
+    if errata:
+        parts.append("### Errata\n\n(tbl-report-errata)=\n" + errata)
+    parts.append("Inputs: " + "; ".join(f"`{p}`: {PROVENANCE_LEGEND[p]}" for p in PROVENANCES) + ".\n")
     if beyond:
         parts.append("### Beyond the thesis\n\n" + table(beyond))
     return "\n".join(parts)
 
 
-#: the sphinx-design badge colour of each status (the summary page's tables)
-BADGES = {"reproduced": "success", "differs": "danger", "erratum": "warning", "not-reproducible": "muted",
-          "figure-only": "light", "new": "primary"}
+#: the sphinx-design badge colour of each status (the report page's and the summary page's tables)
+BADGES = {"reproduced": "success", "erratum": "warning", "differs": "danger", "identity": "info",
+          "consistent": "secondary", "not-comparable": "dark", "figure-only": "light",
+          "not-reproducible": "muted", "new": "primary"}
+
+#: what each status means, one line each (the legend of the report page)
+STATUS_LEGEND = {
+    "reproduced": "our stored result, from a computation that could have given another answer, passes the "
+                  "comparison with the thesis's value",
+    "erratum": "the thesis's statement fails and the corrected one passes; the book shows the computation",
+    "differs": "our result fails the comparison; the note says why",
+    "identity": "the statement holds by construction or by an identity; the comparison is shown, not counted",
+    "consistent": "the comparison holds, but its tolerance or constant is ours, not the thesis's",
+    "not-comparable": "a statement about another program's run, not about the mathematics",
+    "figure-only": "the book draws the figure; nothing is compared",
+    "not-reproducible": "the thesis's input or set-up cannot be had",
+    "new": "new work beyond the thesis, in its own section, never counted as reproduced",
+}
+
+#: what each provenance of a claim's input means (the legend of the report)
+PROVENANCE_LEGEND = {
+    "transcribed": "the thesis's own example input, typed in from its text",
+    "thesis data": "the thesis's own data set (e.g. the PDB structures)",
+    "reconstructed input": "an input the thesis describes but does not give, rebuilt from its description",
+    "substitute input": "a stand-in for data we cannot have",
+    "computed": "a general statement, checked on inputs of our own choosing",
+}
 
 
 def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
@@ -566,27 +866,44 @@ def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
     Returns
     -------
     str
-        Columns thesis place, thesis, ours, status (a badge, :data:`BADGES`) and why (the claim's
-        note); a sentence instead when every claim of the chapter is reproduced.
+        Columns thesis place, thesis, compared as, ours, status (a badge, :data:`BADGES`) and why
+        (:func:`why`: the note, and for an erratum the corrected statement and the decisive check);
+        a sentence instead when every claim of the chapter is reproduced.
     """
     rows = report() if rows is None else rows
-
-    def cell(value: object) -> str:
-        return str(value).replace("|", "\\|").replace("\n", " ")
-
     shown = [r for r in rows if r.get("section", "thesis") == "thesis" and _chapter(str(r["where"])) == chapter
              and r["status"] != "reproduced"]
     if not shown:
         return "Every claim of this chapter is reproduced."
-    lines = ["| thesis place | thesis | ours | status | why |", "|---|---|---|---|---|"]
+    lines = ["| thesis place | thesis | compared as | ours | status | why |", "|---|---|---|---|---|---|"]
     for r in shown:
-        lines.append(f"| {cell(r['where'])} | {cell(_fmt(r['thesis']))} | {cell(_fmt(r['ours']))} "
-                     f"| {{bdg-{BADGES[str(r['status'])]}}}`{r['status']}` | {cell(r['note'])} |")
+        lines.append(f"| {table_cell(r['where'])} | {table_cell(r['thesis'])} | {table_cell(r.get('compared_as'))} "
+                     f"| {table_cell(r['ours'])} | {{bdg-{BADGES[str(r['status'])]}}}`{r['status']}` "
+                     f"| {table_cell(why(r))} |")
     return "\n".join(lines) + "\n"
 
 
+def _finite(value: object) -> object:
+    if isinstance(value, float) and not math.isfinite(value):
+        return "nan" if math.isnan(value) else "inf" if value > 0 else "-inf"
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(v) for v in value]
+    return value
+
+
 def to_json(rows: list[dict[str, object]] | None = None) -> str:
-    """The report as JSON (``thesis-lab report --json``).
+    """The report as JSON (``thesis-lab report --json``), always valid JSON.
+
+    Each row has the fields ``id``, ``where`` (thesis place), ``thesis`` (as printed: number, list
+    or text), ``ours`` (the stored result: number, list or null), ``status`` (one of
+    :data:`STATUSES`), ``compared_as`` (:func:`compared_as`), ``note``, ``provenance`` (one of
+    :data:`PROVENANCES`), ``section`` (``thesis`` or ``beyond``), ``link`` (``<page>#<label>`` or
+    null), ``correct`` (an erratum's corrected value, else null), ``corrected`` and ``check`` (an
+    erratum's corrected statement and decisive check, else null), ``by_construction`` (why the
+    statement holds by construction, else null), ``own_tolerance`` and ``not_comparable`` (true or
+    false).
 
     Parameters
     ----------
@@ -596,6 +913,9 @@ def to_json(rows: list[dict[str, object]] | None = None) -> str:
     Returns
     -------
     str
-        The rows as a JSON list (indent 1, non-ASCII characters kept).
+        The rows as a JSON list (indent 1, non-ASCII characters kept).  A non-finite float (a NaN
+        result, an infinite tolerance) is written as the string ``"nan"``, ``"inf"`` or ``"-inf"``:
+        JSON has no such numbers, and ``NaN`` or ``Infinity`` would make the file unreadable by
+        strict parsers.
     """
-    return json.dumps(report() if rows is None else rows, indent=1, ensure_ascii=False)
+    return json.dumps(_finite(report() if rows is None else rows), indent=1, ensure_ascii=False, allow_nan=False)
