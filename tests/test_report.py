@@ -355,7 +355,7 @@ def test_an_identity_gives_its_reason_and_is_never_reproduced(registry):
     row = registry(_claim(compare="eq", thesis=288100, by_construction="the count is fixed by the parameters"))[0]
     assert row["status"] == "identity" and row["note"] == "" and row["compared_as"] == "= 288100"
     assert report.why(row) == "By construction: the count is fixed by the parameters."
-    assert "{bdg-info}`identity`" in report.findings([row], "2")
+    assert "{bdg-secondary}`identity`" in report.findings([row], "2")
 
 
 def test_errata_show_the_text_as_printed_the_correction_and_the_check(registry):
@@ -402,3 +402,11 @@ def test_math_in_table_text_is_typeset():
     assert report.math_text("(1/2π) ∫₀^{2π} κ_n") == "(1/2π) $∫₀^{2π}$ κ_n"
     assert report.math_text("already $x_{1}$") == "already $x_{1}$"
     assert report.table_cell("a | b_{i}\nc") == "a \\| $b_{i}$ c"
+
+
+def test_front_matter_and_summary_have_their_own_columns(registry):
+    text = (_claim(id="p", where="Preface", rtol=0.1) + _claim(id="i", where="Introduction", rtol=0.1)
+            + _claim(id="s", where="Summary", rtol=0.1) + _claim(id="c", where="Figure 3.5", rtol=0.1)
+            + _claim(id="o", where="somewhere", rtol=0.1))
+    assert list(report.summary(registry(text))["by_chapter"]) == ["front", "3", "5", "other"]
+    assert "| Preface, Introduction | 2 | 2 |" in report.summary_markdown(registry(text))

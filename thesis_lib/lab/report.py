@@ -329,7 +329,11 @@ def _numbers(num: str) -> tuple[int, ...]:
 
 def _chapter(where: str) -> str:
     m = re.search(r"\d+", where)
-    return m.group(0) if m else ("5" if "Summary" in where else "other")
+    if m:
+        return m.group(0)
+    if "Summary" in where:
+        return "5"
+    return "front" if re.match(r"(Preface|Introduction)\b", where) else "other"
 
 
 # ---------------------------------------------------------------------------- evaluation
@@ -580,7 +584,8 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
         "could_fail": sum(r["status"] in COULD_FAIL for r in thesis),
         "by_status": {s: sum(r["status"] == s for r in rows) for s in STATUSES},
         "thesis_by_status": {s: sum(r["status"] == s for r in thesis) for s in STATUSES},
-        "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (not kv[0].isdigit(), kv[0].zfill(3)))),
+        "by_chapter": dict(sorted(by_chapter.items(), key=lambda kv: (kv[0] != "front", not kv[0].isdigit(),
+                                                                      kv[0].zfill(3)))),
         "by_provenance": dict(Counter(r["provenance"] for r in rows)),
         "beyond": len(rows) - len(thesis),
     }
@@ -641,7 +646,8 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
     lines = [headline(rows), "", f"Inputs: {prov}."]
     shown = [st for st in STATUSES if st != "new" and any(st in c for c in s["by_chapter"].values())]
     if shown:
-        table = [[f"Chapter {ch}" if ch.isdigit() else ch] + [c.get(st, 0) for st in shown] + [sum(c.values())]
+        table = [[f"Chapter {ch}" if ch.isdigit() else "Preface, Introduction" if ch == "front" else ch]
+                 + [c.get(st, 0) for st in shown] + [sum(c.values())]
                  for ch, c in s["by_chapter"].items()]
         lines += ["", markdown_table(["chapter"] + shown + ["claims"], table).rstrip("\n")]
     return "\n".join(lines) + "\n"
@@ -825,8 +831,8 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
 
 
 #: the sphinx-design badge colour of each status (the report page's and the summary page's tables)
-BADGES = {"reproduced": "success", "erratum": "warning", "differs": "danger", "identity": "info",
-          "consistent": "secondary", "not-comparable": "dark", "figure-only": "light",
+BADGES = {"reproduced": "success", "erratum": "warning", "differs": "danger", "identity": "secondary",
+          "consistent": "info", "not-comparable": "dark", "figure-only": "light",
           "not-reproducible": "muted", "new": "primary"}
 
 #: what each status means, one line each (the legend of the report page)
