@@ -23,12 +23,59 @@ if TYPE_CHECKING:  # matplotlib is imported only when a figure is drawn
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["topics", "load", "meta", "markdown", "ratios", "fit_exponent", "ratio_figure", "scaling_figure",
-           "provenance", "targets"]
+__all__ = ["topics", "load", "meta", "markdown", "header", "ratios", "fit_exponent", "ratio_figure",
+           "scaling_figure", "provenance", "targets"]
 
 #: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
 PEERS = {"ripser": "Ripser", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
          "libigl": "libigl", "pari": "PARI", "sympy": "sympy", "ball_pivoting": "ball pivoting"}
+
+
+#: other row-key stems as headers say them (``<stem>_s``, ``<stem>_mb``, ``ratio_<stem>``)
+NAMES = {"ours": "ours", "ours_z": "ours over Z", "ours_core": "ours, core", "pari_core": "PARI, core",
+         "engine": "explicit engine", "delaunay": "Delaunay", "multipers": "multipers"}
+
+#: counts and parameters as headers say them
+COLUMN_HEADERS = {"n_points": "points", "n_per_circle": "per circle", "n_simplices": "simplices",
+                  "n_vertices": "vertices", "n_faces": "faces", "n_cells": "cells", "n_critical": "critical",
+                  "n_samples": "samples", "max_dim": "max dim", "max_radius": "ε max", "wall_s": "wall (s)",
+                  "per_run_s": "per run (s)", "overhead_per_run_s": "Dask overhead per run (s)",
+                  "cluster_start_s": "cluster start (s)", "max_abs_diff": "max difference"}
+
+
+def header(column: str) -> str:
+    """The header of a stored column, with its unit: ``ours_s`` → ``ours (s)``, ``ratio_ripser`` →
+    ``ours ÷ Ripser``, ``gph_mb`` → ``giotto-ph peak (MB)``.
+
+    Parameters
+    ----------
+    column : str
+        A row key of the stored results.
+
+    Returns
+    -------
+    str
+        Times ``<tool>_s`` as ``<tool> (s)``, ratios ``ratio_<peer>`` as ``ours ÷ <peer>`` (``ratio``:
+        ``ours ÷ reference``), peak memory ``<tool>_mb`` as ``<tool> peak (MB)`` and
+        ``<tool>_baseline_mb`` as ``<tool> baseline (MB)``, counts without their ``n_``; other keys
+        with spaces for underscores.
+    """
+    def name(stem: str) -> str:
+        return PEERS.get(stem) or NAMES.get(stem) or stem.replace("_", " ")
+
+    if column in COLUMN_HEADERS:
+        return COLUMN_HEADERS[column]
+    if column == "ratio":
+        return "ours ÷ reference"
+    if column.startswith("ratio_"):
+        return f"{NAMES['ours_z']} ÷ reference" if column == "ratio_z" else f"ours ÷ {name(column[6:])}"
+    if column.endswith("_baseline_mb"):
+        return f"{name(column[:-12])} baseline (MB)"
+    if column.endswith("_mb"):
+        return f"{name(column[:-3])} peak (MB)"
+    if column.endswith("_s"):
+        return f"{name(column[:-2])} (s)"
+    return column.replace("_", " ")
 
 
 def _dir() -> Path:
@@ -135,7 +182,8 @@ def provenance(topic: str) -> str:
 
 
 def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
-             where: Callable[[dict], bool] | None = None) -> str:
+             where: Callable[[dict], bool] | None = None,
+             headers: bool | Mapping[str, str] = False) -> str:
     """One benchmark as a Markdown table.
 
     Parameters
@@ -148,6 +196,9 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
         Only the rows whose ``case`` is one of these (those stored); by default every row.
     where : callable, optional
         A predicate on a row (a dict): only the rows it accepts.
+    headers : bool or mapping, default False
+        False: the row keys are the headers; True: :func:`header` of each key; a mapping: its
+        headers for the keys it names and :func:`header` for the others.
 
     Returns
     -------
@@ -174,7 +225,11 @@ def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | No
         missing = [c for c in columns if all(c not in r for r in rows)]
         if missing:
             raise ValueError(f"benchmark {topic!r} has no columns {missing}")
-    return markdown_table(columns, ([r.get(c) for c in columns] for r in rows), digits=3)
+    names = columns
+    if headers is not False:
+        given = headers if isinstance(headers, Mapping) else {}
+        names = [given.get(c) or header(c) for c in columns]
+    return markdown_table(names, ([r.get(c) for c in columns] for r in rows), digits=3)
 
 
 def targets(specs: Sequence[Mapping[str, Any]]) -> str:
@@ -315,24 +370,29 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
             if case != name:
                 continue
             ax.barh(y, value, color=palette[kinds.index(peer) % len(palette)], height=0.8)
-            ax.text(value * 1.05, y, f"{value:.2f}", va="center", fontsize=8)
+            ax.text(value * 1.05, y, f"{value:.2g}", va="center", fontsize=9)
             ticks.append(y)
             labels.append(f"{case} / {PEERS.get(peer, peer)} ({rounds} rounds)")
             y += 1
         y += 0.6
     ax.axvline(1.0, color="0.3", lw=1)
     ax.set_xscale("log")
+    # plain numbers (0.1, 1, 10), not 10⁻¹ in mathtext, whose exponents are drawn at 0.7 of the size
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_yticks(ticks)
-    ax.set_yticklabels(labels, fontsize=8)
+    ax.set_yticklabels(labels, fontsize=9)
     ax.invert_yaxis()
-    ax.set_xlabel("time ours / peer (median of paired ratios; < 1: we are faster)")
+    ax.set_xlabel("time ours ÷ peer (median of paired ratios; below 1 we are faster)")
     return ax.figure
 
 
 def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
                    x_key: str = "n_per_circle") -> tuple[Figure, dict[str, tuple[float, float]]]:
     """Time and memory against ``x_key`` for the rows whose case starts with ``prefix``, log–log,
-    one line per tool with its fitted exponent in the legend.
+    one line per tool (one legend below the panels; the fitted exponents are returned).
 
     Parameters
     ----------
@@ -363,7 +423,7 @@ def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
     rows = [r for r in load(topic) if str(r.get("case", "")).startswith(prefix)]
     if not rows:
         raise ValueError(f"benchmark {topic!r} has no cases starting with {prefix!r}")
-    fig, (ax_t, ax_m) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    fig, (ax_t, ax_m) = plt.subplots(1, 2, figsize=(7.0, 3.6))
     exponents = {}
     for key, label in tools.items():
         pts = [(r[x_key], r.get(f"{key}_s"), r.get(f"{key}_mb")) for r in rows if r.get(f"{key}_s") is not None]
@@ -374,11 +434,18 @@ def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
         m = np.array([max(p[2] or 0.0, 0.1) for p in pts], float)
         et, em = fit_exponent(x, t), fit_exponent(x, m)
         exponents[key] = (et, em)
-        ax_t.loglog(x, t, "o-", label=f"{label} (n^{et:.2f})")
-        ax_m.loglog(x, m, "o-", label=f"{label} (n^{em:.2f})")
+        ax_t.loglog(x, t, "o-", label=label)
+        ax_m.loglog(x, m, "o-", label=label)
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+
     for ax, what in ((ax_t, "time (s, median)"), (ax_m, "peak memory above baseline (MB)")):
+        for axis in (ax.xaxis, ax.yaxis):  # plain numbers, not mathtext powers of ten (small exponents)
+            axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+            axis.set_minor_formatter(NullFormatter())
         ax.set_xlabel("points per circle")
         ax.set_ylabel(what)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    # one legend for both panels, below them (inside a panel it hid points)
+    fig.legend(*ax_t.get_legend_handles_labels(), loc="lower center", ncol=5, fontsize=9, frameon=False,
+               handlelength=1.5, columnspacing=1.0)
     return fig, exponents
