@@ -1,13 +1,16 @@
 """The ``thesis-lab`` command line: run and sweep experiments, the report, the data layer.
 
-Exit codes: 0 success; 1 a notebook or run failed (or runs are missing); 2 bad input (an unknown
-experiment or parameter, a bad value, a malformed manifest or claims file, an unreachable cluster);
-130 / 143 cancelled by Ctrl-C / SIGTERM (running kernels are killed, nothing half-written is kept).
+Exit codes: 0 success; 1 a notebook or run failed (or runs are missing or corrupt), or the disk is
+full (nothing half-written is kept); 2 bad input (an unknown experiment or parameter, a bad value, a
+path parameter outside the project, a folder that is not a project, a malformed manifest, claims
+file or stored result, an unreachable cluster); 130 / 143 cancelled by Ctrl-C / SIGTERM (running
+kernels are killed, nothing half-written is kept).
 """
 
 from __future__ import annotations
 
 import argparse
+import errno
 import os
 import signal
 import sys
@@ -63,13 +66,15 @@ def _cmd_run(args) -> int:
 def _print_table(runs, table, what: str) -> int:
     print(table.with_suffix(".md").read_text())
     print(f"table: {table} (and {table.with_suffix('.md').name})")
-    bad = [r for r in runs if r.status in ("failed", "missing")]
+    bad = [r for r in runs if r.status in ("failed", "missing", "corrupt")]
     for r in bad:
-        detail = f"{r.error} (see {r.path / 'error.txt'})" if r.status == "failed" else f"no run folder {r.path}"
+        detail = {"failed": f"{r.error} (see {r.path / 'error.txt'})", "missing": f"no run folder {r.path}",
+                  "corrupt": r.error}[r.status]
         _err(f"{r.status}: {r.params} -> {detail}")
     if bad:
-        failed, missing = sum(r.status == "failed" for r in bad), sum(r.status == "missing" for r in bad)
-        _err(f"{what}: {failed} failed, {missing} missing")
+        counts = {s: sum(r.status == s for r in bad) for s in ("failed", "missing", "corrupt")}
+        _err(f"{what}: {counts['failed']} failed, {counts['missing']} missing"
+             + (f", {counts['corrupt']} corrupt" if counts["corrupt"] else ""))
     return 1 if bad else 0
 
 
@@ -261,7 +266,8 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        The exit status: 0 success; 1 a notebook or run failed (or runs are missing); 2 bad input;
+        The exit status: 0 success; 1 a notebook or run failed (or runs are missing or corrupt), or
+        no space was left on the device; 2 bad input;
         130 / 143 cancelled by Ctrl-C / SIGTERM; 141 the reader of stdout went away.
     """
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if _main_thread() else None
@@ -287,7 +293,7 @@ def _main(argv: list[str] | None) -> int:
 
     from .data import DataError
     from .experiments import ParameterError
-    from .paths import PROJECT_ENV, ProjectError
+    from .paths import PROJECT_ENV, ProjectError, is_project
     from .report import ClaimError
     from .results import ResultsError
     from .sweep import ClusterError
@@ -300,6 +306,11 @@ def _main(argv: list[str] | None) -> int:
     except SystemExit as exc:  # --help printed the usage
         return exc.code if isinstance(exc.code, int) else 0
     if args.project:
+        if not is_project(args.project):
+            why = "does not exist" if not os.path.exists(args.project) else (
+                "is not a folder" if not os.path.isdir(args.project) else "has no experiments/ and data/manifest.toml")
+            _err(f"error: --project {args.project!r} is not a thesis-lab project: it {why}")
+            return 2
         os.environ[PROJECT_ENV] = os.path.abspath(args.project)
     try:
         code = args.func(args)
@@ -308,6 +319,14 @@ def _main(argv: list[str] | None) -> int:
     except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, ClusterError) as exc:
         _err(f"error: {exc}")
         return 2
+    except OSError as exc:
+        if exc.errno not in (errno.ENOSPC, errno.EDQUOT):
+            raise
+        where = f" writing {exc.filename}" if exc.filename else ""
+        _err(f"error: no space left on the device{where}: nothing of this step was written or marked "
+             "complete (every write goes to a temporary file or folder first, and it was removed; runs "
+             "completed before are kept); free some space and run the command again")
+        return 1
     except CellExecutionError as exc:
         _err(f"error: the notebook failed; nothing was stored:\n{str(exc).strip()[-2000:]}")
         return 1

@@ -12,6 +12,7 @@ import hashlib
 import re
 import shutil
 import urllib.request
+from collections.abc import Mapping
 from dataclasses import dataclass, fields
 from pathlib import Path, PurePosixPath
 
@@ -19,7 +20,8 @@ from . import atomic
 from .paths import project_root, shared_dir
 from .registry import read_tables
 
-__all__ = ["DataError", "Entry", "manifest", "manifest_path", "path", "verify", "fetch", "sha256_of", "check", "inside"]
+__all__ = ["DataError", "Entry", "manifest", "manifest_path", "path", "verify", "fetch", "sha256_of", "check", "inside",
+           "check_parameter_paths"]
 
 
 class DataError(ValueError):
@@ -313,3 +315,65 @@ def fetch(name: str, manifest_file: str | Path | None = None, timeout: float = 6
         check(entry, tmp)
         inside(project_root() / "data", entry.file)  # the folders may have changed meanwhile
     return target
+
+
+def _path_like(value: str, base: Path) -> bool:
+    """Whether a string parameter names a file or folder (a separator, ``~``, or it exists there)."""
+    if "/" in value or "\\" in value or value.startswith("~") or value in (".", ".."):
+        return True
+    try:
+        return (base / value).exists()
+    except (OSError, ValueError):
+        return True
+
+
+def check_parameter_paths(params: Mapping[str, object], *, base: str | Path) -> None:
+    """Refuse parameters that name files outside the project, unless the manifest lists the file.
+
+    A string parameter (or a string in a list parameter) is a path when it holds a separator,
+    starts with ``~``, or names something that exists relative to ``base`` (the folder the notebook
+    runs in).  Such a path must resolve (symlinks included) inside the project folder, or be a
+    file whose sha256 is that of a manifest entry (a copy of a listed data set, e.g. in
+    ``../shared/data/``).  Names that are no path (``"1grm"``, a label) are left to the notebook,
+    which looks them up through :func:`path`.
+
+    Parameters
+    ----------
+    params : mapping of str to object
+        Resolved parameters of a run.
+    base : str or pathlib.Path
+        The folder relative paths are read from (the project's ``experiments/``).
+
+    Raises
+    ------
+    DataError
+        Naming the parameter, its value and where it leads.
+    """
+    root = project_root().resolve()
+    base = Path(base)
+    listed: dict[tuple[int, str], str] | None = None
+    for key, value in params.items():
+        for item in value if isinstance(value, (list, tuple)) else [value]:
+            if not isinstance(item, str) or not item:
+                continue
+            if "\x00" in item:
+                raise DataError(f"parameter {key} = {item!r} holds a NUL character; refused")
+            if not _path_like(item, base):
+                continue
+            try:
+                target = (base / item).resolve()
+            except (OSError, RuntimeError, ValueError) as exc:
+                raise DataError(f"parameter {key} = {item!r} is not a usable path ({exc}); refused") from None
+            if target.is_relative_to(root):
+                continue
+            if target.is_file():
+                if listed is None:
+                    listed = {(e.size, e.sha256): name for name, e in manifest().items()}
+                size = target.stat().st_size
+                if any(s == size for s, _ in listed) and (size, sha256_of(target)) in listed:
+                    continue
+            raise DataError(
+                f"parameter {key} = {item!r} leads to {target}, outside the project {root}, and is no "
+                "data set of data/manifest.toml (no entry has its sha256); refused. Put the file inside "
+                "the project, or add it to the manifest with its sha256 and give its name"
+            )

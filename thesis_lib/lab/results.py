@@ -25,6 +25,8 @@ __all__ = [
     "ResultsError",
     "check_name",
     "load",
+    "read_json",
+    "check_table",
     "figure",
     "results_dir",
     "round_sig",
@@ -212,6 +214,89 @@ class Recorder:
         atomic.write_text(self.path / RESULTS_FILE, text + "\n")
 
 
+#: the largest float; a stored integer beyond it cannot be compared with anything (report, tables)
+_FLOAT_MAX = 1.7976931348623157e308
+
+
+def read_json(path: str | Path) -> object:
+    """The JSON value stored in ``path``, or a :class:`ResultsError` naming the file and what is wrong.
+
+    Every stored file of the laboratory (``results.json``, a run's ``complete.json``) is read here,
+    so that a corrupt one is reported by name, never as a traceback from inside the parser.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file (it must exist).
+
+    Returns
+    -------
+    object
+        The parsed value (``NaN`` and ``Infinity`` accepted, as :class:`Recorder` writes them).
+
+    Raises
+    ------
+    ResultsError
+        If ``path`` is a folder or unreadable, not UTF-8, not valid JSON, nested too deep for the
+        parser, or holds an integer of more digits than Python converts (4300).
+    """
+    path = Path(path)
+    if path.is_dir():
+        raise ResultsError(f"{path} is a folder, not a file")
+    try:
+        text = path.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise ResultsError(f"{path} is not valid JSON (not UTF-8 text: {exc}): it is corrupt") from None
+    except OSError as exc:
+        raise ResultsError(f"{path} cannot be read ({exc.strerror or exc})") from None
+    return parse_json(text, path)
+
+
+def parse_json(text: str, where: str | Path) -> object:
+    """``json.loads(text)``, or a :class:`ResultsError` naming ``where`` (see :func:`read_json`)."""
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise ResultsError(f"{where} is not valid JSON ({exc}): it is truncated or corrupt") from None
+    except RecursionError:
+        raise ResultsError(f"{where} is nested too deeply to be a table of results: it is corrupt") from None
+    except ValueError as exc:  # an integer beyond int_max_str_digits
+        raise ResultsError(f"{where} holds a number that cannot be read ({exc}): it is corrupt") from None
+
+
+def check_table(data: object, path: str | Path) -> dict[str, float | int]:
+    """``data`` if it is a flat table ``name -> number`` (finite ints within the float range, reals).
+
+    Parameters
+    ----------
+    data : object
+        What :func:`read_json` returned for ``path``.
+    path : str or pathlib.Path
+        The file it came from (named in the message).
+
+    Returns
+    -------
+    dict of str to float or int
+        ``data``, unchanged.
+
+    Raises
+    ------
+    ResultsError
+        If ``data`` is not a JSON object, or a value is not a number (a bool, a string, a list, an
+        integer beyond the float range).
+    """
+    if not isinstance(data, dict):
+        raise ResultsError(f"{path} must hold a flat JSON object of numbers, got a {type(data).__name__}")
+    for key, value in data.items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise ResultsError(f"{path} must hold a flat JSON object of numbers; {key!r} is a "
+                               f"{type(value).__name__}")
+        if isinstance(value, int) and abs(value) > _FLOAT_MAX:
+            raise ResultsError(f"{path}: {key!r} is an integer of {len(str(abs(value)))} digits, beyond the "
+                               "float range; it is corrupt")
+    return data
+
+
 def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | int]:
     """Read the results of experiment ``name`` (default: its stored default run).
 
@@ -233,7 +318,8 @@ def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | i
     FileNotFoundError
         If there are no stored results (saying how to make them).
     ResultsError
-        If ``results.json`` is not valid JSON or not a flat table of numbers (saying how to restore it).
+        If ``results.json`` is a folder, not valid JSON (truncated, nested too deep, an integer of
+        thousands of digits) or not a flat table of numbers, naming the file and how to restore it.
     """
     path = (Path(output_dir) if output_dir else results_dir(name)) / RESULTS_FILE
     if not path.exists():
@@ -242,14 +328,9 @@ def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | i
         )
     restore = f"re-run `thesis-lab store {name}` or restore it with `git checkout -- {path.name}` in its folder"
     try:
-        data = json.loads(path.read_text(encoding="utf-8"))
-    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
-        raise ResultsError(f"{path} is not valid JSON ({exc}): it is truncated or corrupt; {restore}") from None
-    if not isinstance(data, dict) or not all(
-        isinstance(v, (int, float)) and not isinstance(v, bool) for v in data.values()
-    ):
-        raise ResultsError(f"{path} must hold a flat JSON object of numbers; {restore}")
-    return data
+        return check_table(read_json(path), path)
+    except ResultsError as exc:
+        raise ResultsError(f"{exc}; {restore}") from None
 
 
 def figure(name: str, stem: str, width: int = 640) -> Image:

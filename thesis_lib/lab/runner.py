@@ -13,10 +13,12 @@ from __future__ import annotations
 
 import atexit
 import json
+import math
 import os
 import shutil
 import sys
 import tempfile
+import dataclasses
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -36,7 +38,7 @@ from .experiments import (
     run_hash,
 )
 from .paths import PROJECT_ENV, project_root
-from .results import DEFAULT_RUN_ENV, RESULTS_FILE, ResultsError, results_dir
+from .results import DEFAULT_RUN_ENV, RESULTS_FILE, ResultsError, check_table, parse_json, read_json, results_dir
 
 if TYPE_CHECKING:  # at run time the module __getattr__ below (.sweep imports this module)
     from .sweep import collect, stored_sweeps, sweep
@@ -84,7 +86,7 @@ class RunResult:
     name: str
     params: dict[str, object]
     path: Path
-    status: str  # "ok", "skipped" (already complete), "failed" or "missing" (collect: no run folder)
+    status: str  # "ok", "skipped" (already complete), "failed", "corrupt" or "missing" (no run folder)
     results: dict[str, float] = field(default_factory=dict)
     error: str = ""
     seconds: float = 0.0
@@ -96,9 +98,13 @@ def _json(value: object) -> str:
 
 
 def read_run(name: str, params: dict[str, object], root: Path | None = None) -> RunResult:
-    """What ``runs/<name>/<hash>/`` holds for these resolved parameters: ok, failed or missing.
+    """What ``runs/<name>/<hash>/`` holds for these resolved parameters: ok, failed, corrupt or missing.
 
-    An interrupted replacement of the folder is undone first (``atomic.recover``).
+    An interrupted replacement of the folder is undone first (``atomic.recover``).  A folder whose
+    ``complete.json`` / ``failed.json`` or ``results.json`` cannot be read as the runner wrote it
+    (garbage, not a JSON object, a non-numeric ``seconds``, a folder in place of a file, a table
+    that is not flat numbers) is ``"corrupt"``, with the reason naming the file: ``run`` and
+    ``sweep`` run it again, ``collect`` reports it.
 
     Parameters
     ----------
@@ -112,34 +118,55 @@ def read_run(name: str, params: dict[str, object], root: Path | None = None) -> 
     Returns
     -------
     RunResult
-        ``status`` ``"ok"`` (``complete.json``), ``"failed"`` (``failed.json``, with its error) or
-        ``"missing"``; the stored time, worker and ``results.json`` when there are any.
-
-    Raises
-    ------
-    ResultsError
-        If the run's ``results.json`` is not valid JSON.
+        ``status`` ``"ok"`` (``complete.json``), ``"failed"`` (``failed.json``, with its error),
+        ``"corrupt"`` (``error`` says which file and why) or ``"missing"``; the stored time, worker
+        and ``results.json`` when there are any.
     """
     path = (root or runs_dir()) / name / run_hash(params)
     atomic.recover(path)
     result = RunResult(name, params, path, "missing")
-    if (path / COMPLETE_FILE).is_file():
-        result.status = "ok"
-        info = json.loads((path / COMPLETE_FILE).read_text())
-    elif (path / FAILED_FILE).is_file():
-        result.status = "failed"
-        info = json.loads((path / FAILED_FILE).read_text())
-        result.error = info.get("error", "")
+    if (path / COMPLETE_FILE).exists():
+        status, marker = "ok", path / COMPLETE_FILE
+    elif (path / FAILED_FILE).exists():
+        status, marker = "failed", path / FAILED_FILE
     else:
         return result
-    result.seconds, result.worker = float(info.get("seconds", 0.0)), str(info.get("worker", ""))
-    if (path / RESULTS_FILE).is_file():
-        try:
-            result.results = json.loads((path / RESULTS_FILE).read_text())
-        except json.JSONDecodeError as exc:
-            raise ResultsError(f"{path / RESULTS_FILE} is not valid JSON ({exc}); "
-                               "delete the run folder and run it again") from None
+    try:
+        info = read_json(marker)
+        if not isinstance(info, dict):
+            raise ResultsError(f"{marker} must hold a JSON object, got a {type(info).__name__}")
+        seconds, worker, error = info.get("seconds", 0.0), info.get("worker", ""), info.get("error", "")
+        if isinstance(seconds, bool) or not isinstance(seconds, (int, float)) or not math.isfinite(seconds):
+            raise ResultsError(f"{marker}: 'seconds' must be a number, got {seconds!r}"[:300])
+        if not isinstance(worker, str) or not isinstance(error, str):
+            raise ResultsError(f"{marker}: 'worker' and 'error' must be strings")
+        results = {}
+        if (path / RESULTS_FILE).exists():
+            try:
+                results = check_table(read_json(path / RESULTS_FILE), path / RESULTS_FILE)
+            except ResultsError:
+                if status == "ok":  # a failed run's partial results are shown when readable, never used
+                    raise
+    except ResultsError as exc:
+        result.status, result.error = "corrupt", str(exc)
+        return result
+    result.status, result.seconds, result.worker, result.results = status, float(seconds), worker, results
+    if status == "failed":
+        result.error = error
     return result
+
+
+def report_corrupt(result: RunResult, action: str = "running it again") -> None:
+    """Say on stderr that a run folder is corrupt (by name, with the reason) and what is done.
+
+    Parameters
+    ----------
+    result : RunResult
+        A run read by :func:`read_run` with status ``"corrupt"``.
+    action : str
+        What happens to it, e.g. ``"running it again"``.
+    """
+    print(f"corrupt run folder {result.path}: {result.error}; {action}", file=sys.stderr, flush=True)
 
 
 def _relative_file(rel: str) -> str:
@@ -183,6 +210,9 @@ def write_run(name: str, params: dict[str, object], output: RunOutput, root: Pat
     folder.mkdir(parents=True, exist_ok=True)
     atomic.clean_stale(folder)
     dest = folder / run_hash(params)
+    results = _written_results(output)
+    if isinstance(results, str):  # the notebook wrote a results.json that no reader could use
+        output = dataclasses.replace(output, status="failed", error=results)
     if output.status != "ok" and (dest / COMPLETE_FILE).is_file():
         dest = folder / f"{dest.name}.failed"
     info = {"seconds": round(output.seconds, 3), "worker": output.worker}
@@ -200,9 +230,41 @@ def write_run(name: str, params: dict[str, object], output: RunOutput, root: Pat
             (tmp / FAILED_FILE).write_text(_json({**info, "error": output.error}))
     result = RunResult(name, params, dest, output.status, error=output.error, seconds=output.seconds,
                        worker=output.worker)
-    if (dest / RESULTS_FILE).is_file() and output.status == "ok":
-        result.results = json.loads((dest / RESULTS_FILE).read_text())
+    if output.status == "ok":
+        result.results = results
     return result
+
+
+def _written_results(output: RunOutput) -> dict[str, float | int] | str:
+    """The table in a run's ``results.json`` (empty when there is none), or why it is unusable."""
+    payload = output.files.get(RESULTS_FILE)
+    if payload is None or output.status != "ok":
+        return {}
+    try:
+        return check_table(parse_json(payload.decode("utf-8", errors="replace"), RESULTS_FILE), RESULTS_FILE)
+    except ResultsError as exc:
+        return f"the notebook wrote an unusable {exc}"
+
+
+def check_paths(params: dict[str, object]) -> None:
+    """Refuse a parameter naming a file outside the project that the manifest does not list.
+
+    The kernel runs in the project's ``experiments/`` folder, so a relative path is read from there.
+    See :func:`thesis_lib.lab.data.check_parameter_paths`.
+
+    Parameters
+    ----------
+    params : dict of str to object
+        Resolved parameters.
+
+    Raises
+    ------
+    DataError
+        If a parameter names a file outside the project whose sha256 no manifest entry has.
+    """
+    from .data import check_parameter_paths
+
+    check_parameter_paths(params, base=experiments_dir())
 
 
 def local_spec(name: str, params: dict[str, object], *, timeout: int = 3600,
@@ -282,15 +344,20 @@ def run(
     ------
     ParameterError
         For an unknown experiment or parameter, or a value of the wrong type.
+    DataError
+        For a parameter naming a file outside the project that the manifest does not list.
     KeyboardInterrupt
         When cancelled (Ctrl-C): running kernels are killed and nothing is written.
     """
     params = resolve_parameters(name, overrides)
+    check_paths(params)
     atomic.clean_stale((root or runs_dir()) / name)
     previous = read_run(name, params, root)
     if previous.status == "ok" and not force:
         previous.status = "skipped"
         return previous
+    if previous.status == "corrupt":
+        report_corrupt(previous)
     if progress is None:
         progress = sys.stderr.isatty()
     output = cancellable(execute, local_spec(name, params, timeout=timeout), progress=progress)

@@ -32,7 +32,7 @@ from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker
 from .experiments import ParameterError, resolve_parameters, run_hash
 from .results import results_dir
-from .runner import RunResult, local_spec, read_run, runs_dir, write_run
+from .runner import RunResult, check_paths, local_spec, read_run, report_corrupt, runs_dir, write_run
 from .tables import markdown_table
 
 if TYPE_CHECKING:  # distributed is imported only when a Dask sweep is asked for
@@ -396,6 +396,8 @@ def sweep(
         When cancelled: nothing pending starts and running kernels are killed.
     """
     points = expand_grid(name, grid)
+    for point in points:
+        check_paths(point)
     _check_jobs(jobs)
     part = parse_shard(shard)
     if part is not None:
@@ -411,6 +413,8 @@ def sweep(
             r.status = "skipped"
             bar.done("skipped")
         else:
+            if r.status == "corrupt":
+                report_corrupt(r)
             results[i] = None
             todo.append(i)
     client = _client_of(executor)
@@ -475,7 +479,8 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
     Returns
     -------
     runs : list of RunResult
-        One per point of the grid, in grid order: ``"ok"``, ``"failed"`` or ``"missing"``.
+        One per point of the grid, in grid order: ``"ok"``, ``"failed"``, ``"corrupt"`` (a run folder
+        that cannot be read, reported on stderr) or ``"missing"``.
     table : pathlib.Path
         The CSV table in ``<root>/<name>/sweeps/`` (a Markdown twin beside it).
 
@@ -487,6 +492,9 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
     points = expand_grid(name, grid)
     base = root or runs_dir()
     rows = [read_run(name, p, base) for p in points]
+    for r in rows:
+        if r.status == "corrupt":
+            report_corrupt(r, "its row is marked corrupt (run the sweep again to replace it)")
     return rows, _write_tables(name, list(grid), points, rows, base, keep)
 
 
