@@ -55,6 +55,8 @@ __all__ = [
     "flow_invariant_homology",
     "sublevel_changes",
     "chapter_of_heading",
+    "two_critical_survey",
+    "finite_difference_hessian",
 ]
 
 Vector = npt.NDArray[np.float64]
@@ -826,6 +828,65 @@ def sublevel_changes(values: dict[Simplex, float], *, coefficients: int = 2) -> 
             out["regular_changes"] += bool(np.any(diff))
         prev = betti
     return out
+
+
+def two_critical_survey(samples: Sequence[tuple[str, list[Simplex], Pairs]]) -> dict[str, int]:
+    """The samples whose field has exactly two critical simplices: is one a vertex, is K a homology sphere?
+
+    Thesis: Example 4.29 (two critical simplices: one is a vertex, and K ≃ S^k for the k of the other).
+
+    Parameters
+    ----------
+    samples : sequence of (label, complex, pairs)
+        As :func:`gradient_samples` returns.
+
+    Returns
+    -------
+    dict of str to int
+        ``n`` (samples with two critical simplices), ``with_vertex`` (of those, one critical
+        simplex a vertex), ``sphere_homology`` (H_*(K; Z) that of S^k, k the other's dimension).
+    """
+    out = dict(n=0, with_vertex=0, sphere_homology=0)
+    for _, cx, pairs in samples:
+        crit = critical_counts(cx, pairs)
+        if sum(crit) != 2:
+            continue
+        out["n"] += 1
+        out["with_vertex"] += crit[0] >= 1
+        k = max(d for d, c in enumerate(crit) if c) if crit[0] == 1 else 0
+        want = [0] * len(crit)
+        want[0] += 1
+        want[k] += 1
+        hom = homology(cx)
+        got = [b for b, _ in hom] + [0] * (len(crit) - len(hom))
+        out["sphere_homology"] += got == want and not any(t for _, t in hom)
+    return out
+
+
+def finite_difference_hessian(f: Callable[[float, float], float], u: float, v: float, *,
+                              step: float = 1e-4) -> Vector:
+    """The Hessian of a function of two variables by central differences.
+
+    Thesis: Example 4.2 (the Hessian matrices of the height at its critical points).
+
+    Parameters
+    ----------
+    f : callable (u, v) -> float
+        The function.
+    u, v : float
+        The point.
+    step : float, default 1e-4
+        The difference step (error of order step²).
+
+    Returns
+    -------
+    ndarray, shape (2, 2)
+    """
+    h = float(step)
+    fuu = (f(u + h, v) - 2 * f(u, v) + f(u - h, v)) / h**2
+    fvv = (f(u, v + h) - 2 * f(u, v) + f(u, v - h)) / h**2
+    fuv = (f(u + h, v + h) - f(u + h, v - h) - f(u - h, v + h) + f(u - h, v - h)) / (4 * h * h)
+    return np.array([[fuu, fuv], [fuv, fvv]])
 
 
 _CHAPTER_LINE = re.compile(r"^\s*(\d+)\s*$")
