@@ -25,12 +25,12 @@ import scipy.sparse as sp
 
 from ..homology import homology
 from ..smith import rank_mod_p
-from ._cells import ComplexLike, Pairs, Simplex, cell_complex
-from .flow import boundary_operator, cells, gradient_flow, gradient_matrix, stabilised_flow
-from .functions import critical_simplices, discrete_morse_function, gradient_pairs, sublevel_complex
+from ._cells import ComplexLike, Pairs, Simplex
+from .flow import boundary_operator, cells, gradient_matrix, stabilised_flow
+from .functions import critical_simplices, sublevel_complex
 from .matching import critical_counts, morse_matching
 from .smooth import morse_index, morse_inequalities
-from .vector_field import critical_cells, is_acyclic
+from .vector_field import critical_cells
 
 __all__ = [
     "Surface",
@@ -469,8 +469,10 @@ def surface_morse_complex(surface: Surface, F: AmbientFunction, critical: Sequen
     dict
         ``names`` (indices into ``critical`` per Morse index 0, 1, 2), ``counts`` and ``signed``
         (lists of int64 arrays: ``[k]`` has rows the index-(k−1) points, columns the index-k points,
-        k = 1, 2; ``counts`` the numbers of flow lines, ``signed`` the sums of their signs) and
-        ``saddle_connections`` (flow lines from a saddle to a saddle: 0 for a Morse–Smale function).
+        k = 1, 2; ``counts`` the numbers of flow lines, ``signed`` the sums of their signs),
+        ``saddle_connection_branches`` (saddle branches that end at a saddle: 0 for a Morse–Smale
+        function) and ``saddle_connections`` (flow lines from a saddle to a saddle, each seen as an
+        unstable branch of one saddle and a stable branch of the other: half the branches).
     """
     if branches is None:
         branches = saddle_branches(surface, F, critical)
@@ -496,7 +498,7 @@ def surface_morse_complex(surface: Surface, F: AmbientFunction, critical: Sequen
             signed[2][pos[q], pos[b["end"]]] += 1 if np.linalg.det(np.stack([n, arriving, eq])) > 0 else -1
         elif end_index == 1:
             connections += 1
-    return dict(names=names, counts=counts, signed=signed, saddle_connections=connections // 2 if connections else 0,
+    return dict(names=names, counts=counts, signed=signed, saddle_connections=connections // 2,
                 saddle_connection_branches=connections)
 
 
