@@ -155,7 +155,7 @@ def smallest_text_px(fig: Figure, *, rendered_width_px: float | None = None, dpi
     dpi : float, optional
         The resolution of the PNG; by default ``fig.dpi`` (what a notebook shows).
     bbox_inches : str or None, default "tight"
-        As for ``savefig`` (the notebook display and :meth:`Recorder.savefig` save tight).
+        As for ``savefig`` (the notebook display and ``Recorder.savefig`` save tight).
 
     Returns
     -------
