@@ -155,6 +155,19 @@ def test_api_docstrings_read_bars_as_norms_outside_literals():
                      ">>> 1 | 2"]
 
 
+def test_api_docstrings_set_latex_scripts_as_sub_and_superscripts():
+    """k_{p+1} in a plain-text docstring becomes k<sub>p+1</sub> on the API page, not raw LaTeX."""
+    sys.path.insert(0, str(BOOK / "_ext"))
+    try:
+        from api_docstrings import escape_bars
+    finally:
+        sys.path.remove(str(BOOK / "_ext"))
+    lines = ["rank B_p = k_{p+1} in R^{n+1}", "``k_{p}`` and :math:`x_{1}`", "Example::", "", "    x_{1}", ">>> a_{1}"]
+    escape_bars(lines)
+    assert lines == [r"rank B_p = k\ :sub:`p+1`\  in R\ :sup:`n+1`\ ", "``k_{p}`` and :math:`x_{1}`", "Example::", "",
+                     "    x_{1}", ">>> a_{1}"]
+
+
 def test_citations_link_to_the_references_page(built_book):
     intro = (built_book / "intro.html").read_text()
     assert re.search(r'<a class="reference internal" href="references.html#[^"]+"[^>]*>Bot11</a>', intro)

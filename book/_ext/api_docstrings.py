@@ -1,10 +1,13 @@
 """The API reference (api.md) reads the docstrings as they are written: plain text for ``help()``.
 
-Two things plain text does that reStructuredText reads otherwise:
+Three things plain text does that reStructuredText reads otherwise:
 
 - ``|H|``, ``|u − x|²``: bars are absolute values and norms, never reST substitutions. Bars are
   escaped before the docstring is parsed, except inside inline literals and roles, doctest lines and
   literal blocks, where reST does not read them.
+- ``k_{p+1}``, ``R^{n+1}``: sub- and superscripts written as in LaTeX, which the page would show as
+  raw LaTeX; outside literals they become reST's ``:sub:`` and ``:sup:`` (``k`` with ``p+1`` set
+  lower), so the API page reads like the rest of the book while ``help()`` keeps the plain text.
 - ``:func:`thesis_lib.morse.examples.rp2_chart```: a docstring may name an object by the module that
   defines it while the reference documents it where users import it from (its package,
   ``thesis_lib.morse.rp2_chart``). A ``thesis_lib.`` reference that finds no target is resolved to
@@ -20,18 +23,29 @@ import re
 _PROTECTED = re.compile(r"``.+?``|:[\w:.-]+:`[^`]*`")
 
 
+# a sub- or superscript written as in LaTeX after some base: k_{p+1}, R^{n+1}
+_SCRIPT = re.compile(r"(?<=[^\s\\])([_^])\{([^{}`\n]+)\}")
+
+
+def _prose(text: str) -> str:
+    """Bars escaped, and ``_{…}`` / ``^{…}`` as reST subscripts and superscripts (``<sub>``, ``<sup>``)."""
+    text = re.sub(r"(?<!\\)\|", r"\\|", text)
+    return _SCRIPT.sub(lambda m: "\\ :" + ("sub" if m.group(1) == "_" else "sup") + ":`" + m.group(2) + "`\\ ", text)
+
+
 def _escape_bars(text: str) -> str:
     out, end = [], 0
     for m in _PROTECTED.finditer(text):
-        out.append(re.sub(r"(?<!\\)\|", r"\\|", text[end:m.start()]))
+        out.append(_prose(text[end:m.start()]))
         out.append(m.group(0))
         end = m.end()
-    out.append(re.sub(r"(?<!\\)\|", r"\\|", text[end:]))
+    out.append(_prose(text[end:]))
     return "".join(out)
 
 
 def escape_bars(lines: list[str]) -> None:
-    """Escape the bars of ``lines`` in place, outside literal blocks and doctests."""
+    """Escape the bars of ``lines`` in place and set their ``_{…}``/``^{…}`` as sub- and
+    superscripts, outside inline literals, roles, literal blocks and doctests."""
     literal_indent = None  # indentation of the paragraph that opened a literal block (::)
     for i, line in enumerate(lines):
         stripped = line.lstrip()
