@@ -234,7 +234,10 @@ def test_references_are_the_thesis_bibliography_then_further_reading(built_book)
     the others."""
     page = (built_book / "references.html").read_text()
     at = page.index('id="further-reading"')
-    labels = lambda part: re.findall(r'role="doc-biblioentry">.*?<span class="label">.*?\[?([A-Za-z+]+\d+[a-z]?)\]?', part, re.S)
+    def labels(part: str) -> list[str]:
+        spans = re.findall(r'role="doc-biblioentry">\s*<span class="label">(.*?)</span>\s*<p>', part, re.S)
+        return [re.sub(r"<[^>]+>", "", span).strip("[] \n") for span in spans]
+
     thesis_part, further = labels(page[:at]), labels(page[at:])
     text = (shared_dir() / "thesis" / "botnan-2011-three-approaches.txt").read_text()
     assert thesis_part and further, (thesis_part, further)
