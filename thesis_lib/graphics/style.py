@@ -189,6 +189,8 @@ def _insert_text_chunk(png: bytes, key: str, value: str) -> bytes:
 def png_text(png: bytes) -> dict[str, str]:
     """The ``tEXt`` chunks of a PNG image.
 
+    Thesis: none (reads back what :func:`figure_png` wrote).
+
     Parameters
     ----------
     png : bytes

@@ -47,6 +47,8 @@ def header(column: str) -> str:
     """The header of a stored column, with its unit: ``ours_s`` → ``ours (s)``, ``ratio_ripser`` →
     ``ours ÷ Ripser``, ``gph_mb`` → ``giotto-ph peak (MB)``.
 
+    Thesis: none (the performance page's tables).
+
     Parameters
     ----------
     column : str
