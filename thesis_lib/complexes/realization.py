@@ -70,6 +70,7 @@ def realization_failures(simplices: Iterable[Sequence[int]], points: Sequence[Se
 
     When the vertices of σ ∪ τ are affinely independent they span one simplex of which σ and τ are
     faces, so conv σ ∩ conv τ = conv(σ ∩ τ); a placement with no failure is a geometric realization.
+    The test is sufficient, not necessary: a failing pair need not cross.
     Each simplex is also checked on its own (σ = τ).
 
     Parameters
