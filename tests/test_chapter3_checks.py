@@ -65,7 +65,8 @@ def test_first_variation_of_a_sphere_is_its_mean_curvature():
     dA = ct.first_variation_of_area(_sphere(2.0), outward, params, weights)  # λ = 1: d/dε 4π(2 + ε)²
     assert dA == pytest.approx(16 * np.pi, rel=1e-7)
     lam = lambda a: np.ones(a.shape[:-1])  # noqa: E731
-    assert ct.mean_curvature_integral(_sphere(2.0), outward, lam, params, weights) == pytest.approx(-8 * np.pi, rel=1e-6)
+    integral = ct.mean_curvature_integral(_sphere(2.0), outward, lam, params, weights)
+    assert integral == pytest.approx(-8 * np.pi, rel=1e-6)  # H = −1/2 over the area 16π
     inward = lambda a: -outward(a)  # noqa: E731
     assert ct.mean_curvature_integral(_sphere(2.0), inward, lam, params, weights) == pytest.approx(8 * np.pi, rel=1e-6)
 
