@@ -109,3 +109,29 @@ def test_statement_and_chapter_of_a_marker():
     assert ct.chapter_of(text, "foo") == 2 and ct.chapter_of(text, "baz") == 3
     with pytest.raises(ValueError):
         ct.chapter_of(text, "missing")
+
+
+def test_bad_inputs_are_refused():
+    with pytest.raises(ValueError):
+        ct.hodge_dual([1.0, 0.0], [0.0, 1.0])
+    with pytest.raises(ValueError):
+        ct.theorem_3_18_printed_gradient(np.zeros((3, 2, 3)))  # n = 1
+    with pytest.raises(ValueError):
+        ct.theorem_3_18_printed_gradient(np.full((1, 3, 3), np.nan))
+    with pytest.raises(ValueError):
+        ct.printed_gram_determinant(np.zeros((2, 1, 3)))
+    with pytest.raises(ValueError):
+        ct.proposition_3_17_residual(1)
+    params, weights = hypersphere_quadrature(2, 4)
+    with pytest.raises(ValueError):
+        ct.first_variation_of_area(_sphere(1.0), _sphere(1.0), params, weights[:-1])
+    with pytest.raises(ValueError):
+        ct.parametric_jacobian(_sphere(1.0), params, h=0.0)
+    with pytest.raises(ValueError):
+        ct.gauss_map_area_ratio(_sphere(1.0), [0.5, 0.5], -1.0)
+    with pytest.raises(ValueError):
+        ct.circumcentre_inside(np.zeros((2, 4, 2)))
+    with pytest.raises(ValueError):
+        ct.cotangent_formula_gradient(np.zeros((3, 3)), np.array([[0, 1, 5]]))
+    with pytest.raises(ValueError):
+        ct.statement_containing("no statement here", "here")

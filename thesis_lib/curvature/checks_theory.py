@@ -252,7 +252,7 @@ def printed_gram_determinant(x: ArrayLike) -> NDArray[np.float64]:
     return np.linalg.det(G)
 
 
-def parametric_jacobian(X: Param, w: ArrayLike, h: float = 1e-5) -> NDArray[np.float64]:
+def parametric_jacobian(X: Param, w: ArrayLike, *, h: float = 1e-5) -> NDArray[np.float64]:
     """Central-difference Jacobian (X_{u_1}, …, X_{u_n}) of a parametrisation, shape (..., n + 1, n).
 
     Thesis: §3.1.1 (X_*) and eq. (3.8).
@@ -284,7 +284,7 @@ def parametric_jacobian(X: Param, w: ArrayLike, h: float = 1e-5) -> NDArray[np.f
 
 
 def _area(X: Param, params: np.ndarray, weights: np.ndarray, h: float) -> float:
-    J = parametric_jacobian(X, params, h)
+    J = parametric_jacobian(X, params, h=h)
     return float(np.sum(weights * np.sqrt(np.linalg.det(np.einsum("...ai,...aj->...ij", J, J)))))
 
 
@@ -404,9 +404,9 @@ def gauss_map_area_ratio(X: Param, w0: ArrayLike, radius: float, *, nodes: int =
     w = w0 + np.column_stack([(P * np.cos(T)).ravel(), (P * np.sin(T)).ravel()])
 
     def N(a: np.ndarray) -> np.ndarray:
-        return hypersurface_normal(parametric_jacobian(X, a, h))
+        return hypersurface_normal(parametric_jacobian(X, a, h=h))
 
-    JX, JN = parametric_jacobian(X, w, h), parametric_jacobian(N, w, 1e3 * h)
+    JX, JN = parametric_jacobian(X, w, h=h), parametric_jacobian(N, w, h=1e3 * h)
     area_X = np.sum(W * np.linalg.norm(np.cross(JX[..., 0], JX[..., 1]), axis=-1))
     area_N = np.sum(W * np.linalg.norm(np.cross(JN[..., 0], JN[..., 1]), axis=-1))
     g, B = fundamental_forms(X, w0[None], 1e-4)
@@ -452,7 +452,7 @@ def cap_boundary_geodesic_curvature(X: Param, psi0: float, *, nodes: int = 256, 
     speed = np.linalg.norm(c1, axis=1)
     T = c1 / speed[:, None]
     dT_ds = (c2 * speed[:, None] ** 2 - c1 * np.einsum("ka,ka->k", c1, c2)[:, None]) / speed[:, None] ** 4
-    J = parametric_jacobian(X, w, h)
+    J = parametric_jacobian(X, w, h=h)
     side = np.cross(hypersurface_normal(J), T)
     orientation = -np.sign(np.einsum("ka,ka->k", side, J[..., 0]))  # 𝒮 into the cap: against X_ψ
     return float(np.sum(orientation * np.einsum("ka,ka->k", dT_ds, side) * speed) * 2 * np.pi / nodes)
@@ -487,10 +487,10 @@ def gauss_map_pullback_ratio(X: Param, w: ArrayLike, *, h: float = 1e-5) -> NDAr
     w = np.asarray(w, dtype=np.float64)
 
     def N(a: np.ndarray) -> np.ndarray:
-        return hypersurface_normal(parametric_jacobian(X, a, h))
+        return hypersurface_normal(parametric_jacobian(X, a, h=h))
 
     n0 = N(w)
-    JX, JN = parametric_jacobian(X, w, h), parametric_jacobian(N, w, 1e3 * h)
+    JX, JN = parametric_jacobian(X, w, h=h), parametric_jacobian(N, w, h=1e3 * h)
     num = np.linalg.det(np.concatenate([n0[..., None], JN], axis=-1))
     den = np.linalg.det(np.concatenate([n0[..., None], JX], axis=-1))
     g, B = fundamental_forms(X, w, 1e-4)
@@ -579,7 +579,7 @@ def example_3_20_gradient(vertices: ArrayLike, faces: ArrayLike) -> NDArray[np.f
     return out
 
 
-def mesh_area_gradient_fd(vertices: ArrayLike, simplices: ArrayLike, h: float = 1e-6) -> NDArray[np.float64]:
+def mesh_area_gradient_fd(vertices: ArrayLike, simplices: ArrayLike, *, h: float = 1e-6) -> NDArray[np.float64]:
     """∇_p (total hyperarea) at every vertex by central differences, simplex by simplex.
 
     Thesis: Definition 3.15 and eq. (3.16).
