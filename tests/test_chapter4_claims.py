@@ -153,9 +153,12 @@ def test_random_vector_fields_are_vector_fields_and_some_have_closed_paths():
     assert not all(morse.is_acyclic(cx, vf) for vf in fields)
 
 
-def test_proposition_4_32_counts_are_zero_for_a_gradient():
-    out = checks.proposition_4_32_violations(rp2(), morse.rp2_gradient_field())
-    assert out == dict(vv_nonzero=0, hit_twice=0, critical_mismatch=0, n=31)
+def test_proposition_4_32_counts_are_zero_for_a_discrete_morse_function():
+    f = morse.discrete_morse_function(rp2(), morse.rp2_gradient_field())
+    assert checks.proposition_4_32_violations(f) == dict(not_a_field=0, vv_nonzero=0, critical_mismatch=0, n=31)
+    # Figure 4.3's right function: two critical simplices, the others paired
+    good = {(0,): 0, (1,): 2, (2,): 3, (0, 1): 1.5, (1, 2): 2.5, (0, 2): 5}
+    assert checks.proposition_4_32_violations(good)["critical_mismatch"] == 0
 
 
 def test_two_critical_survey_on_spheres():
@@ -175,3 +178,19 @@ def test_chapter_of_heading_reads_both_numberings():
         text = path.read_text(encoding="utf-8")
         assert checks.chapter_of_heading(text, "Simplicial Homology") == dict(by_section_number=2, by_chapter_line=2)
         assert checks.chapter_of_heading(text, "Morse Homology") == dict(by_section_number=4, by_chapter_line=4)
+
+
+def test_torus_grid_sublevels_change_only_at_critical_values():
+    tris, pts = checks.torus_grid(12)
+    assert homology(tris, 2) == [(1, []), (2, []), (1, [])]
+    assert len(tris) == 2 * 12 * 12
+    levels = np.linspace(-3.5, 3.5, 14)  # no level at a critical value
+    crit = [(-3.0, 0), (-1.0, 1), (1.0, 1), (3.0, 2)]
+    out = checks.sublevel_level_changes(tris, pts[:, 2], levels, crit)
+    assert out["betti"][0] == [0, 0, 0] and out["betti"][-1] == [1, 2, 1]
+    assert out["changes_without"] == 0 and out["one_cell"] == out["steps_with_one"] == 4
+    # told of a wrong critical value, the count of changes without one is no longer zero
+    wrong = checks.sublevel_level_changes(tris, pts[:, 2], levels, [(-3.0, 0), (1.0, 1), (3.0, 2)])
+    assert wrong["changes_without"] == 1
+    with pytest.raises(ValueError, match="critical value"):
+        checks.sublevel_level_changes(tris, pts[:, 2], [-3.0, 0.0], crit)

@@ -27,10 +27,9 @@ from ..homology import homology
 from ..smith import rank_mod_p
 from ._cells import ComplexLike, Pairs, Simplex
 from .flow import boundary_operator, cells, gradient_matrix, stabilised_flow
-from .functions import critical_simplices, sublevel_complex
+from .functions import critical_simplices, gradient_pairs, sublevel_complex
 from .matching import critical_counts, morse_matching
 from .smooth import morse_index, morse_inequalities
-from .vector_field import critical_cells
 
 __all__ = [
     "Surface",
@@ -57,6 +56,8 @@ __all__ = [
     "chapter_of_heading",
     "two_critical_survey",
     "finite_difference_hessian",
+    "torus_grid",
+    "sublevel_level_changes",
 ]
 
 Vector = npt.NDArray[np.float64]
@@ -556,6 +557,111 @@ def antipodal_quotient_counts(critical: Sequence[dict], complex_: dict) -> list[
     return out
 
 
+def torus_grid(n: int, *, R: float = 2.0, r: float = 1.0) -> tuple[list[Simplex], Vector]:
+    """A triangulation of the torus by an n × n grid of the parameters (u, v), and its vertices' φ(u, v).
+
+    Thesis: Example 4.2 (the parametrisation φ of the upright torus), for the sublevel sets M^a of
+    Theorems 4.4–4.5.
+
+    Parameters
+    ----------
+    n : int
+        Grid points per angle (at least 3); vertex i·n + j sits at u = 2πi/n, v = 2πj/n.
+    R, r : float
+        The radii, 0 < r < R.
+
+    Returns
+    -------
+    triangles : list of tuple
+        2n² triangles (sorted vertices).
+    points : ndarray, shape (n², 3)
+        φ at the vertices.
+
+    Raises
+    ------
+    ValueError
+        n < 3 or radii without 0 < r < R.
+    """
+    n = int(n)
+    if n < 3 or not (0 < r < R):
+        raise ValueError(f"torus_grid needs n >= 3 and 0 < r < R, got n = {n}, R = {R}, r = {r}")
+    idx = lambda i, j: (i % n) * n + (j % n)  # noqa: E731
+    tris = []
+    for i in range(n):
+        for j in range(n):
+            a, b, c, d = idx(i, j), idx(i + 1, j), idx(i, j + 1), idx(i + 1, j + 1)
+            tris += [tuple(sorted((a, b, d))), tuple(sorted((a, c, d)))]
+    u, v = np.meshgrid(2 * np.pi * np.arange(n) / n, 2 * np.pi * np.arange(n) / n, indexing="ij")
+    u, v = u.ravel(), v.ravel()
+    pts = np.stack([np.sin(u) * (R + r * np.cos(v)), r * np.sin(v), np.cos(u) * (R + r * np.cos(v))], axis=1)
+    return tris, pts
+
+
+def sublevel_level_changes(triangles: Sequence[Simplex], values: npt.ArrayLike, levels: Sequence[float],
+                           critical: Sequence[tuple[float, int]], *, coefficients: int = 2) -> dict[str, object]:
+    """Betti numbers of the sublevel sets M^a of a vertex function on a triangulated surface, level by
+    level, and whether they change only across critical values and then as attaching one cell does.
+
+    Thesis: Theorem 4.4 (no critical point in f⁻¹[a, b]: M^a ≃ M^b) and Theorem 4.5 (one critical
+    point of index k: M^b is M^a with a k-cell attached, up to homotopy).
+
+    M^a is taken as the subcomplex spanned by the vertices with value ≤ a (the lower-star
+    filtration of the piecewise-linear interpolation).
+
+    Parameters
+    ----------
+    triangles : sequence of tuple
+        The surface.
+    values : array_like, shape (n_vertices,)
+        The function at the vertices.
+    levels : sequence of float
+        Increasing levels a, none of them a critical value.
+    critical : sequence of (float, int)
+        The critical values with their indices.
+    coefficients : int, default 2
+        Betti numbers over Z/p.
+
+    Returns
+    -------
+    dict
+        ``betti`` (list per level), ``steps_without`` / ``changes_without`` (consecutive levels with
+        no critical value between them, and among those the ones whose Betti numbers differ),
+        ``steps_with_one`` / ``one_cell`` (consecutive levels with one critical value between them,
+        and among those the ones where exactly β_k rises by one or β_(k−1) falls by one).
+
+    Raises
+    ------
+    ValueError
+        A level equal to a critical value.
+    """
+    f = np.asarray(values, dtype=float)
+    if any(abs(a - c) <= 1e-12 * max(1.0, abs(c)) for a in levels for c, _ in critical):
+        raise ValueError("a level equals a critical value; choose levels between them")
+    tris = np.asarray(triangles, dtype=np.int64)
+    edges = np.unique(np.sort(np.concatenate([tris[:, [0, 1]], tris[:, [0, 2]], tris[:, [1, 2]]]), axis=1), axis=0)
+    betti = []
+    for a in levels:
+        keep_v = np.flatnonzero(f <= a)
+        simplices = [(int(v),) for v in keep_v]
+        simplices += [tuple(map(int, e)) for e in edges[(f[edges] <= a).all(axis=1)]]
+        simplices += [tuple(map(int, t)) for t in tris[(f[tris] <= a).all(axis=1)]]
+        b = [x for x, _ in homology(simplices, coefficients)] if simplices else []
+        betti.append((b + [0, 0, 0])[:3])
+    out = dict(betti=betti, steps_without=0, changes_without=0, steps_with_one=0, one_cell=0)
+    for lo, hi, b0, b1 in zip(levels[:-1], levels[1:], betti[:-1], betti[1:]):
+        between = [k for c, k in critical if lo < c < hi]
+        diff = np.array(b1) - np.array(b0)
+        if not between:
+            out["steps_without"] += 1
+            out["changes_without"] += bool(diff.any())
+        elif len(between) == 1:
+            k = between[0]
+            out["steps_with_one"] += 1
+            single = np.count_nonzero(diff) == 1
+            out["one_cell"] += bool(single and (diff[k] == 1 or (k > 0 and diff[k - 1] == -1)))
+    return out
+
+
 # -------------------------------------------------------------------------------------- discrete
 def random_complex(*, n_vertices: int = 8, dim: int = 2, density: float = 0.3, seed: int) -> list[Simplex]:
     """A random pure complex: each dim-simplex on ``n_vertices`` vertices kept with probability ``density``.
@@ -722,32 +828,41 @@ def lemma_4_22_count(values: dict[Simplex, float]) -> tuple[int, int, bool]:
     return len(keys), both, any(len(s) == 1 and values[s] == low for s in keys)
 
 
-def proposition_4_32_violations(simplices: ComplexLike, pairs: Pairs) -> dict[str, int]:
-    """Counts of failures of the three parts of Proposition 4.32 for the gradient V of a field.
+def proposition_4_32_violations(values: dict[Simplex, float]) -> dict[str, int]:
+    """Counts of failures of the three parts of Proposition 4.32 for the gradient V of a discrete Morse function.
 
     Thesis: Proposition 4.32 (V∘V = 0; #{γ : V(γ) = ±σ} ≤ 1; σ critical ⇔ σ ∉ im V and V(σ) = 0).
 
+    The pairs of V are read from the values by Definition 4.30 (σ < τ with f(τ) ≤ f(σ)), the
+    critical simplices by Definition 4.21, both from the values alone.
+
     Parameters
     ----------
-    simplices, pairs : complex, iterable of (sigma, tau)
-        The complex and a gradient field.
+    values : dict of tuple to float
+        A discrete Morse function on every simplex of a complex.
 
     Returns
     -------
     dict of str to int
-        ``vv_nonzero`` (nonzero entries of V∘V), ``hit_twice`` (simplices ±V(γ) of two γ),
-        ``critical_mismatch`` (simplices where "critical" and "not in im V and V(σ) = 0" disagree),
-        ``n`` (simplices).
+        ``not_a_field`` (1 if a simplex lies in two pairs, so that V(γ) = ±σ for two γ or
+        V(σ) ≠ 0 for σ ∈ im V; the other counts are then 0), ``vv_nonzero`` (nonzero entries of
+        V∘V), ``critical_mismatch`` (simplices where Definition 4.21 and "σ ∉ im V and V(σ) = 0"
+        disagree), ``n`` (simplices).
     """
+    simplices = list(values)
+    pairs = gradient_pairs(values)
     basis = cells(simplices)
-    V = sp.csc_matrix(gradient_matrix(simplices, pairs))
+    try:
+        V = sp.csc_matrix(gradient_matrix(simplices, pairs))
+    except ValueError:
+        return dict(not_a_field=1, vv_nonzero=0, critical_mismatch=0, n=len(basis))
     vv = (V @ V).tocoo()
-    hits = np.bincount(V.tocoo().row, minlength=len(basis))
-    crit = {s for level in critical_cells(simplices, pairs) for s in level}
-    col_nnz = np.diff(V.indptr)
-    mismatch = sum(1 for i, s in enumerate(basis) if (s in crit) != (hits[i] == 0 and col_nnz[i] == 0))
-    return dict(vv_nonzero=int(np.count_nonzero(vv.data)), hit_twice=int(np.sum(hits > 1)),
-                critical_mismatch=int(mismatch), n=len(basis))
+    in_image = np.bincount(V.tocoo().row, minlength=len(basis)) > 0
+    nonzero_image = np.diff(V.indptr) > 0
+    crit = set(critical_simplices(values))
+    mismatch = sum(1 for i, s in enumerate(basis) if (s in crit) != (not in_image[i] and not nonzero_image[i]))
+    return dict(not_a_field=0, vv_nonzero=int(np.count_nonzero(vv.data)), critical_mismatch=int(mismatch),
+                n=len(basis))
 
 
 def flow_invariant_homology(simplices: ComplexLike, pairs: Pairs, *, coefficients: int = 2) -> dict[str, list[int]]:
