@@ -355,7 +355,7 @@ def test_an_identity_gives_its_reason_and_is_never_reproduced(registry):
     row = registry(_claim(compare="eq", thesis=288100, by_construction="the count is fixed by the parameters"))[0]
     assert row["status"] == "identity" and row["note"] == "" and row["compared_as"] == "= 288100"
     assert report.why(row) == "By construction: the count is fixed by the parameters."
-    assert "{bdg-secondary}`identity`" in report.findings([row], "2")
+    assert "{bdg-success-line}`identity`" in report.findings([row], "2")
 
 
 def test_errata_show_the_text_as_printed_the_correction_and_the_check(registry):

@@ -424,7 +424,7 @@ def number_text(x: object) -> str:
     elif 4 <= exp < 6:
         text = str(round(x))
     else:
-        mant = f"{x / 10.0 ** exp:.3g}"
+        mant = f"{x / 10.0 ** exp:.4g}"
         if mant.lstrip("-") == "10":
             mant, exp = mant.replace("10", "1"), exp + 1
         power = "10" + str(exp).translate(_SUPERSCRIPT)
@@ -660,7 +660,7 @@ def _prov_order(p: object) -> int:
 # ---------------------------------------------------------------------------- Markdown
 def _fmt(value: object) -> str:
     if isinstance(value, float):
-        return f"{value:.4g}"
+        return number_text(value)
     if isinstance(value, list):
         return "(" + ", ".join(_fmt(v) for v in value) + ")"
     return "—" if value is None else str(value)
@@ -714,8 +714,10 @@ def math_text(text: str) -> str:
 
 
 def table_cell(value: object) -> str:
-    """A report value as the text of one Markdown table cell: numbers to four significant digits,
-    lists in parentheses, None as ``—``, TeX fragments in ``$…$`` (:func:`math_text`), ``|`` escaped.
+    """A report value as the text of one Markdown table cell: numbers as :func:`number_text` writes them,
+    lists in parentheses, None as ``—``, TeX fragments in ``$…$`` (:func:`math_text`), ``|`` escaped,
+    and a zero-width space after each ``_``, ``.`` or ``/`` inside a word longer than 10 characters
+    (a result key or module name in a note), so that the table fits the text column.
 
     Parameters
     ----------
@@ -727,7 +729,22 @@ def table_cell(value: object) -> str:
     str
         The cell's text, on one line.
     """
-    return math_text(_fmt(value)).replace("|", "\\|").replace("\n", " ")
+    text = math_text(_fmt(value)).replace("|", "\\|").replace("\n", " ")
+    return " ".join(_breakable(word) for word in text.split(" "))
+
+
+_BREAK_AFTER = re.compile(r"(?<=[A-Za-z0-9][_./])(?=[A-Za-z0-9(])")
+
+
+def _breakable(word: str) -> str:
+    """A long identifier (``witness_third_bar_maxmin``, ``thesis_lib.lab.chapters``) with a zero-width
+    space after each ``_``, ``.`` and ``/`` inside it, where a narrow table column may break it."""
+    if len(word) <= _LONG_WORD or "$" in word:
+        return word
+    return _BREAK_AFTER.sub("\u200b", word)
+
+
+_LONG_WORD = 10
 
 
 def why(row: dict[str, object]) -> str:
@@ -830,9 +847,10 @@ def markdown(rows: list[dict[str, object]] | None = None, *, with_summary: bool 
     return "\n".join(parts)
 
 
-#: the sphinx-design badge colour of each status (the report page's and the summary page's tables)
-BADGES = {"reproduced": "success", "erratum": "warning", "differs": "danger", "identity": "secondary",
-          "consistent": "info", "not-comparable": "dark", "figure-only": "light",
+#: the sphinx-design badge of each status (the report page's and the summary page's tables; ``-line``: outlined,
+#: for the statuses shown apart)
+BADGES = {"reproduced": "success", "erratum": "warning", "differs": "danger", "identity": "success-line",
+          "consistent": "primary-line", "not-comparable": "muted-line", "figure-only": "light",
           "not-reproducible": "muted", "new": "primary"}
 
 #: what each status means, one line each (the legend of the report page)
