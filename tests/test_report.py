@@ -243,8 +243,8 @@ def test_findings_list_what_is_not_reproduced_with_badges():
     ]
     rows[0]["compared_as"] = "= 1"
     lines = findings(rows, "2").splitlines()
-    assert lines[:2] == ["| thesis place | thesis | compared as | ours | status | why |", "|---|---|---|---|---|---|"]
-    assert lines[2:] == ["| Example 2.36 | 1 | = 1 | (2, 3.5) | {bdg-danger}`differs` | a \\| b c |"]
+    assert lines[:2] == ["| thesis place | thesis — compared as | ours | status | why |", "|---|---|---|---|---|"]
+    assert lines[2:] == ["| Example 2.36 | 1 — *compared as* = 1 | (2, 3.5) | {bdg-danger}`differs` | a \\| b c |"]
     assert findings(rows, "3") == "Every claim of this chapter is reproduced."
 
 

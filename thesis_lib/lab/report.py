@@ -1,19 +1,24 @@
 """The reproduction report: each claim of the thesis beside what the stored runs measured.
 
 Claims live in ``experiments/claims/*.toml`` as ``[[claim]]`` tables (schema in CONVENTIONS.md):
-``id``, ``where`` (thesis place), ``thesis`` (the thesis's value, as stated), ``result``
+``id``, ``where`` (thesis place), ``thesis`` (the thesis's text or value, as printed), ``result``
 (``"<results name>:<key>"`` or a list of them; optional with ``compare = "none"``), ``compare``
 (``eq``, ``rel``, ``abs``, ``le``, ``ge``, ``between``, ``none``), its tolerances (``rtol``, ``atol``,
 ``low``, ``high``), optionally ``value`` (the number compared with when ``thesis`` is prose),
-``correct`` (errata: the corrected value), ``provenance`` (``computed``, ``reconstructed input``,
-``transcribed``), ``section`` (``thesis`` or ``beyond``), ``link`` (``<book page>#<label>``), ``note``
-(required unless reproduced) and ``not_reproducible``.
+``provenance`` of the input (one of :data:`PROVENANCES`), ``section`` (``thesis`` or ``beyond``),
+``link`` (``<book page>#<label>``), ``note`` (required unless reproduced), and for the kinds of
+claim that are shown apart ``by_construction`` (why it holds by construction), ``own_tolerance``
+(the tolerance is ours), ``not_comparable`` (about another program's run), ``not_reproducible``;
+errata have ``correct`` (the corrected value) with ``corrected`` (the corrected statement) and
+``check`` (the decisive check).
 
-Statuses are computed, never typed: ``reproduced``, ``differs``, ``erratum`` (passes with ``correct``,
-fails with the thesis's value), ``not-reproducible``, ``figure-only`` (``compare = "none"``) and
-``new`` (``section = "beyond"``, reported in its own section).  The report follows the thesis's
-order: each claim sits where its place (caption, statement or heading) stands in the thesis text.
-It reads only stored results, so it works in a fresh clone without running anything.
+Statuses are computed, never typed: of claims that could have failed, ``reproduced``, ``erratum``
+(fails with the thesis's value, passes with ``correct``) and ``differs``; shown apart, ``identity``
+(``by_construction`` and it holds), ``consistent`` (``own_tolerance`` and it holds),
+``not-comparable``, ``figure-only`` (``compare = "none"``), ``not-reproducible`` and ``new``
+(``section = "beyond"``, reported in its own section).  The report follows the thesis's order: each
+claim sits where its place (caption, statement or heading) stands in the thesis text.  It reads
+only stored results, so it works in a fresh clone without running anything.
 """
 
 from __future__ import annotations
@@ -890,7 +895,8 @@ def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
     Returns
     -------
     str
-        Columns thesis place, thesis, compared as, ours, status (a badge, :data:`BADGES`) and why
+        Columns thesis place, thesis (as printed, then the test it is compared as), ours, status (a
+        badge, :data:`BADGES`) and why
         (:func:`why`: the note, and for an erratum the corrected statement and the decisive check);
         a sentence instead when every claim of the chapter is reproduced.
     """
@@ -899,11 +905,12 @@ def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
              and r["status"] != "reproduced"]
     if not shown:
         return "Every claim of this chapter is reproduced."
-    lines = ["| thesis place | thesis | compared as | ours | status | why |", "|---|---|---|---|---|---|"]
+    lines = ["| thesis place | thesis — compared as | ours | status | why |", "|---|---|---|---|---|"]
     for r in shown:
-        lines.append(f"| {table_cell(r['where'])} | {table_cell(r['thesis'])} | {table_cell(r.get('compared_as'))} "
-                     f"| {table_cell(r['ours'])} | {{bdg-{BADGES[str(r['status'])]}}}`{r['status']}` "
-                     f"| {table_cell(why(r))} |")
+        test = r.get("compared_as") or "—"
+        thesis = table_cell(r["thesis"]) + ("" if test == "—" else f" — *compared as* {table_cell(test)}")
+        lines.append(f"| {table_cell(r['where'])} | {thesis} | {table_cell(r['ours'])} "
+                     f"| {{bdg-{BADGES[str(r['status'])]}}}`{r['status']}` | {table_cell(why(r))} |")
     return "\n".join(lines) + "\n"
 
 
