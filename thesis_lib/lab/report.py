@@ -402,6 +402,8 @@ def number_text(x: object) -> str:
     """A number written compactly: integers in full (below 10⁶), four significant digits, and powers
     of ten with Unicode superscripts (``0.004`` → ``4·10⁻³``, ``1e-5`` → ``10⁻⁵``); minus as ``−``.
 
+    Thesis: none (how the report writes numbers).
+
     Parameters
     ----------
     x : object
@@ -463,7 +465,7 @@ def compared_as(claim: Claim) -> str:
     """How the stored result is compared, as a short formula: ``= 3``, ``≤ 0``, ``≥ 1``,
     ``= 2.329 ± 21 %``, ``within 4·10⁻³ of 0``, ``= 3.142 (rel. 10⁻⁵)``, ``in [a, b]``, ``—`` (nothing).
 
-    Thesis: the claims of all chapters (the report's "compared as" column).
+    Thesis: none (the report's "compared as" column, for the claims of every chapter).
 
     Parameters
     ----------
@@ -605,6 +607,8 @@ def headline(rows: list[dict[str, object]] | None = None) -> str:
     then those shown apart (identities, tolerances of ours, other programs' runs, figures, claims
     that cannot be reproduced) and the new work.
 
+    Thesis: none (the reproduction report's headline).
+
     Parameters
     ----------
     rows : list of dict, optional
@@ -678,6 +682,8 @@ def math_text(text: str) -> str:
     r"""Text with every TeX fragment (a word holding ``_{…}``, ``^{…}`` or a backslash) put in ``$…$``,
     so that rendered Markdown shows no raw ``_{``, ``^{`` or ``\``.
 
+    Thesis: none (a rule of the book: no raw TeX outside math).
+
     Parameters
     ----------
     text : str
@@ -724,6 +730,8 @@ def table_cell(value: object) -> str:
     and a zero-width space after each ``_``, ``.`` or ``/`` inside a word longer than 10 characters
     (a result key or module name in a note), so that the table fits the text column.
 
+    Thesis: none (the report's tables).
+
     Parameters
     ----------
     value : object
@@ -756,6 +764,8 @@ def why(row: dict[str, object]) -> str:
     """The reason shown with a row: ``By construction: …`` for an identity, the note, and for an
     erratum the corrected statement and the decisive check.
 
+    Thesis: none (the report's tables).
+
     Parameters
     ----------
     row : dict
@@ -786,6 +796,8 @@ def _place(row: dict[str, object], link_suffix: str) -> str:
 
 def errata_markdown(rows: list[dict[str, object]] | None = None, *, place=None) -> str:
     """The errata as a Markdown table: thesis place, as printed, corrected, decisive check, ours.
+
+    Thesis: the errata of every chapter, each beside its correction.
 
     Parameters
     ----------
