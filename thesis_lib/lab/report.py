@@ -41,11 +41,13 @@ __all__ = ["BADGES", "COULD_FAIL", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_L
            "math_text", "number_text", "report", "summary", "summary_markdown", "markdown", "table_cell", "to_json",
            "place_line", "why"]
 
+#: every status a claim can have, in the report's order (computed, never typed in)
 STATUSES = ("reproduced", "erratum", "differs", "identity", "consistent", "not-comparable", "figure-only",
             "not-reproducible", "new")
 #: the statuses of claims that could have failed (the report's headline counts these)
 COULD_FAIL = ("reproduced", "erratum", "differs")
 COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
+#: the provenances of a claim's input (what each means: :data:`PROVENANCE_LEGEND`)
 PROVENANCES = ("transcribed", "thesis data", "reconstructed input", "substitute input", "computed")
 SECTIONS = ("thesis", "beyond")
 THESIS_TEXT = "botnan-2011-three-approaches.txt"
