@@ -147,3 +147,18 @@ def test_the_thesis_text():
         # the heading it stands under
         assert f"Chapter {r.printed}" in r.sentence
         assert int(re.match(r"\d+", r.section).group()) == r.chapter.number
+
+
+@pytest.mark.skipif(not THESIS.is_file(), reason="the thesis text is not in the shared folder")
+def test_the_stored_numbers_are_the_texts():
+    """The summary page's stored run (what the report's errata read) matches the thesis text now."""
+    from thesis_lib.lab.report import report
+    from thesis_lib.lab.results import load
+
+    stored = load("ch5-summary")
+    for key, r in ch.resolve(ch.read_thesis()).items():
+        assert (stored[f"{key}_printed"], stored[f"{key}_chapter"]) == (r.printed, r.chapter.number), key
+    rows = {row["id"]: row for row in report()}
+    for cid in ("preface-mean-curvature-chapter", "introduction-chapter-1-is-2", "introduction-chapter-2-is-3",
+                "summary-chapter-1-is-2", "summary-chapter-2-is-3"):
+        assert rows[cid]["status"] == "erratum", rows[cid]
