@@ -8,7 +8,6 @@ as an independent reference), so the intervals equal the fast engine's and GUDHI
 
 from __future__ import annotations
 
-import gudhi
 import numpy as np
 import pytest
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 import itertools
 import math
 
-import gudhi
 import numpy as np
 import pytest
 
@@ -23,7 +22,8 @@ from thesis_lib.persistence.definition import persistent_betti_by_definition
 def test_union_of_discs_simple_shapes():
     assert union_of_discs_betti([[0.0, 0.0]], 0.3, pixel=0.01) == (1, 0)
     assert union_of_discs_betti([[0.0, 0.0], [2.0, 0.0]], 0.3, pixel=0.01) == (2, 0)
-    ring = np.c_[np.cos(np.linspace(0, 2 * np.pi, 24, endpoint=False)), np.sin(np.linspace(0, 2 * np.pi, 24, endpoint=False))]
+    angles = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+    ring = np.c_[np.cos(angles), np.sin(angles)]
     assert union_of_discs_betti(ring, 0.2, pixel=0.005) == (1, 1)   # overlapping discs around a hole
     assert union_of_discs_betti(ring, 1.2, pixel=0.01) == (1, 0)    # the hole is covered
     assert union_of_discs_betti(ring, 0.1, pixel=0.005) == (24, 0)  # disjoint discs
@@ -58,7 +58,8 @@ def test_moment_curve_realizes_full_skeleta():
         cx = [s for k in range(1, d + 2) for s in itertools.combinations(range(n), k)]
         assert realization_failures(cx, moment_curve(n, 2 * d + 1)) == 0
         # in R^{2d}, 2d + 2 points are always affinely dependent: every pair of disjoint d-simplices fails
-        disjoint = sum(1 for a, b in itertools.combinations([s for s in cx if len(s) == d + 1], 2) if not set(a) & set(b))
+        top = [s for s in cx if len(s) == d + 1]
+        disjoint = sum(1 for a, b in itertools.combinations(top, 2) if not set(a) & set(b))
         assert realization_failures(cx, moment_curve(n, 2 * d)) >= disjoint > 0
 
 

@@ -13,8 +13,6 @@ import itertools
 from collections.abc import Iterable, Sequence
 from fractions import Fraction
 
-import numpy as np
-
 __all__ = ["moment_curve", "realization_failures"]
 
 
