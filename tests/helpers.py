@@ -154,13 +154,11 @@ def page_labels(page: str) -> set[str]:
     return set(re.findall(r"^\(([\w-]+)\)=\s*$", text, re.M)) | set(re.findall(r"^:name:\s*([\w-]+)\s*$", text, re.M))
 
 
-PROVENANCES = {"computed", "reconstructed input", "transcribed"}
-
-
 def check_claim_file(name: str) -> None:
     """Every claim of ``experiments/claims/<name>.toml`` has a provenance and a link to a label of its
     book page, and (for an experiment) none compares one of the experiment's input parameters."""
     from thesis_lib.lab import runner
+    from thesis_lib.lab.report import PROVENANCES
 
     params = set(runner.experiment_parameters(name)) if name in runner.list_experiments() else set()
     for claim in claims_of(name):
