@@ -140,3 +140,26 @@ def test_markdown_typesets_its_formulas(path):
             assert raw not in prose, f"{path}: raw {raw!r} outside math in {cell.source[:80]!r}"
         for unicode_math in ("β₀", "β₁", "β₂", "R⁴", "r_c²", "ε²"):
             assert unicode_math not in prose, f"{path}: {unicode_math!r} is not typeset with $…$"
+
+
+#: the width of the book's text column in CSS pixels (a 1280 px wide window; tests/test_book.py)
+COLUMN_PX = 676
+
+
+def test_figures_on_the_page_have_legible_text():
+    """Each stored figure §2.4's page shows: its smallest text (the PNG's tEXt chunk) at the width the
+    page shows it (its natural width, at most the column) is at least 9 px."""
+    import struct
+
+    from thesis_lib.graphics.style import TEXT_PX_KEY, png_text
+
+    text = "\n".join(c.source for c in notebook("book/ch2-experiments.ipynb").cells if c.cell_type == "markdown")
+    paths = re.findall(r"^```\{figure\} (\S+)$", text, re.M)
+    assert len(paths) >= 12
+    for path in paths:
+        png = (repo_root() / "book" / path).read_bytes()
+        width = struct.unpack(">I", png[16:20])[0]
+        assert ":width:" not in text.split(path, 1)[1].split("```", 1)[0], f"{path}: shown at a fixed width"
+        px = png_text(png)[TEXT_PX_KEY]
+        if px != "none":
+            assert float(px) * min(width, COLUMN_PX) / width >= 9.0, f"{path}: text {px} px at {width} px wide"
