@@ -748,12 +748,13 @@ def table_cell(value: object) -> str:
     return " ".join(_breakable(word) for word in text.split(" "))
 
 
-_BREAK_AFTER = re.compile(r"(?<=[A-Za-z0-9][_./])(?=[A-Za-z0-9(])")
+_BREAK_AFTER = re.compile(r"(?<=[A-Za-z][_./])(?=[A-Za-z(])")
 
 
 def _breakable(word: str) -> str:
     """A long identifier (``witness_third_bar_maxmin``, ``thesis_lib.lab.chapters``) with a zero-width
-    space after each ``_``, ``.`` and ``/`` inside it, where a narrow table column may break it."""
+    space after each ``_``, ``.`` and ``/`` between letters inside it, where a narrow table column may
+    break it; numbers (``0.02``) are never broken."""
     if len(word) <= _LONG_WORD or "$" in word:
         return word
     return _BREAK_AFTER.sub("\u200b", word)
