@@ -93,6 +93,15 @@ def test_section_chapter_reads_the_heading_not_the_section_number():
         ch.section_chapter(twice, "Round Things")
 
 
+def test_section_at_is_the_innermost_numbered_heading_above():
+    lines = DOC.splitlines()
+    assert ch.section_at(DOC, lines.index("Figure 2.1: a ball")) == "2.1"
+    assert ch.section_at(DOC, lines.index("CHAPTER 3. CUBES")) == "3.1"
+    assert ch.section_at(DOC, lines.index("Cubes")) == ""  # the chapter heading, before its sections
+    assert ch.section_at(DOC, lines.index("In Chapter 3 we studied cubes.")) == ""
+    assert ch.section_at(DOC, lines.index("Preface")) == ""
+
+
 def test_numbering_disagreements_find_misnumbered_lines():
     assert ch.numbering_disagreements(DOC) == []
     lines = DOC.splitlines()
@@ -138,7 +147,7 @@ def test_the_thesis_text():
     assert ch.numbering_disagreements(text) == []
     got = ch.resolve(text)
     # every "Chapter N" of the three parts is one of the table's references, so none is left unchecked
-    for part in ("Preface", "Introduction", "Summary"):
+    for part in [c.title for c in ch.chapters(text)] + ["Preface"]:
         refs = ch.chapter_references(text, part)
         mine = [r for r in got.values() if r.part == part]
         assert sorted(r.sentence for r in refs) == sorted(r.sentence for r in mine)
@@ -147,6 +156,11 @@ def test_the_thesis_text():
         # the heading it stands under
         assert f"Chapter {r.printed}" in r.sentence
         assert int(re.match(r"\d+", r.section).group()) == r.chapter.number
+        if r.part in ch.FRONT_AND_SUMMARY:
+            assert r.where == r.part
+        else:  # the sentence stands in a numbered section of its own chapter
+            own = next(c.number for c in ch.chapters(text) if c.title == r.part)
+            assert r.where.split(".")[0] == str(own)
 
 
 @pytest.mark.skipif(not THESIS.is_file(), reason="the thesis text is not in the shared folder")

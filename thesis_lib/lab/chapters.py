@@ -19,8 +19,8 @@ from pathlib import Path
 
 from .paths import shared_dir
 
-__all__ = ["Chapter", "Reference", "Resolved", "REFERENCES", "THESIS_TEXT", "read_thesis", "chapters", "chapter_at",
-           "part_lines", "numbering_disagreements", "chapter_references", "section_chapter", "resolve"]
+__all__ = ["Chapter", "Reference", "Resolved", "REFERENCES", "FRONT_AND_SUMMARY", "THESIS_TEXT", "read_thesis", "chapters", "chapter_at",
+           "part_lines", "numbering_disagreements", "chapter_references", "section_chapter", "section_at", "resolve"]
 
 THESIS_TEXT = "botnan-2011-three-approaches.txt"
 
@@ -39,7 +39,16 @@ REFERENCES = (
     ("summary_persistent_homology", "Summary", "we defined persistent homology", "Persistent Homology"),
     ("summary_curvature", "Summary", "we defined the necessary tools needed to define discrete curvature",
      "Discrete Versions"),
+    # the body of the thesis refers back to its first chapter of mathematics three times
+    ("body_voronoi", "Discrete Differential Geometry", "We discussed Voronoi regions in",
+     "Constructing Simplicial Complexes"),
+    ("body_simplicial_homology", "Discrete Morse Theory", "as when we used simplicial homology in",
+     "Simplicial Homology"),
+    ("body_boundary_operator", "Discrete Morse Theory", "the standard boundary operator on a simplicial complex from",
+     "Simplicial Homology"),
 )
+#: the parts that are not chapters of mathematics (the rest of :data:`REFERENCES` is in the body)
+FRONT_AND_SUMMARY = ("Preface", "Introduction", "Summary")
 
 _NUMBER = re.compile(r"\s*(\d+)\s*")
 _SECTION = re.compile(r"(\d+)\.\d+(?:\.\d+)* [A-Z]")
@@ -257,6 +266,36 @@ def section_chapter(text: str, title: str) -> int:
     return _section(text, title)[1].number
 
 
+def section_at(text: str, line: int) -> str:
+    """The number of the innermost numbered section whose heading stands at or above ``line`` within
+    its chapter, e.g. ``"3.3.2"``.
+
+    Thesis: the section headings §2.1–§4.2.
+
+    Parameters
+    ----------
+    text : str
+        The thesis text.
+    line : int
+        A line number of the text (0-based).
+
+    Returns
+    -------
+    str
+        The section number as printed, or ``""`` when no numbered heading of the line's chapter
+        comes before it (the front matter, the Introduction, the Summary).
+    """
+    chap = chapter_at(chapters(text), line)
+    if chap is None:
+        return ""
+    lines = text.splitlines()
+    for i in range(line, chap.start - 1, -1):
+        m = re.match(r"(\d+\.\d+(?:\.\d+)*) [A-Z]", lines[i])
+        if m:
+            return m.group(1)
+    return ""
+
+
 def _section(text: str, title: str) -> tuple[str, Chapter]:
     """The first section heading titled ``title`` (as printed) and the chapter it stands in."""
     chaps = chapters(text)
@@ -279,6 +318,7 @@ class Resolved:
     printed: int
     section: str
     chapter: Chapter
+    where: str = ""
 
 
 def resolve(text: str) -> dict[str, Resolved]:
@@ -295,8 +335,10 @@ def resolve(text: str) -> dict[str, Resolved]:
     Returns
     -------
     dict of str to Resolved
-        ``key ->`` the sentence, the number printed in it, the subject's section heading as printed
-        and the chapter (number and title as headed) it stands in, in the order of :data:`REFERENCES`.
+        ``key ->`` the sentence, the number printed in it, the subject's section heading as printed,
+        the chapter (number and title as headed) that section stands in, and the number of the
+        section the sentence itself stands in (``""`` outside numbered sections: the part's name), in
+        the order of :data:`REFERENCES`.
 
     Raises
     ------
@@ -310,5 +352,6 @@ def resolve(text: str) -> dict[str, Resolved]:
         if len(hits) != 1:
             raise ValueError(f"{key}: {len(hits)} sentences of the {part} with a chapter number and {words!r}")
         heading, chap = _section(text, title)
-        out[key] = Resolved(key, part, hits[0].sentence, hits[0].number, heading, chap)
+        out[key] = Resolved(key, part, hits[0].sentence, hits[0].number, heading, chap,
+                            section_at(text, hits[0].line) or part)
     return out
