@@ -14,7 +14,7 @@ FILES = ["ch2-complexes", "ch2-persistence", "two-circles-landmarks", "two-circl
          "range-patches"]
 #: the errata of the §2.1–2.3 pages, each with a decisive computed check on its page
 PAGE_ERRATA = {"sec-2.1.1-q-vertices-erratum", "ex-2.21-m1-erratum", "sec-2.3.3-alive-erratum",
-               "ex-2.40-m1-erratum", "ex-2.41-ce-ed-erratum"}
+               "ex-2.40-m1-erratum", "ex-2.41-ce-ed-erratum", "sec-2.3.4-row-order-erratum"}
 
 
 @pytest.mark.parametrize("name", FILES)
