@@ -181,6 +181,13 @@ def test_examples_and_figures_interleave_as_in_the_thesis(registry):
     assert lines[("Figure", "3.5")] < lines[("§", "3.4.2")] < lines[("Summary", "")]
 
 
+def test_preface_and_introduction_stand_before_chapter_2(registry):
+    """The unnumbered parts sort at their headings: Preface, Introduction, then the chapters, Summary last."""
+    places = ["Summary", "Example 2.21", "Introduction", "Preface"]
+    text = "".join(_claim(id=f"c{i}", where=w, rtol=0.1) for i, w in enumerate(places))
+    assert [r["where"] for r in registry(text)] == ["Preface", "Introduction", "Example 2.21", "Summary"]
+
+
 def test_order_falls_back_to_numbers_without_the_thesis_text(registry, monkeypatch, tmp_path):
     monkeypatch.setenv("THESIS_LAB_SHARED", str(tmp_path / "no-shared"))
     text = _claim(id="b", where="Figure 3.5", rtol=0.1) + _claim(id="a", where="Example 2.36", rtol=0.1)

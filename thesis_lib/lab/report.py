@@ -253,6 +253,10 @@ _REF = re.compile(r"(Figure|Fig\.|Table|Example|Theorem|Corollary|Lemma|Definiti
 _KINDS = {"Fig.": "Figure", "Eq.": "Eq", "Equation": "Eq"}
 
 
+#: the thesis's unnumbered parts, each indexed at its heading line
+_UNNUMBERED = ("Preface", "Introduction", "Summary")
+
+
 def _index_text(text: str) -> dict[tuple[str, str], int]:
     """Line of each place defined in the thesis text: captions, statements, headings, equation tags."""
     index: dict[tuple[str, str], int] = {}
@@ -267,8 +271,8 @@ def _index_text(text: str) -> dict[tuple[str, str], int]:
         m = _EQUATION.search(line)
         if m:
             index.setdefault(("Eq", m.group(1)), number)
-        if line.strip() == "Summary":
-            index.setdefault(("Summary", ""), number)
+        if line.strip() in _UNNUMBERED:
+            index.setdefault((line.strip(), ""), number)
     return index
 
 
@@ -307,8 +311,7 @@ def place_line(where: str, index: dict[tuple[str, str], int] | None = None) -> t
     """
     index = _thesis_index() if index is None else index
     refs = [(_KINDS.get(k, k), n) for k, n in _REF.findall(where)]
-    if "Summary" in where:
-        refs.append(("Summary", ""))
+    refs += [(name, "") for name in _UNNUMBERED if name in where]
     for ref in refs:
         if ref in index:
             return (index[ref], 0.0)
