@@ -19,7 +19,8 @@ from thesis_lib.lab.paths import shared_dir
 from thesis_lib.morse import checks
 from thesis_lib.morse.morse_complex import chain_complex_homology
 
-ERRATA = {"def-4.9-stable-unstable-swapped", "ex-4.19-chapter-number", "sec-4.2.3-chapter-number"}
+ERRATA = {"def-4.9-stable-unstable-swapped", "ex-4.19-chapter-number", "sec-4.2.3-chapter-number",
+          "ex-4.17-exact-sequence", "ex-4.43-exact-sequence"}
 IDENTITIES = {"thm-4.27-alternating-sum", "prop-4.37-flow-commutes"}
 NOT_REPRODUCIBLE = {"ex-4.23-figure-4.3", "ex-4.35-four-vpaths", "ex-4.43-three-critical-simplices",
                     "ex-4.43-morse-complex", "ex-4.45-two-critical-simplices"}
