@@ -36,6 +36,12 @@ __all__ = [
     "MAX_PRIME",
     "MAX_EXACT_PRIME",
     "MAX_SIMPLICES",
+    "MAX_DIM",
+    "MAX_BYTES",
+    "MAX_WORK",
+    "check_memory",
+    "check_complex_size",
+    "MAX_LABEL",
     "check_real",
     "check_indices",
     "check_simplices",
@@ -52,6 +58,20 @@ MAX_EXACT_PRIME = 3_317_044_064_679_887_385_961_980
 #: default cap on the number of simplices (or samples) a construction may build before it refuses;
 #: about 16 bytes a simplex-vertex, 10^9 simplices is already tens of GB
 MAX_SIMPLICES = 10**9
+
+
+#: the largest homology dimension a function that lists every dimension up to ``max_dim`` accepts
+#: (a barcode's dimensions, persistence diagrams): a simplex of dimension 10⁴ has 2^(10⁴+1) faces
+MAX_DIM = 10_000
+
+#: memory budget of one construction (bytes) for the refusals that estimate memory, not counts:
+#: 8 GiB, a third of this project's 23 GiB build machine and what a laptop can hold
+MAX_BYTES = 8 * 2**30
+
+#: work budget (elementary steps of a compiled loop, about 4·10⁸ a second on one core) for the
+#: constructions whose cost grows exponentially with the simplex size (the Čech complex's exact
+#: enclosing balls): 10¹⁰ steps is about half a minute
+MAX_WORK = 10**10
 
 
 class InvalidTypeError(ValueError, TypeError):
@@ -98,6 +118,83 @@ def check_size(count: int, what: str, *, limit: int = MAX_SIMPLICES) -> int:
     return int(count)
 
 
+def _as_float(value: numbers.Real, name: str, *, hint: str = "") -> float:
+    """``float(value)``; an integer (or fraction) beyond float64's range is refused by name."""
+    try:
+        return float(value)
+    except OverflowError:
+        size = f"an integer of {int(value).bit_length():,} bits" if isinstance(value, numbers.Integral) else "a number"
+        raise ValueError(f"{name} is {size}, beyond float64's range (about 1.8e308){hint}") from None
+
+
+def check_memory(nbytes: float, what: str, *, limit: int = MAX_BYTES) -> None:
+    """Refuse up front a construction whose arrays would take ``nbytes``, more than ``limit``.
+
+    The message gives the estimate in GiB and names what would be allocated (``what``), as
+    :func:`check_size` does for counts.
+    """
+    if nbytes > limit:
+        raise ValueError(f"this would allocate about {nbytes / 2**30:,.3g} GiB for {what}, more than the "
+                         f"memory budget of {limit / 2**30:.3g} GiB; reduce the input or the parameters")
+
+
+#: the largest vertex label: labels are stored as int64
+MAX_LABEL = 2**63 - 1
+
+#: bytes per vertex entry of a closed complex (an int64 in the per-dimension vertex arrays, and the
+#: same face as a row index and a coefficient of a boundary matrix)
+_BYTES_PER_ENTRY = 24
+
+#: steps per vertex entry of a closure, to build it and reduce its boundary matrices (measured:
+#: homology of a simplex of 20 vertices, 10⁷ entries, takes 9 s; morse_matching of 18, 2.4·10⁶, 2 s)
+_STEPS_PER_ENTRY = 400
+
+
+def check_complex_size(simplices, what: str = "the complex"):
+    """Refuse up front a complex whose closure under faces cannot fit in :data:`MAX_BYTES`, or
+    whose building and reduction would take more than :data:`MAX_WORK` steps.
+
+    A simplex of k vertices has 2^k − 1 faces holding k·2^(k−1) vertex entries, so one 27-simplex
+    is 2.7·10⁸ faces and 84 GiB; a 21-simplex (22 vertices, 4.6·10⁷ entries, about 45 s) is over
+    the work budget.  The bound sums this over the given simplices (an upper bound: shared faces
+    are counted once per simplex).  ``Filtration``-like objects (already built) and input that
+    cannot be measured cheaply pass unchanged; the builder validates them.
+
+    Returns
+    -------
+    The input, or a list of it when it was a one-shot iterator (a generator), so the caller can use
+    it again.
+    """
+    if isinstance(simplices, np.ndarray):
+        if simplices.ndim != 2 or simplices.size == 0:
+            return simplices
+        groups = [(int(simplices.shape[1]), int(simplices.shape[0]))]
+    elif isinstance(simplices, (list, tuple)):
+        if simplices and all(isinstance(a, np.ndarray) and a.ndim == 2 for a in simplices):
+            groups = [(int(a.shape[1]), int(a.shape[0])) for a in simplices]
+        else:
+            try:
+                lengths = np.fromiter((len(s) for s in simplices), dtype=np.int64, count=len(simplices))
+            except TypeError:
+                return simplices  # not a list of sequences: the builder says what is wrong
+            counts = np.bincount(lengths) if lengths.size else np.zeros(0, np.int64)
+            groups = [(k, int(c)) for k, c in enumerate(counts) if c and k]
+    elif hasattr(simplices, "__iter__") and not hasattr(simplices, "__len__") and not hasattr(simplices, "simplices"):
+        return check_complex_size(list(simplices), what)
+    else:
+        return simplices
+    faces = sum(c * (2**k - 1) for k, c in groups)
+    entries = sum(c * k * 2 ** (k - 1) for k, c in groups)
+    top = max((k for k, _ in groups), default=0)
+    where = f"the closure of {what} under faces (up to {faces:,} faces; its largest simplex has {top} vertices)"
+    check_memory(entries * _BYTES_PER_ENTRY, where)
+    if entries * _STEPS_PER_ENTRY > MAX_WORK:
+        raise ValueError(f"{where[0].upper()}{where[1:]} would take about {entries * _STEPS_PER_ENTRY:.2g} steps to "
+                         f"build and reduce, more than the work budget of {MAX_WORK:.0e} (about half a minute); "
+                         "reduce the input")
+    return simplices
+
+
 def check_radius(max_radius, name: str = "max_radius") -> float:
     """A scale parameter ε: a non-negative number (``inf`` allowed: no bound).
 
@@ -105,7 +202,7 @@ def check_radius(max_radius, name: str = "max_radius") -> float:
     """
     if isinstance(max_radius, bool) or not isinstance(max_radius, numbers.Real):
         raise InvalidTypeError(f"{name} must be a number, got {max_radius!r}")
-    r = float(max_radius)
+    r = _as_float(max_radius, name, hint="; use inf for no bound")
     if math.isnan(r):
         raise ValueError(f"{name} is NaN")
     if r < 0:
@@ -113,21 +210,25 @@ def check_radius(max_radius, name: str = "max_radius") -> float:
     return r
 
 
-def check_max_dim(max_dim, name: str = "max_dim") -> int:
-    """A largest simplex dimension: an integer >= 0."""
-    return check_int(max_dim, name, minimum=0)
+def check_max_dim(max_dim, name: str = "max_dim", *, maximum: int | None = None) -> int:
+    """A largest simplex dimension: an integer >= 0 (and <= ``maximum`` when given, e.g.
+    :data:`MAX_DIM` where every dimension up to it is allocated)."""
+    return check_int(max_dim, name, minimum=0, maximum=maximum)
 
 
 # ---------------------------------------------------------------------------------------- points
 def _float_array(value, kind: str, message: str) -> np.ndarray:
     """``value`` as a float64 array; :class:`InvalidTypeError` ``"<message>: <reason>"`` for complex
     numbers (``kind``: what they are not) or anything that is not numeric."""
+    if isinstance(value, (str, bytes, dict, set, frozenset)) or value is None:
+        raise InvalidTypeError(f"{message}: got {'None' if value is None else 'a ' + type(value).__name__}")
     try:
         if np.iscomplexobj(value):
             raise TypeError(f"complex numbers are not {kind}")
         return np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as err:
-        raise InvalidTypeError(f"{message}: {err}") from None
+        why = "its rows have different lengths (a ragged list)" if "inhomogeneous" in str(err) else str(err)
+        raise InvalidTypeError(f"{message}: {why}") from None
 
 
 def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> np.ndarray:
@@ -155,8 +256,9 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
 
 def as_distance_matrix(distance_matrix) -> np.ndarray:
     """A dense distance matrix: a non-empty square, symmetric float64 array without NaN or negative
-    entries (C-contiguous), or a ``ValueError`` saying what is wrong."""
-    dm = np.asarray(distance_matrix, dtype=np.float64)
+    entries (C-contiguous), or a ``ValueError`` saying what is wrong (an :class:`InvalidTypeError`
+    for a string, a dict, a ragged list or anything that is not numbers)."""
+    dm = _float_array(distance_matrix, "distances", "distance_matrix must be an (n, n) array of numbers")
     if dm.ndim != 2 or dm.shape[0] != dm.shape[1] or dm.shape[0] == 0:
         raise ValueError(f"distance_matrix must be a non-empty square (n, n) array, got shape {dm.shape}")
     if np.isnan(dm).any():
@@ -270,7 +372,7 @@ def check_real(value, name: str, *, minimum: float | None = None, positive: bool
     ``> 0`` with ``positive``, ``>= minimum`` when given."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise InvalidTypeError(f"{name} must be a number, got {value!r}")
-    x = float(value)
+    x = _as_float(value, name)
     if math.isnan(x):
         raise ValueError(f"{name} is NaN")
     if finite and math.isinf(x):

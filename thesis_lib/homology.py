@@ -18,7 +18,7 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ._validate import MAX_EXACT_PRIME, check_coefficients
+from ._validate import MAX_EXACT_PRIME, MAX_LABEL, check_coefficients, check_complex_size, vertex_label
 from .filtration import Filtration, as_complex
 from .simplicial import boundary_matrix
 from .smith import reduce_matrix, smith_normal_form
@@ -34,8 +34,47 @@ __all__ = [
 
 
 def _complex(simplices: Filtration | Iterable[Sequence[int]] | np.ndarray) -> list[np.ndarray]:
-    """The closed complex as one sorted vertex array per dimension (Definition 2.4)."""
-    return as_complex(simplices).simplices
+    """The closed complex as one sorted vertex array per dimension (Definition 2.4).
+
+    Refused up front: a closure beyond the memory budget (``check_complex_size``), an array of
+    objects that are not integers, and vertex labels beyond int64 (>= 2⁶³).
+    """
+    simplices = _labels_fit(check_complex_size(simplices, "the complex"))
+    try:
+        return as_complex(simplices).simplices
+    except (ValueError, TypeError, OverflowError):
+        _labels_fit(simplices, scan=True)  # a clearer message when a label is the cause
+        raise
+
+
+def _labels_fit(simplices, *, scan: bool = False):
+    """``simplices`` with object or unsigned arrays as int64, or a ValueError naming a label that
+    is not an integer or does not fit in int64; ``scan``: also look through nested sequences."""
+    if isinstance(simplices, np.ndarray):
+        if simplices.dtype.kind == "u" and simplices.size and int(simplices.max()) > MAX_LABEL:
+            raise ValueError(f"vertex label {int(simplices.max())} does not fit in int64 (labels must be < 2^63)")
+        if simplices.dtype == object:
+            flat = simplices.ravel().tolist()
+            for v in flat:
+                _one_label(v)
+            return np.array(flat, dtype=np.int64).reshape(simplices.shape)
+        return simplices
+    if scan and isinstance(simplices, (list, tuple)):
+        for s in simplices:
+            if isinstance(s, np.ndarray):
+                _labels_fit(s)
+            elif isinstance(s, (list, tuple)):
+                for v in s:
+                    if not isinstance(v, (list, tuple, np.ndarray)):
+                        _one_label(v)
+    return simplices
+
+
+def _one_label(v) -> int:
+    label = vertex_label(v)
+    if label > MAX_LABEL:
+        raise ValueError(f"vertex label {label} does not fit in int64 (labels must be < 2^63)")
+    return label
 
 
 def boundary_matrices(complex_arrays: list[np.ndarray], coefficients: int = 0) -> list[sp.csc_matrix]:

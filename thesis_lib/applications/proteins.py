@@ -449,10 +449,17 @@ def protein_filtration(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike, r_c: 
     Raises
     ------
     ValueError
-        As :func:`weighted_points`, or ``r_c`` larger than the smallest radius.
+        As :func:`weighted_points`, or ``r_c`` larger than the smallest radius (or so large that
+        r_c² overflows); ``r_c`` not a number (a string, None: an ``InvalidTypeError``), NaN,
+        infinite or negative.
     """
+    from .._validate import check_real
     from ..complexes.alpha import alpha
 
+    r_c = check_real(r_c, "r_c", minimum=0.0)  # '0.5', None, NaN, inf and negatives refused by name
+    if r_c * r_c == np.inf:
+        raise ValueError(f"r_c = {r_c:.3g} is too large: r_c² leaves float64's range (about 1.8e308); "
+                         "r_c must be at most the smallest radius")
     points, weights = weighted_points(atoms, radii, r_c)
     if np.any(weights < 0):
         raise ValueError(f"r_c = {r_c} exceeds the smallest radius {float(np.min(radii)):.3f}: negative weights")

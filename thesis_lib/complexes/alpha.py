@@ -21,6 +21,7 @@ import numpy.typing as npt
 from ..filtration import Filtration
 from ..jit import njit
 from ..simplicial import facets, find_rows, row_keys
+from .delaunay import check_delaunay_size
 from .orthoballs import attached, orthoballs
 from .scaling import unscale_values
 from .triangulation import lexicographic, lexicographic_order, prepare_geometry, triangulate
@@ -144,8 +145,10 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     are exactly rounded where floating point could lose digits and attachment is decided exactly,
     so simplices and values equal GUDHI's ``AlphaComplex(..., precision="exact")`` (values to
     about 1e-13 relative).  Coordinates of any magnitude are scaled by a power of two first;
-    values that do not fit in float64 raise ``ValueError``.
+    values that do not fit in float64 raise ``ValueError``.  A complex estimated above
+    :data:`~thesis_lib.complexes.delaunay.MAX_DELAUNAY_SIMPLICES` simplices is refused up front.
     """
+    check_delaunay_size(points)
     geo, e = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))
     weighted = weights is not None

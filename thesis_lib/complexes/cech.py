@@ -5,12 +5,13 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points, check_max_dim, check_radius
+from .._validate import MAX_WORK, as_points, check_max_dim, check_radius
 from ..filtration import Filtration
 from ..jit import njit
 from ..simplicial import facets, find_rows
 from ._flag import check_expansion, edges_within, expand_level, upper_csr
 from .miniball import meb_radius_small
+from .rips import check_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["cech"]
@@ -26,6 +27,25 @@ def _meb_radii(points, simplices):
             buf[i] = points[simplices[r, i]]
         out[r] = meb_radius_small(buf)
     return out
+
+
+def _check_work(indptr: np.ndarray, max_dim: int) -> None:
+    """Refuse up front a Čech complex whose exact enclosing balls would take more than ``MAX_WORK``.
+
+    The enclosing radius of a simplex of k vertices tries its 2^k subsets, each a k × k solve
+    (about 2^k·k³ steps); the candidates of dimension d number at most Σ_v C(deg⁺(v), d) (as in
+    ``check_expansion``).  18 points at ε = ∞ with max_dim = 17 are 7·10¹¹ steps (hours), 13 points
+    1.2·10⁹ (3 s).
+    """
+    from scipy.special import comb
+
+    deg = np.diff(indptr)
+    top = min(int(max_dim), int(deg.max(initial=0)))
+    work = sum(float(np.sum(comb(deg, d, exact=False))) * 2.0 ** (d + 1) * (d + 1) ** 3 for d in range(2, top + 1))
+    if work > MAX_WORK:
+        raise ValueError(f"the exact enclosing balls of the simplices of dimension 2 to {max_dim} would take about "
+                         f"{work:.2g} steps (each simplex of k vertices tries its 2^k subsets), more than the "
+                         f"budget of {MAX_WORK:.0e} (about half a minute): lower max_radius or max_dim")
 
 
 def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
@@ -61,11 +81,13 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
     simplices = [np.arange(n, dtype=np.int64).reshape(n, 1)]
     values = [np.zeros(n)]
     if max_dim >= 1:
+        check_edges(n, 2.0 * eps, points=pts)
         edges, lengths = edges_within(pts, 2.0 * eps)
         simplices.append(edges)
         values.append(lengths * 0.5)
         indptr, indices, vals = upper_csr(n, edges, lengths * 0.5)
         check_expansion(indptr, max_dim)
+        _check_work(indptr, max_dim)
         for d in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break

@@ -24,6 +24,7 @@ weights and their lexicographic ranks, and answers the predicates for arrays of 
 
 from __future__ import annotations
 
+import math
 from itertools import combinations
 from math import factorial
 
@@ -36,6 +37,12 @@ __all__ = ["Geometry", "ScalarPredicates", "expand_det", "UNIT"]
 
 #: unit roundoff of float64
 UNIT = 2.0**-53
+
+#: the refusal when an exact orthogonal sphere (a radius or a centre) leaves float64's range
+_RANGE_MESSAGE = ("an orthogonal sphere of these weighted points has a squared radius or centre beyond "
+                  "float64's range (about 1.8e308) at the points' scale (largest weight {biggest:.3g} after "
+                  "scaling the largest coordinate to [0.5, 1)): the weights are too large for the spread of "
+                  "the points; rescale the weights or the points")
 
 
 # ------------------------------------------------------------------------------ determinants
@@ -431,7 +438,9 @@ class Geometry:
         scale = 2.0**k
         big = max(float(np.abs(self.points[idx]).max(initial=0.0)) * scale,
                   float(np.sqrt(np.abs(self.weights[idx]).max(initial=0.0))) * scale, 1.0)
-        if terms * (2.0 * big) ** degree >= 2.0**60:  # margin for the float estimate of the bound
+        # margin for the float estimate of the bound; in logarithms, so weights near the float range
+        # (1e150 and up, raised to the degree) mean "not int64", never an OverflowError
+        if math.log2(terms) + degree * math.log2(2.0 * big) >= 60.0:
             return None
         x = self.mantissas[idx] << (k - pe)
         w = self.weight_mantissas[idx] << (2 * k - we)
@@ -602,10 +611,13 @@ class Geometry:
         x0, w0 = x[:, 0, :], w[:, 0]
         den = (4 * g * g).tolist()
         top = ((num * num).sum(axis=1) - 4 * g * g * w0).tolist()
-        r2 = np.array([t / (dd << (2 * k)) for t, dd in zip(top, den)], dtype=np.float64)
         cnum = (2 * g[:, None] * x0 + num).tolist()
         cden = (2 * g).tolist()
-        centre = np.array([[c / (dd << k) for c in row] for row, dd in zip(cnum, cden)], dtype=np.float64)
+        try:
+            r2 = np.array([t / (dd << (2 * k)) for t, dd in zip(top, den)], dtype=np.float64)
+            centre = np.array([[c / (dd << k) for c in row] for row, dd in zip(cnum, cden)], dtype=np.float64)
+        except OverflowError:
+            raise ValueError(_RANGE_MESSAGE.format(biggest=float(np.abs(self.weights).max(initial=0.0)))) from None
         return centre.reshape(m, self.d), r2
 
     def power_exact(self, faces: np.ndarray, y: np.ndarray) -> np.ndarray:

@@ -5,12 +5,40 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_distance_matrix, as_points, check_max_dim, check_radius
+from .._validate import MAX_SIMPLICES, as_distance_matrix, as_points, check_max_dim, check_radius, check_size
 from ..filtration import Filtration
 from ._flag import edges_within, flag_levels, matrix_edges
 from .scaling import scaled, unscale_values
 
-__all__ = ["rips"]
+__all__ = ["rips", "check_edges"]
+
+
+def check_edges(n: int, threshold: float, *, points: np.ndarray | None = None,
+                matrix: np.ndarray | None = None) -> None:
+    """Refuse up front an edge list of more than ``MAX_SIMPLICES`` edges (24 bytes each, plus the
+    search's own arrays): 10⁵ points at ε = ∞ are 5·10⁹ edges, 6·10⁴ points in a unit cube at
+    radius 10 are 1.8·10⁹.
+
+    Only when n(n − 1)/2 exceeds the limit are the pairs within ``threshold`` counted (a k-d tree
+    count for points, a blocked count for a matrix), so ordinary inputs pay nothing.
+    """
+    pairs = n * (n - 1) // 2
+    if pairs <= MAX_SIMPLICES:
+        return
+    count = pairs
+    if np.isfinite(threshold):
+        if points is not None:
+            from scipy.spatial import cKDTree
+
+            tree = cKDTree(points)
+            count = (int(tree.count_neighbors(tree, threshold * (1 + 1e-12))) - n) // 2
+        else:
+            count = 0
+            for start in range(0, n, 1024):
+                block = matrix[start : start + 1024]
+                count += int(np.count_nonzero(block <= threshold))
+            count = (count - n) // 2
+    check_size(count, f"edges ({n:,} points at this radius, about {24 * count / 2**30:,.3g} GiB)")
 
 
 def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
@@ -42,6 +70,8 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
     if distance_matrix is not None:
         dm = as_distance_matrix(distance_matrix)
         n = dm.shape[0]
+        if max_dim >= 1:
+            check_edges(n, 2.0 * eps, matrix=dm)
         edges, lengths = matrix_edges(dm, 2.0 * eps) if max_dim >= 1 else none
     else:
         # work on points scaled by a power of two (no overflow of squared distances near 1e160,
@@ -50,6 +80,8 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
         n = pts.shape[0]
         with np.errstate(over="ignore"):
             threshold = float(np.ldexp(2.0 * eps, e))
+        if max_dim >= 1:
+            check_edges(n, threshold, points=pts)
         edges, lengths = edges_within(pts, threshold) if max_dim >= 1 else none
         lengths = unscale_values(lengths, -e, "edge lengths")
     simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points, check_indices, check_int, check_max_dim, check_radius
+from .._validate import as_points, check_indices, check_int, check_max_dim, check_memory, check_radius
 from ..filtration import Filtration
 from ..jit import load_numba, njit, prange
 from ._flag import flag_levels, lower_bound, matrix_edges
@@ -59,9 +59,19 @@ def witness_offsets(points: npt.ArrayLike, landmarks: npt.ArrayLike, nu: int = 1
     -------
     ndarray, shape (L, N)
     """
+    return _offsets(points, landmarks, nu, 0)
+
+
+def _offsets(points, landmarks, nu, per_pair: int) -> np.ndarray:
+    """:func:`witness_offsets`, refused up front when its L × N matrix (twice: the distances and the
+    partition finding m(x)), and ``per_pair`` bytes per pair of landmarks for the caller's L × L
+    arrays, exceed the memory budget (5·10⁴ landmarks of 2·10⁵ points: 149 GiB)."""
     pts = as_points(points)
     lm = _check_landmarks(pts, landmarks)
     nu = _check_nu(nu, lm.size)
+    n_l, n_x = lm.size, pts.shape[0]
+    check_memory(16.0 * n_l * n_x + float(per_pair) * n_l * n_l,
+                 f"the witness distances of {n_l:,} landmarks and {n_x:,} points")
     pts, e = scaled(pts)  # power-of-two scaling: squared distances neither overflow nor underflow
     lpts = pts[lm]
     # |l - x|² expanded is cheaper but loses accuracy near 0; chunked direct differences instead
@@ -286,7 +296,7 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    D = np.ascontiguousarray(witness_offsets(points, landmarks, nu))
+    D = np.ascontiguousarray(_offsets(points, landmarks, nu, 16))  # + the L × L edge values and witnesses
     n_l = D.shape[0]
     simplices = [np.arange(n_l, dtype=np.int64).reshape(n_l, 1)]
     values = [np.zeros(n_l)]
@@ -331,7 +341,7 @@ def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: fl
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    D = np.ascontiguousarray(witness_offsets(points, landmarks, nu))
+    D = np.ascontiguousarray(_offsets(points, landmarks, nu, 16))
     ev, _ = _edge_values(D)
     edges, vals = matrix_edges(np.maximum(ev, 0.0), eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
     simplices, values = flag_levels(D.shape[0], edges, vals, max_dim)

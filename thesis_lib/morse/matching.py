@@ -13,7 +13,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_seed
+from .._validate import check_complex_size, check_seed
 from ._cells import CellComplex, ComplexLike, Pairs, Simplex, cell_complex, pairs_from_partner, partner_array
 from ._kernels import greedy_partner
 
@@ -145,7 +145,7 @@ def morse_matching(
     if method not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
     seed = check_seed(seed, optional=True)
-    cx = cell_complex(simplices)
+    cx = cell_complex(check_complex_size(simplices, "the complex"))
     if method == "lower-star":
         if values is None:
             raise ValueError("method 'lower-star' needs vertex values")

@@ -54,7 +54,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._unionfind import find as _find
-from .._validate import as_distance_matrix, as_points, check_max_dim, check_radius, resolve_coefficients
+from .._validate import MAX_DIM, as_distance_matrix, as_points, check_max_dim, check_radius, resolve_coefficients
 from ..jit import load_numba, njit, prange
 from .barcode import Barcode
 from .kernels import grow, heap_pop, heap_push, heap_replace_top, merge_entries, mod_inverse
@@ -1045,12 +1045,20 @@ def rips_persistence(
     Barcode
         The same intervals as ``persistence(rips(points, max_radius, max_dim), coefficients)`` in
         dimensions 0 .. max_dim − 1 (zero-length intervals left out).
+
+    Raises
+    ------
+    ValueError
+        ``max_dim`` below 1 or above :data:`~thesis_lib._validate.MAX_DIM` (10⁴; dimensions above
+        the number of points are computed as the empty homology they are), a non-prime
+        ``coefficients``, or invalid points / distances.
     """
-    max_dim = check_max_dim(max_dim)
+    max_dim = check_max_dim(max_dim, maximum=MAX_DIM)
     if max_dim < 1:
         raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
     p = resolve_coefficients(coefficients, None, default=2, field=True)
     n, indptr, nbr, length = rips_graph(points, max_radius=max_radius, distance_matrix=distance_matrix)
+    asked, max_dim = max_dim, min(max_dim, n + 1)  # no simplex has more than n vertices: H_k = 0 for k >= n
     if math.comb(n, max_dim + 1) >= 2**62:
         raise ValueError(f"{n} points with max_dim={max_dim}: simplex indices would overflow 64 bits")
     B = _binomials(np.int64(n), np.int64(max_dim + 1))
@@ -1100,4 +1108,4 @@ def rips_persistence(
             cand_i, cand_d = all_i[mask], all_d[mask]
     for d in intervals:
         intervals[d] = intervals[d] * 0.5  # diameters -> ε
-    return Barcode(intervals, range(max_dim), p=p)
+    return Barcode(intervals, range(asked), p=p)
