@@ -95,3 +95,74 @@ def test_properties(seed, n, dim):
     shifted = smallest_enclosing_ball(pts + 3.0)
     assert shifted[1] == pytest.approx(r, rel=1e-9, abs=1e-12)
     np.testing.assert_allclose(shifted[0], c + 3.0, rtol=1e-7, atol=1e-7 * max(r, 1))
+
+
+# ----------------------------------------------------------------------------- extreme scales (issue 21)
+def _exact_radius(pts, digits=60):
+    """The smallest enclosing radius of ``pts`` by subset search in mpmath (``digits`` digits)."""
+    import itertools
+
+    import mpmath
+
+    mpmath.mp.dps = digits
+    P = [[mpmath.mpf(float(v)) for v in row] for row in pts]
+    n, d = len(P), len(P[0])
+    best = None
+    for k in range(1, d + 2):
+        for sub in itertools.combinations(range(n), k):
+            p0 = P[sub[0]]
+            a = [[P[i][t] - p0[t] for t in range(d)] for i in sub[1:]]
+            if a:
+                gram = mpmath.matrix([[2 * sum(x * y for x, y in zip(u, v)) for v in a] for u in a])
+                rhs = mpmath.matrix([sum(x * x for x in u) for u in a])
+                try:
+                    lam = mpmath.lu_solve(gram, rhs)
+                except ZeroDivisionError:
+                    continue
+                c = [p0[t] + sum(lam[i] * a[i][t] for i in range(len(a))) for t in range(d)]
+            else:
+                c = list(p0)
+            r2 = sum((c[t] - p0[t]) ** 2 for t in range(d))
+            if all(sum((q[t] - c[t]) ** 2 for t in range(d)) <= r2 * (1 + mpmath.mpf(10) ** (-40)) for q in P):
+                best = r2 if best is None else min(best, r2)
+    return mpmath.sqrt(best)
+
+
+@pytest.mark.parametrize("k", [1000, 600, 0, -600, -1000, -1040, -1060, -1068])
+@pytest.mark.parametrize("dim", [2, 3])
+def test_extreme_scales_contain_every_point_and_give_the_scaled_radius(dim, k):
+    """Regression (issue 21): at 1e300 the ball did not contain every point (the search's tolerance
+    let points 1e-12 outside); at tiny scales the radius is the exact one scaled by 2^k, up to the
+    rounding of the centre among the subnormal numbers.  Checked exactly (fractions) and against a
+    60-digit reference."""
+    from fractions import Fraction
+
+    import mpmath
+
+    rng = np.random.default_rng(1000 * dim + k)
+    for trial in range(3):
+        unit = rng.random((7, dim))
+        pts = np.ldexp(unit, k)
+        if not np.array_equal(np.ldexp(pts, -k), unit):  # subnormal: the input itself is rounded
+            unit = np.ldexp(pts, -k)
+        centre, r = smallest_enclosing_ball(pts)
+        fc, fr = [Fraction(float(v)) for v in centre], Fraction(r)
+        for p in pts:  # the ball contains every point, exactly
+            assert sum((Fraction(float(x)) - c) ** 2 for x, c in zip(p, fc)) <= fr * fr
+        exact = _exact_radius(unit) * mpmath.mpf(2) ** k  # the radius scales with the points
+        spacing = float(np.ldexp(1.0, -1074)) if r < 2.0**-1000 else 0.0  # subnormal numbers' spacing
+        assert mpmath.mpf(r) >= exact * (1 - mpmath.mpf(2) ** -60)
+        assert mpmath.mpf(r) - exact <= exact * 2e-15 + 2 * dim * spacing, (trial, r, exact)
+
+
+def test_all_points_equal_at_tiny_scales_have_radius_zero():
+    for v in (1e-300, 5e-324, 1e300, -2.0**-1060):
+        assert smallest_enclosing_ball([[v, v]] * 4)[1] == 0.0
+    assert smallest_enclosing_ball([[0.0, 0.0], [5e-324, 0.0]])[1] == 5e-324  # 2.5e-324 rounded up
+
+
+def test_a_radius_beyond_the_float_range_is_refused():
+    m = np.finfo(np.float64).max
+    with pytest.raises(ValueError, match="radius of the smallest enclosing ball exceeds float64's range"):
+        smallest_enclosing_ball([[m, m, m], [-m, -m, -m]])
+    assert smallest_enclosing_ball([[m, 0.0], [-m, 0.0]])[1] == m  # the largest radius that fits

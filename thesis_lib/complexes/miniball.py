@@ -91,7 +91,16 @@ def smallest_enclosing_ball(points: npt.ArrayLike, seed: int = 0) -> tuple[np.nd
     Returns
     -------
     centre : (d,) array.
-    radius : float.
+    radius : float
+        The largest distance from ``centre`` (as returned) to a point, rounded up: the closed ball
+        contains every point exactly, at any scale (1e300, 1e-300, subnormal coordinates), and the
+        radius exceeds the exact smallest one by a few units in the last place (at subnormal scales,
+        by the spacing of the subnormal numbers, in which the centre is rounded).
+
+    Raises
+    ------
+    ValueError
+        Invalid points, or a radius beyond float64's range (points near ±1.8e308 in several axes).
     """
     pts, e = scaled(as_points(points))  # power-of-two scaling: squared distances stay finite
     n, dim = pts.shape
@@ -99,8 +108,48 @@ def smallest_enclosing_ball(points: npt.ArrayLike, seed: int = 0) -> tuple[np.nd
     work = pts[order].copy()
     scale = float(np.max(np.abs(work - work[0]))) if n > 1 else 0.0
     tol = 1e-12 * max(scale, 1e-300) ** 2
-    centre, r2 = _mtf(work, n, [], dim, tol)
-    return np.ldexp(centre, -e), float(np.ldexp(np.sqrt(max(r2, 0.0)), -e))
+    centre, _ = _mtf(work, n, [], dim, tol)
+    with np.errstate(under="ignore"):
+        out = np.ldexp(centre, -e)  # exact, except where it falls among the subnormal numbers
+    return out, _radius_around(pts, np.ldexp(out, e), e)
+
+
+def _radius_around(pts: np.ndarray, centre: np.ndarray, e: int) -> float:
+    """The largest distance from ``centre`` to the (scaled) points, rounded up, scaled by 2^(−e).
+
+    The search accepts points up to its tolerance outside its ball, so the radius is measured
+    again: the differences, squares and sum carry a relative error below (d + 3)·u (no
+    cancellation: all terms are non-negative), so the distance times 1 + 2(d + 4)·u is an upper
+    bound; scaling back rounds upwards where the result is subnormal.
+    """
+    diff = pts - centre
+    d = float(np.sqrt(np.max(np.einsum("ij,ij->i", diff, diff))))
+    if d == 0.0:
+        return 0.0
+    up = d * (1.0 + 2.0 * (pts.shape[1] + 4) * 2.0**-53)
+    with np.errstate(over="ignore", under="ignore"):
+        r = float(np.ldexp(up, -e))
+        if not np.isfinite(r) or r < np.finfo(np.float64).tiny:
+            # at the ends of the float range (subnormal, or the bound of the error estimate past
+            # 1.8e308): the smallest float that holds every point, decided exactly
+            return _smallest_containing(pts, centre, e, float(np.ldexp(d, -e)))
+    return r
+
+
+def _smallest_containing(pts: np.ndarray, centre: np.ndarray, e: int, start: float) -> float:
+    """The smallest float from ``start``'s predecessor up whose ball about ``centre`` (scaled by
+    2^(−e)) holds every point, decided exactly with fractions (a few candidates; only at the ends
+    of the float range)."""
+    from fractions import Fraction
+
+    c = [Fraction(float(v)) for v in centre]
+    far = max(sum((Fraction(float(x)) - cv) ** 2 for x, cv in zip(p, c)) for p in pts) / Fraction(2) ** (2 * e)
+    r = float(np.nextafter(start, 0.0))
+    while np.isfinite(r) and Fraction(r) ** 2 < far:
+        r = float(np.nextafter(r, np.inf))
+    if not np.isfinite(r):
+        raise ValueError("the radius of the smallest enclosing ball exceeds float64's range (about 1.8e308)")
+    return r
 
 
 @njit(cache=True)
