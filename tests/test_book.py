@@ -2,7 +2,9 @@
 
 The book is built once for this module from the stored (executed) notebooks, with the book's own
 configuration (warnings are errors), into a temporary folder. The pages are then opened in headless
-Chromium with no network: a harness page loads each one in a frame and reports what it sees.
+Chromium with no network: a harness page loads each one in a frame of 1280 × 1000 CSS pixels (a
+desktop viewport) and reports what it sees: tables, math, raw LaTeX left in the text, anything wider
+than the article's column, the smallest text of each figure at its shown width, console errors.
 """
 
 from __future__ import annotations
