@@ -23,6 +23,7 @@ from ..jit import njit
 from ..simplicial import facets, find_rows, row_keys
 from .delaunay import check_delaunay_size
 from .orthoballs import attached, orthoballs
+from .predicates import UNIT
 from .scaling import unscale_values
 from .triangulation import lexicographic, lexicographic_order, prepare_geometry, triangulate
 
@@ -161,7 +162,12 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
         if k == 0 and not weighted:
             values[0] = np.zeros(lower.shape[0])
             continue
-        ball = orthoballs(geo, lower)
+        centre, r2, err, exact = orthoballs(geo, lower)
+        # the float centres' error estimate covers the solve for the offset from a vertex, not the
+        # rounding of vertex + offset (up to u·|c|), which dominates for a simplex far smaller than
+        # its distance from the origin (points a few ulps apart): without it the attachment filter
+        # trusted a wrong sign
+        ball = (centre, r2, err + UNIT * np.sqrt((centre * centre).sum(axis=1)), exact)
         upper = levels[k + 1]
         fidx = fidx_of[k + 1]
         # column i of fidx is the facet omitting vertex i, so upper[:, i] is its opposite vertex
