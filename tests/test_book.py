@@ -361,6 +361,8 @@ function rawLatex(doc) {
     for (const m of text.matchAll(RAW_TEX))
       found.push(JSON.stringify(m[0]) + " in " + where(parent) + ": \u2026" + snippet(text, m.index, 40) + "\u2026");
   }
+  for (const m of doc.title.matchAll(RAW_TEX))   // the browser tab's title
+    found.push(JSON.stringify(m[0]) + " in the title: " + JSON.stringify(doc.title));
   return found;
 }
 // anything wider than the article's text column
