@@ -28,6 +28,7 @@ import json
 import math
 import re
 from collections import Counter
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -261,6 +262,7 @@ def _index_text(text: str) -> dict[tuple[str, str], int]:
     """Line of each place defined in the thesis text: captions, statements, headings, equation tags."""
     index: dict[tuple[str, str], int] = {}
     for number, line in enumerate(text.splitlines()):
+        line = line.lstrip()  # the text indents some statements and headings by a space
         m = _DEFINED.match(line)
         if m:
             kind, num = (m.group(1), m.group(2)) if m.group(1) else (m.group(3), m.group(4))
@@ -495,7 +497,8 @@ def compared_as(claim: Claim) -> str:
             if claim.correct is None:
                 text = _condition(claim, thesis)
             else:
-                text = f"{_condition(claim, thesis, tolerance=False)}; corrected {_condition(claim, claim.reference('correct'))}"
+                corrected = _condition(claim, claim.reference("correct"))
+                text = f"{_condition(claim, thesis, tolerance=False)}; corrected {corrected}"
         except ClaimError:
             return "—"
     return text + " (ours)" if claim.own_tolerance else text
@@ -800,7 +803,8 @@ def _place(row: dict[str, object], link_suffix: str) -> str:
     return f"[{row['where']}]({page}{link_suffix}#{label})"
 
 
-def errata_markdown(rows: list[dict[str, object]] | None = None, *, place=None) -> str:
+def errata_markdown(rows: list[dict[str, object]] | None = None, *,
+                    place: Callable[[dict[str, object]], str] | None = None) -> str:
     """The errata as a Markdown table: thesis place, as printed, corrected, decisive check, ours.
 
     Thesis: the errata of every chapter, each beside its correction.
