@@ -10,7 +10,6 @@ from thesis_lib.lab import cli, report
 from thesis_lib.lab.paths import shared_dir
 from thesis_lib.lab.report import ClaimError
 
-
 ROW_FIELDS = {"id", "where", "thesis", "ours", "status", "compared_as", "note", "provenance", "section", "link",
               "correct", "corrected", "check", "by_construction", "own_tolerance", "not_comparable"}
 

@@ -19,8 +19,9 @@ from pathlib import Path
 
 from .paths import shared_dir
 
-__all__ = ["Chapter", "Reference", "Resolved", "REFERENCES", "FRONT_AND_SUMMARY", "THESIS_TEXT", "read_thesis", "chapters", "chapter_at",
-           "part_lines", "numbering_disagreements", "chapter_references", "section_chapter", "section_at", "resolve"]
+__all__ = ["Chapter", "Reference", "Resolved", "REFERENCES", "FRONT_AND_SUMMARY", "THESIS_TEXT", "read_thesis",
+           "chapters", "chapter_at", "part_lines", "numbering_disagreements",
+           "chapter_references", "section_chapter", "section_at", "resolve"]
 
 THESIS_TEXT = "botnan-2011-three-approaches.txt"
 
