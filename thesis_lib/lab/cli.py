@@ -312,15 +312,6 @@ def _main(argv: list[str] | None) -> int:
             _err(f"error: --project {args.project!r} is not a thesis-lab project: it {why}")
             return 2
         os.environ[PROJECT_ENV] = os.path.abspath(args.project)
-    else:
-        for var in (PROJECT_ENV, "THESIS_LAB_ROOT"):
-            named = os.environ.get(var)
-            if named and not is_project(os.path.expanduser(named)):
-                _err(f"error: {var}={named!r} is not a thesis-lab project (it has no experiments/ and "
-                     "data/manifest.toml); unset it or name the project folder")
-                return 2
-            if named:
-                break
     try:
         code = args.func(args)
         sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
