@@ -138,7 +138,8 @@ def test_distance_matrices_of_the_wrong_kind_are_refused_by_name(dm, message):
 def test_edge_lists_beyond_the_limit_are_refused_before_allocating():
     """Regression (issue 21): 10⁵ points at ε = ∞ and 6·10⁴ in R³ at radius 10 died of MemoryError."""
     many = RNG.random((100_000, 2))
-    for fn in (lambda: cx.rips(many, max_radius=np.inf, max_dim=1), lambda: cx.cech(many, np.inf, 1)):
+    for fn in (lambda: cx.rips(many, max_radius=np.inf, max_dim=1), lambda: cx.cech(many, np.inf, 1),
+               lambda: rips_persistence(many, max_dim=1)):
         with pytest.raises(ValueError, match=r"would build 4,999,950,000 edges .* about 112 GiB.*limit of 1,000,000,000"):
             fn()
     with pytest.raises(ValueError, match=r"would build 1,799,970,000 edges \(60,000 points"):

@@ -103,9 +103,11 @@ def rips_graph(
     ------
     ValueError
         Both or neither of ``points`` and ``distance_matrix``; a bad radius, point cloud or
-        distance matrix (not square, NaN, negative or asymmetric entries).
+        distance matrix (not square, NaN, negative or asymmetric entries); more edges than
+        ``MAX_SIMPLICES`` (refused before they are listed, ``complexes.rips.check_edges``).
     """
     from ..complexes._flag import edges_within, matrix_edges
+    from ..complexes.rips import check_edges
 
     eps = check_radius(max_radius)
     threshold = 2.0 * eps
@@ -114,6 +116,8 @@ def rips_graph(
     if points is not None:
         pts = np.ascontiguousarray(as_points(points))
         n = pts.shape[0]
+        with np.errstate(over="ignore"):
+            check_edges(n, threshold, points=pts)  # 10⁵ points at ε = ∞: 5·10⁹ edges, refused up front
         edges, lengths = edges_within(pts, threshold)
     elif hasattr(distance_matrix, "tocoo"):  # scipy.sparse
         coo = distance_matrix.tocoo()
@@ -138,6 +142,7 @@ def rips_graph(
     else:
         dm = as_distance_matrix(distance_matrix)
         n = dm.shape[0]
+        check_edges(n, threshold, matrix=dm)
         edges, lengths = matrix_edges(dm, threshold)
     return (n, *_csr(n, np.asarray(edges, np.int64).reshape(-1, 2), np.asarray(lengths, np.float64)))
 
