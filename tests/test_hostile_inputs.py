@@ -140,7 +140,8 @@ def test_edge_lists_beyond_the_limit_are_refused_before_allocating():
     many = RNG.random((100_000, 2))
     for fn in (lambda: cx.rips(many, max_radius=np.inf, max_dim=1), lambda: cx.cech(many, np.inf, 1),
                lambda: rips_persistence(many, max_dim=1)):
-        with pytest.raises(ValueError, match=r"would build 4,999,950,000 edges .* about 112 GiB.*limit of 1,000,000,000"):
+        with pytest.raises(ValueError,
+                           match=r"would build 4,999,950,000 edges .* about 112 GiB.*limit of 1,000,000,000"):
             fn()
     with pytest.raises(ValueError, match=r"would build 1,799,970,000 edges \(60,000 points"):
         cx.rips(RNG.random((60_000, 3)), max_radius=10, max_dim=1)

@@ -52,7 +52,8 @@ def test_project_that_is_not_a_project_is_an_error(tmp_path, capsys, kind):
     for argv in (["report"], ["report", "--json"], ["list"], ["run", "toy"]):
         assert lab_cli.main(["--project", str(folder), *argv]) == 2
         err = capsys.readouterr().err
-        why = {"missing": "does not exist", "file": "is not a folder"}.get(kind, "has no experiments/ and data/manifest.toml")
+        why = {"missing": "does not exist", "file": "is not a folder"}.get(
+            kind, "has no experiments/ and data/manifest.toml")
         assert err.startswith(f"error: --project {str(folder)!r} is not a thesis-lab project: it {why}")
 
 
@@ -73,7 +74,7 @@ def test_path_parameters_outside_the_project_are_refused(root, tmp_path, stub, c
     relative = "../" * (len((root / "experiments").parts) - 1) + str(outside / "evil.pdb").lstrip("/")
     for value in (str(outside / "evil.pdb"), relative, "../../outside/evil.pdb", "sneaky/evil.pdb", "/etc",
                   "../../link/evil.pdb", str(outside)):
-        with pytest.raises(DataError, match=rf"parameter label = .* outside the project .* refused"):
+        with pytest.raises(DataError, match=r"parameter label = .* outside the project .* refused"):
             runner.run("toy", {"label": value})
         assert lab_cli.main(["run", "toy", "-p", "label", value]) == 2
         assert "outside the project" in capsys.readouterr().err

@@ -21,6 +21,24 @@ def check_edges(n: int, threshold: float, *, points: np.ndarray | None = None,
 
     Only when n(n − 1)/2 exceeds the limit are the pairs within ``threshold`` counted (a k-d tree
     count for points, a blocked count for a matrix), so ordinary inputs pay nothing.
+
+    Thesis: Definition 2.11 (the edges of R(X, ε): pairs at distance ≤ 2ε).
+
+    Parameters
+    ----------
+    n : int
+        The number of points.
+    threshold : float
+        The largest edge length kept (2ε, in the units of ``points`` or ``matrix``).
+    points : numpy.ndarray, shape (n, d), optional
+        The points (give this or ``matrix``).
+    matrix : numpy.ndarray, shape (n, n), optional
+        The distance matrix.
+
+    Raises
+    ------
+    ValueError
+        More than ``MAX_SIMPLICES`` edges, with the count and its size in GiB.
     """
     pairs = n * (n - 1) // 2
     if pairs <= MAX_SIMPLICES:

@@ -253,7 +253,25 @@ def read_json(path: str | Path) -> object:
 
 
 def parse_json(text: str, where: str | Path) -> object:
-    """``json.loads(text)``, or a :class:`ResultsError` naming ``where`` (see :func:`read_json`)."""
+    """``json.loads(text)``, or a :class:`ResultsError` naming ``where`` (see :func:`read_json`).
+
+    Parameters
+    ----------
+    text : str
+        The file's text.
+    where : str or pathlib.Path
+        The file it came from (named in the message).
+
+    Returns
+    -------
+    object
+        The parsed value.
+
+    Raises
+    ------
+    ResultsError
+        Invalid JSON, nested too deeply, or an integer of more than 4300 digits.
+    """
     try:
         return json.loads(text)
     except json.JSONDecodeError as exc:

@@ -12,13 +12,13 @@ Sweeps over grids of parameters are in :mod:`thesis_lib.lab.sweep`.
 from __future__ import annotations
 
 import atexit
+import dataclasses
 import json
 import math
 import os
 import shutil
 import sys
 import tempfile
-import dataclasses
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
