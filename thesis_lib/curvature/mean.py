@@ -17,6 +17,13 @@ Two independent implementations:
     A_G^i / n!; for n ≥ 4 the thesis's n! should read n (n − 1) (it is off by the factor (n − 2)!,
     which the finite-difference tests in ``tests/test_curvature.py`` pin down).
 
+Conditioning: on a simplex of aspect above ``ASPECT_BOUND`` (see :mod:`.validate`) both methods
+use the same exact-arithmetic gradient instead (:func:`_exact_gradients`: the numerators X adj(G)
+and their sum over the simplex in rational arithmetic, one rounding each, then one division by
+n! sqrt(det G)), correct to a few ulps per component; the float formulas would lose up to
+2·log10(aspect) digits there (at a needle's tip, minus the sum of two long gradients).  Elsewhere
+the float formulas are kept bit for bit.
+
 Both are orientation-independent: ∇ area does not depend on the order of a simplex's vertices, so
 |H| needs no consistent orientation (only signed quantities do; see :mod:`.shape`).
 """
@@ -24,14 +31,14 @@ Both are orientation-independent: ∇ area does not depend on the order of a sim
 from __future__ import annotations
 
 from itertools import combinations
-from math import factorial
+from math import factorial, sqrt
 
 import numpy as np
 import numpy.typing as npt
 
 from .areas import check_area, vertex_areas_of_mesh
 from .manifold import checked_mesh
-from .validate import Mesh
+from .validate import Mesh, _exact_edges, _exact_gram
 
 __all__ = ["mean_curvature_vector", "mean_curvature", "total_hyperarea"]
 
@@ -45,6 +52,28 @@ def _check_method(method) -> str:
 def _scatter(idx: np.ndarray, vals: np.ndarray, nv: int) -> np.ndarray:
     """Sum rows of ``vals`` (k, d) into ``nv`` bins given by ``idx`` (k,)."""
     return np.stack([np.bincount(idx, weights=vals[:, a], minlength=nv) for a in range(vals.shape[1])], axis=1)
+
+
+def _exact_gradients(p: np.ndarray) -> np.ndarray:
+    """∇ of one simplex's hyperarea at each of its vertices, shape (n + 1, d), from the exact
+    coordinates: numerators X adj(G) (and minus their sum, for q = p_0) exact, each rounded once,
+    divided by n! sqrt(det G) (det G exact, rounded once)."""
+    x, e = _exact_edges(p)
+    n, d = len(x), len(x[0])
+    _, adj, det = _exact_gram(x)
+    num = [[sum(x[i][a] * adj[i][j] for i in range(n)) for a in range(d)] for j in range(n)]
+    q = [-sum(num[j][a] for j in range(n)) for a in range(d)]
+    scale = 1 << ((2 * n - 1) * e)
+    denom = factorial(n) * sqrt(det / (1 << (2 * n * e)))
+    return np.array([[c / scale for c in row] for row in [q, *num]]) / denom
+
+
+def _apply_exact(g: np.ndarray, p: np.ndarray, ill: np.ndarray | None) -> np.ndarray:
+    """Overwrite the gradients ``g`` (m, n + 1, d) of the ill-conditioned simplices with exact ones."""
+    if ill is not None:
+        for k in ill.tolist():
+            g[k] = _exact_gradients(p[k])
+    return g
 
 
 def _gradients_gram(v: np.ndarray, s: np.ndarray) -> np.ndarray:
@@ -105,7 +134,11 @@ def _gram_triangles(mesh: Mesh) -> np.ndarray:
     # X adj(G) with adj = [[c, -b], [-b, a]]
     g1 = (x1 * c - x2 * b) * inv
     g2 = (x2 * a - x1 * b) * inv
-    return np.stack([-(g1 + g2), g1, g2])
+    g = np.stack([-(g1 + g2), g1, g2])
+    if mesh.ill_conditioned is not None:
+        for k in mesh.ill_conditioned.tolist():
+            g[:, :, k] = _exact_gradients(pts[:, :, k])
+    return g
 
 
 def _mean_curvature_vector(mesh: Mesh, method: str) -> np.ndarray:
@@ -116,16 +149,23 @@ def _mean_curvature_vector(mesh: Mesh, method: str) -> np.ndarray:
             g = _gram_triangles(mesh)
             idx = s.T.ravel()
             return np.stack([np.bincount(idx, weights=g[:, a].ravel(), minlength=nv) for a in range(3)], axis=1)
-        g = _gradients_gram(v, s)
+        g = _apply_exact(_gradients_gram(v, s), v[s], mesh.ill_conditioned)
         return _scatter(s.ravel(), g.reshape(-1, d), nv)
     if method == "cot":
         if mesh.n < 2:
             raise ValueError("method 'cot' (dihedral angles, Corollary 3.19) needs n >= 2; use 'gram' for curves")
+        ill = mesh.ill_conditioned if mesh.ill_conditioned is not None else np.zeros(0, dtype=np.int64)
         idx, vals = [], []
-        for i, j, w in _cot_weights(v, s):
+        with np.errstate(divide="ignore", invalid="ignore"):  # an ill-conditioned cot may be inf: replaced below
+            weights = _cot_weights(v, s)
+        for i, j, w in weights:
+            w[ill] = 0.0
             diff = v[s[:, i]] - v[s[:, j]]
             idx += [s[:, i], s[:, j]]
             vals += [w[:, None] * diff, -w[:, None] * diff]
+        if ill.size:  # the ill-conditioned simplices: the exact gradient (the same quantity, Corollary 3.19)
+            idx.append(s[ill].ravel())
+            vals.append(np.concatenate([_exact_gradients(p) for p in v[s[ill]]]))
         return _scatter(np.concatenate(idx), np.concatenate(vals), nv)
     raise AssertionError(method)  # pragma: no cover - checked by the callers
 

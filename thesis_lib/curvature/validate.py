@@ -14,13 +14,27 @@ which raises a ``ValueError`` naming the problem:
 * a simplex with a repeated vertex, or a degenerate (zero-hyperarea) simplex;
 * a non-manifold ridge: an (n-1)-face (an edge for surfaces) lying in more than two top simplices.
 
+Conditioning.  The float formulas for hyperareas, corner dot products, cotangents and area
+gradients lose about log10(aspect) to 2·log10(aspect) digits on a simplex of aspect
+L^n / (n! · hyperarea) (L its longest edge; 2/√3 for the equilateral triangle): the law of cosines
+cancels on a needle's base corners, and the gradient at a needle's tip, minus the sum of the two
+long ones, cancels to a relative error of about 10⁻¹⁶ · aspect².  Simplices of aspect above
+``ASPECT_BOUND`` (10³: below it the float formulas keep at least ten digits) are therefore
+recomputed from the exact values of their coordinates (each float is an integer times a power of
+two: dot products, squared edges, Gram determinants and adjugates in exact integer arithmetic, one
+rounding before each square root), so
+each per-simplex quantity is correct to a few units in the last place up to the degeneracy bound
+(hyperarea > ``DEGENERATE_RTOL`` · L^n, i.e. aspect below about 10¹⁰ / n!), beyond which the
+simplex is refused.  On simplices of aspect at most ``ASPECT_BOUND`` nothing changes: the float
+formulas are kept, bit for bit.
+
 Ridges in exactly one simplex form the boundary; their vertices are the *boundary vertices*, where
 the curvature functions return NaN.
 """
 
 from __future__ import annotations
 
-from math import factorial
+from math import factorial, sqrt
 from typing import NamedTuple
 
 import numpy as np
@@ -39,6 +53,8 @@ __all__ = [
     "check_orientation",
     "DEGENERATE_RTOL",
     "SCALE_BITS",
+    "ASPECT_BOUND",
+    "simplex_aspects",
 ]
 
 #: A simplex whose hyperarea is below ``DEGENERATE_RTOL * (longest edge) ** n`` counts as degenerate.
@@ -48,6 +64,11 @@ DEGENERATE_RTOL = 1e-10
 #: formulas multiply up to 2n lengths, and float64 holds 2^±1022 (measured: wrong values past 2^±250
 #: for n = 2, 2^±170 for n = 3, 2^±130 for n = 4).
 SCALE_BITS = 900
+
+#: Simplices of aspect L^n / (n! · hyperarea) above this bound (L the longest edge) are
+#: ill-conditioned for the float formulas and are recomputed in exact rational arithmetic (see the
+#: module docstring); at or below it the float formulas keep at least about ten digits.
+ASPECT_BOUND = 1e3
 
 
 class TriangleGeometry(NamedTuple):
@@ -159,6 +180,9 @@ class Mesh(NamedTuple):
     isolated: np.ndarray  #: ``(nv,)`` bool, vertex lies in no simplex
     tri: TriangleGeometry | None = None  #: per-corner data when n = 2, else None
     pinched: np.ndarray | None = None  #: ``(nv,)`` bool, star not one fan (set by ``checked_mesh``)
+    #: indices of the simplices of aspect above ``ASPECT_BOUND`` (their areas and, for n = 2, corner
+    #: data were recomputed exactly); None: not computed (a Mesh built by hand)
+    ill_conditioned: np.ndarray | None = None
 
     @property
     def n(self) -> int:
@@ -200,6 +224,102 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
         return 0.5 * np.sqrt(np.einsum("ij,ij->i", c, c))
     gram = np.einsum("mia,mja->mij", x, x)
     return np.sqrt(np.clip(np.linalg.det(gram), 0.0, None)) / factorial(n)
+
+
+def _exact_edges(p: np.ndarray) -> tuple[list[list[int]], int]:
+    """The edge vectors p_i − p_0 (i = 1..n) of one simplex ``p`` (n + 1, d), exactly: as integers
+    times 2^-e (every float is an integer over a power of two; e the largest such exponent)."""
+    ratios = [[float(x).as_integer_ratio() for x in row] for row in p]
+    e = max(den.bit_length() - 1 for row in ratios for _, den in row)
+    ints = [[num << (e - den.bit_length() + 1) for num, den in row] for row in ratios]
+    return [[a - b for a, b in zip(row, ints[0])] for row in ints[1:]], e
+
+
+def _int_det(m: list[list[int]]) -> int:
+    """Determinant of a square integer matrix, exactly (Bareiss' fraction-free elimination)."""
+    m = [row[:] for row in m]
+    n, sign, prev = len(m), 1, 1
+    for k in range(n - 1):
+        if m[k][k] == 0:
+            swap = next((r for r in range(k + 1, n) if m[r][k] != 0), None)
+            if swap is None:
+                return 0
+            m[k], m[swap] = m[swap], m[k]
+            sign = -sign
+        for i in range(k + 1, n):
+            for j in range(k + 1, n):
+                m[i][j] = (m[i][j] * m[k][k] - m[i][k] * m[k][j]) // prev
+        prev = m[k][k]
+    return sign * m[n - 1][n - 1] if n else 1
+
+
+def _exact_gram(x: list[list[int]]) -> tuple[list[list[int]], list[list[int]], int]:
+    """Gram matrix G = XᵀX of the integer edge vectors ``x``, its adjugate and its determinant, exactly."""
+    n = len(x)
+    g = [[sum(a * b for a, b in zip(x[i], x[j])) for j in range(n)] for i in range(n)]
+    if n == 1:
+        return g, [[1]], g[0][0]
+    if n == 2:
+        a, b, c = g[0][0], g[0][1], g[1][1]
+        return g, [[c, -b], [-b, a]], a * c - b * b
+    adj = [[(-1) ** (i + j) * _int_det([[g[r][c] for c in range(n) if c != i] for r in range(n) if r != j])
+            for j in range(n)] for i in range(n)]
+    return g, adj, sum(g[0][k] * adj[k][0] for k in range(n))
+
+
+def _exact_hyperarea(p: np.ndarray) -> float:
+    """Hyperarea sqrt(det G) / n! of one simplex ``p`` (n + 1, d): det G exact, rounded once."""
+    x, e = _exact_edges(p)
+    n = len(x)
+    return sqrt(_exact_gram(x)[2] / (1 << (2 * n * e))) / factorial(n)
+
+
+def _exact_triangle(tri: TriangleGeometry, t: int) -> None:
+    """Overwrite triangle t's corner dots, squared edges and twice its area with their values computed
+    from the exact coordinates (each correctly rounded; twice the area within an ulp)."""
+    (x1, x2), e = _exact_edges(tri.coords[:, :, t])  # p1 − p0, p2 − p0
+    x3 = [b - a for a, b in zip(x1, x2)]  # p2 − p1
+    dot = lambda u, w: sum(a * b for a, b in zip(u, w))  # noqa: E731
+    scale = 1 << (2 * e)
+    sq = [dot(x3, x3), dot(x2, x2), dot(x1, x1)]  # opposite corners 0, 1, 2
+    d0 = dot(x1, x2)
+    dots = [d0, sq[2] - d0, sq[1] - d0]  # (p1 − p0)·(p2 − p0), (p2 − p1)·(p0 − p1), (p0 − p2)·(p1 − p2)
+    for k in range(3):
+        tri.edge_sq[k, t] = sq[k] / scale
+        tri.dot[k, t] = dots[k] / scale
+    tri.twice_area[t] = sqrt((sq[1] * sq[2] - d0 * d0) / (scale * scale))
+
+
+def simplex_aspects(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> np.ndarray:
+    """Aspect L^n / (n! · hyperarea) of each simplex (L its longest edge): how ill-conditioned it is.
+
+    Thesis: §3.3 (the simplices of a triangulated hypersurface; the formulas of Theorem 3.18).
+    The equilateral triangle has 2/√3, a needle or a cap about (longest edge) / (smallest height);
+    above :data:`ASPECT_BOUND` the curvature functions switch to exact arithmetic (module
+    docstring).  No validation: use on arrays that passed :func:`validate_mesh`.
+
+    Parameters
+    ----------
+    vertices : array_like, shape (nv, d)
+        Vertex coordinates.
+    simplices : array_like of int, shape (m, n + 1)
+        Non-degenerate simplices, n >= 1 (trusted).
+
+    Returns
+    -------
+    ndarray of float64, shape (m,)
+        The aspect of each simplex (1 for a segment).
+    """
+    v = np.asarray(vertices, dtype=np.float64)
+    s = np.asarray(simplices, dtype=np.int64)
+    n = s.shape[1] - 1
+    p = v[s]
+    longest = np.zeros(len(s))
+    for i in range(1, n + 1):
+        for j in range(i):
+            e = p[:, i] - p[:, j]
+            np.maximum(longest, np.einsum("ma,ma->m", e, e), out=longest)
+    return np.sqrt(longest) ** n / (factorial(n) * simplex_hyperareas(v, s))
 
 
 def _ridge_keys(simplices: np.ndarray, nv: int) -> tuple[np.ndarray, bool]:
@@ -390,6 +510,7 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
                     e = p[:, i] - p[:, j]
                     np.maximum(longest_sq, np.einsum("ma,ma->m", e, e), out=longest_sq)
             flat = np.flatnonzero(areas <= DEGENERATE_RTOL * np.sqrt(longest_sq) ** n)
+            ill = np.flatnonzero(np.sqrt(longest_sq) ** n > ASPECT_BOUND * factorial(n) * areas) if n > 1 else flat[:0]
         degenerate, n_degenerate = (int(flat[0]) if flat.size else -1), flat.size
         longest_sq = float(longest_sq.max())
     _check_scale(v, longest_sq, n)
@@ -400,9 +521,18 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
             f"simplex {degenerate} {s[degenerate].tolist()} is degenerate (hyperarea {areas[degenerate]:.3g}); "
             f"{n_degenerate} degenerate simplices in all"
         )
+    if tri is not None:
+        ill = np.flatnonzero(tri.edge_sq.max(axis=0) > ASPECT_BOUND * tri.twice_area)
+        for k in ill.tolist():
+            _exact_triangle(tri, k)
+        areas[ill] = 0.5 * tri.twice_area[ill]
+    else:
+        p = v[s[ill]]
+        for r, k in enumerate(ill.tolist()):
+            areas[k] = _exact_hyperarea(p[r])
     isolated = np.ones(nv, dtype=bool)
     isolated[s.ravel()] = False
-    return Mesh(v, s, areas, _boundary(s, nv, tri) if count_ridges else None, isolated, tri)
+    return Mesh(v, s, areas, _boundary(s, nv, tri) if count_ridges else None, isolated, tri, None, ill)
 
 
 def _boundary(s: np.ndarray, nv: int, tri: TriangleGeometry | None) -> np.ndarray:
