@@ -26,6 +26,7 @@ from fractions import Fraction
 import gudhi
 import numpy as np
 import pytest
+from scipy.spatial import ConvexHull
 from helpers import FUZZ_TALLY, fuzz_long
 
 from thesis_lib.complexes import alpha, delaunay, regular_triangulation
@@ -268,7 +269,8 @@ def test_reproducer_2d_near_duplicate():
     p = np.array(REPRODUCER_2D)
     tri, _ = regular_triangulation(p)
     rows = {tuple(r) for r in tri.tolist()}
-    assert len(rows) == 7
+    hull = len(ConvexHull(p).vertices)  # no point on a hull edge here
+    assert len(rows) == 2 * len(p) - 2 - hull
     assert {(0, 2, 3), (0, 2, 5)} <= rows and (2, 3, 5) not in rows
     assert len(alpha(p)) == 25
     check(p)
@@ -288,19 +290,12 @@ def test_reproducer_2d_certificate_rejects_the_overlap():
         check_exact_delaunay(np.array(REPRODUCER_2D), wrong)
 
 
-def test_reproducer_3d_near_duplicates():
-    """Issue 21.1 in R³: near-duplicates 1e-13 apart on the diagonal (the family the issue's 3-D
-    cases came from); seeds that failed before the fix."""
-    for seed in REGRESSION_3D:
-        check(family_input("near_duplicates", 3, seed))
-
-
 def test_alpha_attachment_of_an_edge_a_few_ulps_long():
     """Three points a few ulps apart near (911, 943): the third lies inside the diametral circle
     of the edge (12, 13), so the edge is attached and enters with the triangle (1.2142e-25), not
     at its own squared half-length (1.1955e-25, the value before the fix)."""
     p = family_input("ulp_apart", 2, 10)
-    assert np.array_equal(p[10], p[10]) and np.abs(p[[10, 12, 13]] - p[10]).max() < 1e-12
+    assert np.abs(p[[12, 13]] - p[10]).max() < 1e-12
     a = dict(alpha(p))
     assert a[(12, 13)] == a[(10, 12, 13)]
     half = float(sum((Fraction(float(s)) - Fraction(float(t))) ** 2 for s, t in zip(p[12], p[13])) / 4)
@@ -308,9 +303,16 @@ def test_alpha_attachment_of_an_edge_a_few_ulps_long():
     check(p)
 
 
-#: near-duplicate seeds in R³ whose triangulation was not Delaunay before the fix (found by the
-#: one-off run of this module)
-REGRESSION_3D: list[int] = []
+#: near-duplicate seeds whose triangulation was not Delaunay before the fix (a point strictly
+#: inside a circumsphere), found by running the families on the code before it
+REGRESSION = {3: [223], 2: [171, 235, 279, 296, 423, 427]}
+
+
+@pytest.mark.parametrize("d", [2, 3])
+def test_reproducer_near_duplicates(d):
+    """Issue 21.1 (in R² and R³): near-duplicates 1e-13 to 1e-9 apart; seeds that failed before the fix."""
+    for seed in REGRESSION[d]:
+        check(family_input("near_duplicates", d, seed))
 
 
 @pytest.mark.parametrize("d", [2, 3])
