@@ -10,6 +10,9 @@
     every circumcentre lies in its simplex this is exactly the part of T closest to vertex i; for
     n = 2 it is the thesis's A_vor = 1/8 Σ (cot α_ij + cot β_ij) ‖x_i − x_j‖², which equals libigl's
     Voronoi mass on non-obtuse triangles but is signed (a piece can be negative) on obtuse ones.
+    On a simplex of aspect above ``ASPECT_BOUND`` (:mod:`.validate`) the circumcentres are solved
+    for in exact rational arithmetic (the float solve loses up to 2·log10(aspect) digits there);
+    below it the float computation is kept bit for bit.
 ``"mixed"``
     Meyer, Desbrun, Schröder & Barr (2002), n = 2: Voronoi shares on non-obtuse triangles; on an
     obtuse triangle the obtuse vertex gets half its area and the other two a quarter each.  This is
@@ -18,13 +21,16 @@
 
 from __future__ import annotations
 
+from fractions import Fraction
+from math import factorial
+
 import numpy as np
 import numpy.typing as npt
 
 from .._validate import InvalidTypeError, resolve_alias
 from ..jit import njit
 from .manifold import checked_mesh
-from .validate import Mesh
+from .validate import ASPECT_BOUND, Mesh
 
 __all__ = ["vertex_areas", "vertex_areas_of_mesh", "circumcentric_fractions", "AREA_KINDS", "check_area"]
 
@@ -90,6 +96,7 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
         raise ValueError("p has a NaN or infinite coordinate")
     m, w, _ = p.shape
     full = (1 << w) - 1
+    ill = _ill_rows(p)
     frac: dict[int, np.ndarray] = {1 << i: np.ones((m, w)) for i in range(w)}
     masks = sorted(range(1, full + 1), key=lambda s: bin(s).count("1"))
     for mask in masks:
@@ -107,7 +114,63 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
                 if k != i:
                     f[:, i] += lam[:, kk] * frac[mask & ~(1 << k)][:, i]
         frac[mask] = f
-    return frac[full]
+    out = frac[full]
+    for k in ill.tolist():
+        try:
+            out[k] = _exact_circumcentric_fractions(p[k])
+        except ZeroDivisionError:
+            raise ValueError(f"simplex {k} is degenerate: its vertices are affinely dependent") from None
+    return out
+
+
+def _ill_rows(p: np.ndarray) -> np.ndarray:
+    """Rows of ``p`` (m, n + 1, d) whose simplex has aspect L^n / (n! hyperarea) above ASPECT_BOUND."""
+    m, w, _ = p.shape
+    n = w - 1
+    if n < 2:
+        return np.zeros(0, dtype=np.int64)
+    x = p[:, 1:, :] - p[:, :1, :]
+    with np.errstate(all="ignore"):
+        vol = np.sqrt(np.clip(np.linalg.det(np.einsum("mia,mja->mij", x, x)), 0.0, None))  # n! hyperarea
+        longest = np.zeros(m)
+        for i in range(1, w):
+            for j in range(i):
+                e = p[:, i] - p[:, j]
+                np.maximum(longest, np.einsum("ma,ma->m", e, e), out=longest)
+        return np.flatnonzero(~(np.sqrt(longest) ** n <= ASPECT_BOUND * vol))
+
+
+def _exact_circumcentric_fractions(p: np.ndarray) -> np.ndarray:
+    """:func:`circumcentric_fractions` of one simplex ``p`` (n + 1, d) in exact rational arithmetic
+    (each face's circumcentre solved for exactly), rounded once at the end."""
+    w = len(p)
+    pts = [[Fraction(float(c)) for c in row] for row in p]
+    frac: dict[int, list[Fraction]] = {1 << i: [Fraction(1)] * w for i in range(w)}
+    for mask in sorted(range(1, 1 << w), key=lambda s: bin(s).count("1")):
+        members = [i for i in range(w) if mask >> i & 1]
+        if len(members) < 2:
+            continue
+        x = [[a - b for a, b in zip(pts[i], pts[members[0]])] for i in members[1:]]
+        k = len(x)
+        aug = [[sum((a * b for a, b in zip(x[i], x[j])), Fraction(0)) for j in range(k)] for i in range(k)]
+        for i in range(k):
+            aug[i].append(aug[i][i] / 2)
+        for col in range(k):  # Gauss–Jordan on the positive-definite Gram matrix: no pivoting needed
+            piv = aug[col][col]
+            aug[col] = [c / piv for c in aug[col]]
+            for r in range(k):
+                if r != col and aug[r][col] != 0:
+                    fac = aug[r][col]
+                    aug[r] = [c - fac * d for c, d in zip(aug[r], aug[col])]
+        a = [aug[i][k] for i in range(k)]
+        lam = [1 - sum(a, Fraction(0)), *a]
+        f = [Fraction(0)] * w
+        for i in members:
+            for kk, kv in enumerate(members):
+                if kv != i:
+                    f[i] += lam[kk] * frac[mask & ~(1 << kv)][i]
+        frac[mask] = f
+    return np.array([float(c) for c in frac[(1 << w) - 1]])
 
 
 @njit(cache=True)
