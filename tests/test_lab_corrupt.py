@@ -10,6 +10,7 @@ from __future__ import annotations
 import errno
 import hashlib
 import json
+import os
 
 import pytest
 from lab_helpers import PAYLOAD, TOY_RESULTS, root  # noqa: F401 (the project fixture)
@@ -17,7 +18,7 @@ from lab_helpers import PAYLOAD, TOY_RESULTS, root  # noqa: F401 (the project fi
 from thesis_lib.lab import atomic, execute, runner, sweep
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab.data import DataError
-from thesis_lib.lab.paths import repo_root
+from thesis_lib.lab.paths import PROJECT_ENV, repo_root
 from thesis_lib.lab.results import ResultsError, load
 
 CALLS: list[dict] = []
@@ -60,6 +61,18 @@ def test_project_that_is_not_a_project_is_an_error(tmp_path, capsys, kind):
 def test_project_that_is_a_project_still_works(root, capsys):
     assert lab_cli.main(["--project", str(root), "list"]) == 0
     assert capsys.readouterr().out.startswith("toy: n=3")
+
+
+def test_project_is_named_for_the_command_only(root, tmp_path, monkeypatch, capsys):
+    """--project names the project while its command runs, then the environment is as it was: a later
+    caller in the same process (a test that names another folder) is not sent to this project."""
+    monkeypatch.delenv(PROJECT_ENV, raising=False)
+    assert lab_cli.main(["--project", str(root), "list"]) == 0
+    assert PROJECT_ENV not in os.environ
+    monkeypatch.setenv(PROJECT_ENV, str(tmp_path))
+    assert lab_cli.main(["--project", str(root), "list"]) == 0
+    assert os.environ[PROJECT_ENV] == str(tmp_path)
+    assert capsys.readouterr().out.count("toy: n=3") == 2
 
 
 # ----------------------------------------------------------------------------- path parameters

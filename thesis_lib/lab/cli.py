@@ -10,6 +10,7 @@ kernels are killed, nothing half-written is kept).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import errno
 import os
 import signal
@@ -289,14 +290,7 @@ def main(argv: list[str] | None = None) -> int:
 
 
 def _main(argv: list[str] | None) -> int:
-    from nbclient.exceptions import CellExecutionError
-
-    from .data import DataError
-    from .experiments import ParameterError
-    from .paths import PROJECT_ENV, ProjectError, is_project
-    from .report import ClaimError
-    from .results import ResultsError
-    from .sweep import ClusterError
+    from .paths import PROJECT_ENV, is_project
 
     try:
         args = build_parser().parse_args(argv)
@@ -311,7 +305,35 @@ def _main(argv: list[str] | None) -> int:
                 "is not a folder" if not os.path.isdir(args.project) else "has no experiments/ and data/manifest.toml")
             _err(f"error: --project {args.project!r} is not a thesis-lab project: it {why}")
             return 2
-        os.environ[PROJECT_ENV] = os.path.abspath(args.project)
+    with _project_named(PROJECT_ENV, args.project):
+        return _run(args)
+
+
+@contextlib.contextmanager
+def _project_named(variable: str, folder: str | None):
+    """``variable`` names ``folder`` while the command runs (its kernels inherit it), then is restored."""
+    previous = os.environ.get(variable)
+    if folder:
+        os.environ[variable] = os.path.abspath(folder)
+    try:
+        yield
+    finally:
+        if folder and previous is None:
+            os.environ.pop(variable, None)
+        elif folder:
+            os.environ[variable] = previous
+
+
+def _run(args) -> int:
+    from nbclient.exceptions import CellExecutionError
+
+    from .data import DataError
+    from .experiments import ParameterError
+    from .paths import ProjectError
+    from .report import ClaimError
+    from .results import ResultsError
+    from .sweep import ClusterError
+
     try:
         code = args.func(args)
         sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
