@@ -315,6 +315,13 @@ def test_reproducer_near_duplicates(d):
         check(family_input("near_duplicates", d, seed))
 
 
+def test_boundary_winding_twice_is_rejected():
+    """Points 1-4 ulps apart (seed 240): the triangulation the exact repair produced had a closed,
+    connected, locally convex boundary that curled twice around a cluster (a boundary edge with
+    points on both sides, a point inside a circumcircle); the certificate's winding test rejects it."""
+    check(family_input("ulp_apart", 2, 240))
+
+
 @pytest.mark.parametrize("d", [2, 3])
 @pytest.mark.parametrize("family", list(FAMILIES))
 def test_family(family, d):

@@ -37,7 +37,7 @@ from ..jit import njit
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
-from .predicates import Geometry, expand_det
+from .predicates import Geometry, _signs_of, expand_det
 from .scaling import power_of_two_scale, scale_points
 
 __all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic",
@@ -329,6 +329,8 @@ def _certify(geo: Geometry, tri: np.ndarray, hint: np.ndarray | None = None) -> 
         if n_comp > 1:
             stray = comp != np.argmax(np.bincount(comp))
             bad[bs[stray]] = True
+        if not bad.any():
+            bad[_wound_more_than_once(geo, tri, orient, bs, bi, faces)] = True
     # points missing from the triangulation: an error unless weighted and certifiably hidden
     present = np.zeros(n, dtype=bool)
     present[tri.ravel()] = True
@@ -362,6 +364,46 @@ def _certify(geo: Geometry, tri: np.ndarray, hint: np.ndarray | None = None) -> 
     tie_pairs = np.column_stack([s1[tie], s2[tie]])
     failing = np.column_stack([s1, i1, s2, i2])[~out]
     return _Certificate(ok, np.flatnonzero(bad), loose, located, unresolved, nb, tie_pairs, orient, failing)
+
+
+def _wound_more_than_once(geo: Geometry, tri: np.ndarray, orient: np.ndarray, bs: np.ndarray, bi: np.ndarray,
+                          faces: np.ndarray) -> np.ndarray:
+    """The simplices of boundary facets that show the boundary is not the convex hull's, once.
+
+    A closed, locally convex boundary can still wind twice around the hull (a curl around a cluster
+    of points a few ulps apart, all its turns convex).  Exactly: the centroid o of one simplex must
+    lie strictly on the inner side of every boundary facet (the boundary is star-shaped from o), and
+    the ray from o through the centroid of one boundary facet must meet exactly one closed boundary
+    facet (it winds once around o).  Then the boundary is the hull's and the covering degree is 1.
+    """
+    d = geo.d
+    s0 = int(np.flatnonzero(orient != 0)[0])
+    idx = np.concatenate([faces.ravel(), tri[s0], faces[0]])
+    scale = d * (d + 1)  # o = Σ x / (d + 1) and c = Σ x / d as integers: everything times d (d + 1)
+    small = geo.small_ints(idx, d, float(factorial(d)) * float(scale * (d + 1)) ** d)
+    x = geo.ints(idx)[0] if small is None else small[0]
+    b = len(faces)
+    pts = x[: b * d].reshape(b, d, d) * scale
+    o = x[b * d : b * d + d + 1].sum(axis=0) * d
+    c = x[b * d + d + 1 :].sum(axis=0) * (d + 1)
+
+    def signs(mat):  # signs of det[rows − o], mat (b, d, d)
+        return _signs_of(expand_det(mat - o[None, None, :]))
+
+    inner = np.where((d - bi) % 2, -1, 1) * orient[bs]  # orientation of (facet, its simplex's apex)
+    # orientation of (facet, o) = (−1)^d sign det[f_i − o]
+    side = (-1) ** d * signs(pts)
+    outside = side != inner
+    if outside.any():
+        return bs[outside]
+    hit = np.ones(b, dtype=bool)
+    for i in range(d):  # the cone coordinates of c − o in the cone of (f − o): none negative
+        g = pts.copy()
+        g[:, i, :] = c
+        hit &= (-1) ** d * signs(g) != -inner
+    if hit.sum() != 1:
+        return bs[hit]
+    return np.zeros(0, dtype=np.int64)
 
 
 # ------------------------------------------------------------------------------------- repair
