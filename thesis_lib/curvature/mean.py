@@ -38,7 +38,7 @@ import numpy.typing as npt
 
 from .areas import check_area, vertex_areas_of_mesh
 from .manifold import checked_mesh
-from .validate import Mesh, _exact_edges, _exact_gram
+from .validate import Mesh, exact_edges, exact_gram
 
 __all__ = ["mean_curvature_vector", "mean_curvature", "total_hyperarea"]
 
@@ -58,9 +58,9 @@ def _exact_gradients(p: np.ndarray) -> np.ndarray:
     """∇ of one simplex's hyperarea at each of its vertices, shape (n + 1, d), from the exact
     coordinates: numerators X adj(G) (and minus their sum, for q = p_0) exact, each rounded once,
     divided by n! sqrt(det G) (det G exact, rounded once)."""
-    x, e = _exact_edges(p)
+    x, e = exact_edges(p)
     n, d = len(x), len(x[0])
-    _, adj, det = _exact_gram(x)
+    _, adj, det = exact_gram(x)
     num = [[sum(x[i][a] * adj[i][j] for i in range(n)) for a in range(d)] for j in range(n)]
     q = [-sum(num[j][a] for j in range(n)) for a in range(d)]
     scale = 1 << ((2 * n - 1) * e)

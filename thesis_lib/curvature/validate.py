@@ -226,9 +226,25 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
     return np.sqrt(np.clip(np.linalg.det(gram), 0.0, None)) / factorial(n)
 
 
-def _exact_edges(p: np.ndarray) -> tuple[list[list[int]], int]:
-    """The edge vectors p_i − p_0 (i = 1..n) of one simplex ``p`` (n + 1, d), exactly: as integers
-    times 2^-e (every float is an integer over a power of two; e the largest such exponent)."""
+def exact_edges(p: np.ndarray) -> tuple[list[list[int]], int]:
+    """The edge vectors p_i − p_0 (i = 1..n) of one simplex, exactly, as integers times 2^-e.
+
+    Thesis: Theorem 3.18 (the edge vectors x_i = p_i − q of the Gram matrix).
+    Every float is an integer over a power of two; e is the largest such exponent among the
+    coordinates, so the differences (and every polynomial in them) are exact Python integers.
+
+    Parameters
+    ----------
+    p : ndarray of float64, shape (n + 1, d)
+        The simplex's vertices.
+
+    Returns
+    -------
+    x : list of n lists of d ints
+        2^e (p_i − p_0), exactly.
+    e : int
+        The exponent.
+    """
     ratios = [[float(x).as_integer_ratio() for x in row] for row in p]
     e = max(den.bit_length() - 1 for row in ratios for _, den in row)
     ints = [[num << (e - den.bit_length() + 1) for num, den in row] for row in ratios]
@@ -253,8 +269,23 @@ def _int_det(m: list[list[int]]) -> int:
     return sign * m[n - 1][n - 1] if n else 1
 
 
-def _exact_gram(x: list[list[int]]) -> tuple[list[list[int]], list[list[int]], int]:
-    """Gram matrix G = XᵀX of the integer edge vectors ``x``, its adjugate and its determinant, exactly."""
+def exact_gram(x: list[list[int]]) -> tuple[list[list[int]], list[list[int]], int]:
+    """Gram matrix G = XᵀX of integer edge vectors, its adjugate and its determinant, exactly.
+
+    Thesis: Theorem 3.18 (G = XᵀX, ∇ sqrt(det G) = X adj(G) / sqrt(det G)).
+
+    Parameters
+    ----------
+    x : list of n lists of d ints
+        Edge vectors (as from :func:`exact_edges`).
+
+    Returns
+    -------
+    g, adj : list of n lists of n ints
+        G and its adjugate (cofactors; Bareiss elimination for n >= 3).
+    det : int
+        det G (positive for a non-degenerate simplex).
+    """
     n = len(x)
     g = [[sum(a * b for a, b in zip(x[i], x[j])) for j in range(n)] for i in range(n)]
     if n == 1:
@@ -269,15 +300,15 @@ def _exact_gram(x: list[list[int]]) -> tuple[list[list[int]], list[list[int]], i
 
 def _exact_hyperarea(p: np.ndarray) -> float:
     """Hyperarea sqrt(det G) / n! of one simplex ``p`` (n + 1, d): det G exact, rounded once."""
-    x, e = _exact_edges(p)
+    x, e = exact_edges(p)
     n = len(x)
-    return sqrt(_exact_gram(x)[2] / (1 << (2 * n * e))) / factorial(n)
+    return sqrt(exact_gram(x)[2] / (1 << (2 * n * e))) / factorial(n)
 
 
 def _exact_triangle(tri: TriangleGeometry, t: int) -> None:
     """Overwrite triangle t's corner dots, squared edges and twice its area with their values computed
     from the exact coordinates (each correctly rounded; twice the area within an ulp)."""
-    (x1, x2), e = _exact_edges(tri.coords[:, :, t])  # p1 − p0, p2 − p0
+    (x1, x2), e = exact_edges(tri.coords[:, :, t])  # p1 − p0, p2 − p0
     x3 = [b - a for a, b in zip(x1, x2)]  # p2 − p1
     dot = lambda u, w: sum(a * b for a, b in zip(u, w))  # noqa: E731
     scale = 1 << (2 * e)
