@@ -26,8 +26,8 @@ from fractions import Fraction
 import gudhi
 import numpy as np
 import pytest
-from scipy.spatial import ConvexHull
 from helpers import FUZZ_TALLY, fuzz_long
+from scipy.spatial import ConvexHull
 
 from thesis_lib.complexes import alpha, delaunay, regular_triangulation
 

@@ -10,9 +10,12 @@ The regular triangulation of weighted points is the lower convex hull of the lif
    points exactly when it is a valid triangulation (every simplex full-dimensional, neighbours on
    opposite sides of their common facet), every interior facet is locally regular (the opposite
    vertex lies outside the orthogonal sphere: the lifted surface is convex there), the boundary is
-   convex, and every point is a vertex or certifiably hidden (weighted points whose lifted point
-   lies above the hull).  All tests use the robust predicates of :mod:`.predicates`: a float filter
-   decides almost every test, exact arithmetic the rest.
+   convex and is the hull's boundary once (connected, star-shaped from the centroid of a simplex,
+   met once by a ray from it: local tests alone accept a boundary that curls twice around a
+   cluster of points a few ulps apart, or a sliver covered twice), and every point is a vertex
+   or certifiably hidden (weighted points whose lifted point lies above the hull).  All tests
+   use the robust predicates of :mod:`.predicates`: a float filter decides almost every test,
+   exact arithmetic the rest.
 3. **Repair.**  Where the certificate fails, the simplices around the failures are re-triangulated
    exactly (:mod:`.incremental`), growing the region until the whole certificate holds; at worst
    every point is triangulated exactly.
