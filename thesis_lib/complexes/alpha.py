@@ -147,7 +147,7 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     so simplices and values equal GUDHI's ``AlphaComplex(..., precision="exact")`` (values to
     about 1e-13 relative).  Coordinates of any magnitude are scaled by a power of two first;
     values that do not fit in float64 raise ``ValueError``.  A complex estimated above
-    :data:`~thesis_lib.complexes.delaunay.MAX_DELAUNAY_SIMPLICES` simplices is refused up front.
+    ``MAX_DELAUNAY_SIMPLICES`` simplices is refused up front.
     """
     check_delaunay_size(points)
     geo, e = prepare_geometry(points, weights)

@@ -36,7 +36,7 @@ _FACES_PER_TOP = {1: 2.0, 2: 3.0, 3: 4.3, 4: 6.3, 5: 9.2, 6: 13.8, 7: 20.4}
 
 
 def check_delaunay_size(points: npt.ArrayLike) -> None:
-    """Refuse up front a Delaunay complex estimated above :data:`MAX_DELAUNAY_SIMPLICES` simplices
+    """Refuse up front a Delaunay complex estimated above ``MAX_DELAUNAY_SIMPLICES`` simplices
     (R^5 and up; ``MAX_SIMPLICES`` below).
 
     Thesis: Definition 2.13 (the Delaunay complex; its size grows like n·c_d with c_d exponential
@@ -82,8 +82,8 @@ def delaunay(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> lis
     Raises
     ------
     ValueError
-        Invalid points or weights, or a complex estimated above :data:`MAX_DELAUNAY_SIMPLICES`
-        simplices (:func:`check_delaunay_size`).
+        Invalid points or weights, or a complex estimated above ``MAX_DELAUNAY_SIMPLICES``
+        simplices (``check_delaunay_size``).
     """
     check_delaunay_size(points)
     geo, _ = prepare_geometry(points, weights)

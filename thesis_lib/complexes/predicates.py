@@ -33,7 +33,7 @@ import numpy.typing as npt
 
 from .filters import insphere_filter, insphere_one, orient_filter, orient_one
 
-__all__ = ["Geometry", "ScalarPredicates", "expand_det", "UNIT"]
+__all__ = ["Geometry", "ScalarPredicates", "expand_det", "signs_of", "UNIT"]
 
 #: unit roundoff of float64
 UNIT = 2.0**-53
@@ -101,8 +101,19 @@ def _dyadic(values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return m >> zeros, e - zeros
 
 
-def _signs_of(values: np.ndarray) -> np.ndarray:
-    """Signs of exact integers: an int64 array or an object array of Python integers."""
+def signs_of(values: np.ndarray) -> np.ndarray:
+    """Signs of exact integers (the determinants of :func:`expand_det`).
+
+    Parameters
+    ----------
+    values : numpy.ndarray
+        An int64 array, or an object array of Python integers.
+
+    Returns
+    -------
+    numpy.ndarray
+        The signs, −1, 0 or 1, as int8, in the shape of ``values``.
+    """
     if values.dtype == object:
         return _signs(values)
     return np.sign(values).astype(np.int8)
@@ -483,7 +494,7 @@ class Geometry:
         d = self.d
         small = self.small_ints(simplices, d, float(factorial(d)))
         x = self.ints(simplices)[0] if small is None else small[0]
-        return _signs_of(expand_det(x[:, 1:, :] - x[:, :1, :]))
+        return signs_of(expand_det(x[:, 1:, :] - x[:, :1, :]))
 
     # -------------------------------------------------------------------------- power test
     def outside(self, simplices: np.ndarray, y: np.ndarray, orient: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -545,7 +556,7 @@ class Geometry:
         x, w = self.ints(allp)[:2] if small is None else small
         diff = x[:, :-1, :] - x[:, -1:, :]
         lift = (diff * diff).sum(axis=2) - (w[:, :-1] - w[:, -1:])
-        p = _signs_of(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
+        p = signs_of(expand_det(np.concatenate([diff, lift[..., None]], axis=2)))
         out = p * cof_y > 0
         tie = p == 0
         rows = np.flatnonzero(tie)
@@ -556,7 +567,7 @@ class Geometry:
             cof = np.empty((len(rows), self.d + 2), dtype=np.int8)
             for j in range(self.d + 2):
                 rest = np.delete(xt, j, axis=1)
-                cof[:, j] = (-1) ** j * _signs_of(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
+                cof[:, j] = (-1) ** j * signs_of(expand_det(rest[:, 1:, :] - rest[:, :1, :]))
             by_rank = np.argsort(-self.rank[allp[rows]], axis=1)
             ordered = np.take_along_axis(cof, by_rank, axis=1)
             first = ordered[np.arange(len(rows)), np.argmax(ordered != 0, axis=1)]

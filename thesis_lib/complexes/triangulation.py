@@ -40,7 +40,7 @@ from ..jit import njit
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
-from .predicates import Geometry, _signs_of, expand_det
+from .predicates import Geometry, expand_det, signs_of
 from .scaling import power_of_two_scale, scale_points
 
 __all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic",
@@ -391,7 +391,7 @@ def _wound_more_than_once(geo: Geometry, tri: np.ndarray, orient: np.ndarray, bs
     c = x[b * d + d + 1 :].sum(axis=0) * (d + 1)
 
     def signs(mat):  # signs of det[rows − o], mat (b, d, d)
-        return _signs_of(expand_det(mat - o[None, None, :]))
+        return signs_of(expand_det(mat - o[None, None, :]))
 
     inner = np.where((d - bi) % 2, -1, 1) * orient[bs]  # orientation of (facet, its simplex's apex)
     # orientation of (facet, o) = (−1)^d sign det[f_i − o]

@@ -48,7 +48,7 @@ STATUSES = ("reproduced", "erratum", "differs", "identity", "consistent", "not-c
 #: the statuses of claims that could have failed (the report's headline counts these)
 COULD_FAIL = ("reproduced", "erratum", "differs")
 COMPARISONS = ("eq", "rel", "abs", "le", "ge", "between", "none")
-#: the provenances of a claim's input (what each means: :data:`PROVENANCE_LEGEND`)
+#: the five provenances of a claim's input; PROVENANCE_LEGEND says what each means
 PROVENANCES = ("transcribed", "thesis data", "reconstructed input", "substitute input", "computed")
 SECTIONS = ("thesis", "beyond")
 THESIS_TEXT = "botnan-2011-three-approaches.txt"

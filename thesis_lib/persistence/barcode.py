@@ -258,7 +258,7 @@ class Barcode:
         TypeError
             ``dims`` is a string or holds a non-integer.
         ValueError
-            A negative dimension, or more than :data:`MAX_DIAGRAMS` diagrams asked for.
+            A negative dimension, or more than ``MAX_DIAGRAMS`` diagrams asked for.
         """
         dims = self._complete if dims is None else tuple(_dimension_list(dims, "dims"))
         top = max(dims, default=-1)

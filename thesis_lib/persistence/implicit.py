@@ -1054,7 +1054,7 @@ def rips_persistence(
     Raises
     ------
     ValueError
-        ``max_dim`` below 1 or above :data:`~thesis_lib._validate.MAX_DIM` (10⁴; dimensions above
+        ``max_dim`` below 1 or above ``MAX_DIM`` (10⁴; dimensions above
         the number of points are computed as the empty homology they are), a non-prime
         ``coefficients``, or invalid points / distances.
     """
