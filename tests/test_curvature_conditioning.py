@@ -17,11 +17,11 @@ sum of the absolute values of its terms, from the reference), not to its own siz
 
 from __future__ import annotations
 
+import io
 import subprocess
 import sys
 import tarfile
 import tempfile
-import io
 from pathlib import Path
 
 import mpmath
@@ -382,6 +382,7 @@ def test_circumcentric_fractions_on_bad_tetrahedra_against_60_digit_reference(fa
         exact = np.bincount(s.ravel(), weights=(ref * areas).ravel(), minlength=len(v))
         scale = np.bincount(s.ravel(), weights=(np.abs(ref) * areas).ravel(), minlength=len(v))
         assert np.all(np.abs(vertex_areas(v, s, "voronoi") - exact) <= TOL * scale)
-    print(f"R4 {family}: {CIRCUMCENTRIC_CASES} meshes, {ill} tetrahedra of aspect > {ASPECT_BOUND:g}, worst error {worst:.2g}")
+    print(f"R4 {family}: {CIRCUMCENTRIC_CASES} meshes, {ill} tetrahedra of aspect > {ASPECT_BOUND:g}, "
+          f"worst error {worst:.2g}")
     assert ill >= CIRCUMCENTRIC_CASES
     assert worst <= TOL

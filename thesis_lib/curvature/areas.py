@@ -22,7 +22,6 @@
 from __future__ import annotations
 
 from fractions import Fraction
-from math import factorial
 
 import numpy as np
 import numpy.typing as npt
