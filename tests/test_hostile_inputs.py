@@ -11,8 +11,13 @@ import numpy as np
 import pytest
 
 from thesis_lib._validate import InvalidTypeError, check_seed
+from thesis_lib.applications.range_images import sample_patches, synthetic_range_image
 from thesis_lib.complexes import build_filtration
+from thesis_lib.curvature.checks import random_simplices
+from thesis_lib.meshes.sampling import sample_n_catenoid
 from thesis_lib.morse import morse_matching
+from thesis_lib.morse.examples import experiment_complex
+from thesis_lib.persistence import RipsDiagrams
 
 BAD_SEEDS = [True, False, [1, 2], np.array([1]), np.array(3), 1.5, 2.0, "1", -1, 1j, b"1"]
 
@@ -25,6 +30,29 @@ def test_invalid_seeds_are_refused_by_name(seed):
         morse_matching([(0, 1, 2)], seed=seed)
     with pytest.raises((ValueError, TypeError), match="seed must be"):
         build_filtration("rips", np.zeros((2, 2)), 1.0, 1, seed=seed)
+
+
+SEEDED = {
+    "sample_n_catenoid": lambda seed: sample_n_catenoid(10, seed=seed),
+    "random_simplices": lambda seed: random_simplices(2, 3, seed=seed),
+    "experiment_complex": lambda seed: experiment_complex("random-flag", seed=seed),
+    "synthetic_range_image": lambda seed: synthetic_range_image(seed, size=(8, 8)),
+    "sample_patches": lambda seed: sample_patches([np.arange(64.0).reshape(8, 8) + 1], 2, size=3, seed=seed),
+}
+
+
+@pytest.mark.parametrize("seed", [True, [1, 2], 1.5, -1], ids=repr)
+@pytest.mark.parametrize("name", SEEDED)
+def test_every_seeded_draw_checks_its_seed(name, seed):
+    with pytest.raises((ValueError, TypeError), match="seed must be"):
+        SEEDED[name](seed)
+    SEEDED[name](3)  # a valid seed still draws
+
+
+@pytest.mark.parametrize("X", [None, 3, "abc"], ids=repr)
+def test_rips_diagrams_refuses_what_is_not_a_list_of_clouds(X):
+    with pytest.raises(InvalidTypeError, match="X must be a list of point clouds"):
+        RipsDiagrams().fit_transform(X)
 
 
 def test_valid_seeds_are_kept():

@@ -37,6 +37,8 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import check_seed
+
 __all__ = [
     "synthetic_range_image",
     "patches",
@@ -199,7 +201,7 @@ def synthetic_range_image(
         raise ValueError(f"min_grazing_degrees must lie in [0, 90), got {min_grazing_degrees!r}")
     if not (np.isfinite(noise) and noise >= 0):
         raise ValueError(f"noise must be a non-negative number, got {noise!r}")
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_seed(seed))
 
     # Camera: looks along +z, x to the right, y up; image row 0 is the top.
     cam_rot = _rotation(rng.uniform(-0.3, 0.3), rng.uniform(-0.12, 0.05))
@@ -365,7 +367,7 @@ def sample_patches(images: Sequence[npt.ArrayLike], n: int, size: int = 5, seed:
     total = int(offsets[-1])
     if n > total:
         raise ValueError(f"asked for {n} patches, the images have only {total} valid ones")
-    chosen = np.sort(np.random.default_rng(seed).choice(total, size=n, replace=False))
+    chosen = np.sort(np.random.default_rng(check_seed(seed)).choice(total, size=n, replace=False))
     which = np.searchsorted(offsets, chosen, side="right") - 1
     out = np.empty((n, size * size))
     dr, dc = np.divmod(np.arange(size * size), size)

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial import ConvexHull, HalfspaceIntersection
 
+from .._validate import check_seed
 from .areas import vertex_areas
 from .gaussian import gaussian_curvature
 from .mean import mean_curvature_vector
@@ -108,7 +109,7 @@ def random_simplices(n: int, count: int, *, seed: int = 0) -> NDArray[np.float64
     for name, value, low in (("n", n, 1), ("count", count, 1)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
             raise ValueError(f"{name} must be an integer >= {low}, got {value!r}")
-    return np.random.default_rng(seed).normal(size=(int(count), int(n) + 1, int(n) + 1))
+    return np.random.default_rng(check_seed(seed)).normal(size=(int(count), int(n) + 1, int(n) + 1))
 
 
 def barycentric_gradients(points: ArrayLike) -> NDArray[np.float64]:

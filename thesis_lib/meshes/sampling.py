@@ -200,7 +200,7 @@ def sample_n_catenoid(
             raise ValueError(f"{name} must be a finite interval (low < high), got {rng_!r}")
         ranges.append((lo, hi))
     (vlo, vhi), (wlo, whi) = ranges
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_seed(seed))
     wmax = np.cosh(max(abs(vlo), abs(vhi))) ** 2
     params = _rejection(
         n_points, rng,

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from .._validate import check_seed
 from ._cells import Simplex
 
 __all__ = ["RP2_FACETS", "rp2_gradient_field", "rp2_chart", "example_4_45", "experiment_complex", "COMPLEX_NAMES"]
@@ -135,7 +136,7 @@ def experiment_complex(name: str, seed: int = 0) -> tuple[
         import numpy as np
 
         if name == "random-flag":
-            pts = np.random.default_rng(seed).random((14, 2))
+            pts = np.random.default_rng(check_seed(seed)).random((14, 2))
             filt = rips(pts, 0.2, 2)
         else:
             pts = two_circles(30, seed=seed)

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_coefficients, check_max_dim, check_radius
+from .._validate import InvalidTypeError, check_coefficients, check_max_dim, check_radius
 from .implicit import rips_persistence
 
 __all__ = ["RipsDiagrams"]
@@ -126,6 +126,8 @@ class RipsDiagrams:
             On invalid parameters or an invalid point cloud (the message names the cloud).
         """
         self.fit()
+        if X is None or isinstance(X, (str, bytes)) or not isinstance(X, Iterable):
+            raise InvalidTypeError(f"X must be a list of point clouds, got {type(X).__name__}")
         if isinstance(X, np.ndarray) and X.ndim == 2:
             raise ValueError("X must be a list of point clouds; got one 2-D array (wrap it in a list)")
         out = []
