@@ -734,9 +734,9 @@ def math_text(text: str) -> str:
 
 def table_cell(value: object) -> str:
     """A report value as the text of one Markdown table cell: numbers as :func:`number_text` writes them,
-    lists in parentheses, None as ``—``, TeX fragments in ``$…$`` (:func:`math_text`), ``|`` escaped,
-    and a zero-width space after each ``_``, ``.`` or ``/`` inside a word longer than 10 characters
-    (a result key or module name in a note), so that the table fits the text column.
+    lists in parentheses, None as ``—``, TeX fragments in ``$…$`` (:func:`math_text`), ``|`` escaped.
+    (A long result key or module name in a note breaks in the book through its style sheet, which
+    lets table cells wrap anywhere, so the text itself is left as it reads.)
 
     Thesis: none (the report's tables).
 
@@ -750,23 +750,7 @@ def table_cell(value: object) -> str:
     str
         The cell's text, on one line.
     """
-    text = math_text(_fmt(value)).replace("|", "\\|").replace("\n", " ")
-    return " ".join(_breakable(word) for word in text.split(" "))
-
-
-_BREAK_AFTER = re.compile(r"(?<=[A-Za-z][_./])(?=[A-Za-z(])")
-
-
-def _breakable(word: str) -> str:
-    """A long identifier (``witness_third_bar_maxmin``, ``thesis_lib.lab.chapters``) with a zero-width
-    space after each ``_``, ``.`` and ``/`` between letters inside it, where a narrow table column may
-    break it; numbers (``0.02``) are never broken."""
-    if len(word) <= _LONG_WORD or "$" in word:
-        return word
-    return _BREAK_AFTER.sub("\u200b", word)
-
-
-_LONG_WORD = 10
+    return math_text(_fmt(value)).replace("|", "\\|").replace("\n", " ")
 
 
 def why(row: dict[str, object]) -> str:
