@@ -76,6 +76,7 @@ RNG = np.random.default_rng(21)
 P2, P3 = RNG.random((8, 2)), RNG.random((10, 3))
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # a right answer, and no overflow on the way
 @pytest.mark.parametrize("w", [1e140, 1e150, 1e300, MAXF], ids=repr)
 @pytest.mark.parametrize("pts", [P2, P3], ids=["R2", "R3"])
 def test_equal_huge_weights_give_the_unweighted_complex_shifted(pts, w):
@@ -89,6 +90,7 @@ def test_equal_huge_weights_give_the_unweighted_complex_shifted(pts, w):
     assert sorted(cx.delaunay(pts, weights=np.full(len(pts), w))) == sorted(cx.delaunay(pts))
 
 
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # a right answer, and no overflow on the way
 @pytest.mark.parametrize("w", [np.r_[MAXF, np.zeros(7)], np.r_[1e300, 1e299, np.zeros(6)]], ids=["max", "1e300"])
 def test_weights_whose_orthogonal_spheres_leave_the_float_range_are_refused_by_name(w):
     with pytest.raises(ValueError, match=r"beyond float64's range \(about 1.8e308\).*largest weight"):
@@ -138,6 +140,7 @@ def test_protein_filtration_refuses_bad_r_c_by_name(r_c, error, message):
 
 
 # ----------------------------------------------------------------------------- type confusion
+@pytest.mark.filterwarnings("error::RuntimeWarning")  # a right answer, and no overflow on the way
 def test_vertex_labels_objects_and_int64_overflow():
     """Regression (issue 21): object arrays failed in numpy's isfinite; a label 2⁶³ was called negative."""
     tri = np.array([[0, 1, 2], [1, 2, 3]])
@@ -150,6 +153,8 @@ def test_vertex_labels_objects_and_int64_overflow():
         with pytest.raises(ValueError, match=r"vertex label \d+ does not fit in int64 \(labels must be < 2\^63\)"):
             euler_characteristic(bad)
     assert euler_characteristic([(0, 2**63 - 1)]) == 1
+    with pytest.raises(ValueError, match=r"vertex label 1e\+19 does not fit in int64"):  # a float label
+        euler_characteristic(np.array([[0.0, 1e19]]))
 
 
 @pytest.mark.parametrize("dm, message", [
@@ -208,7 +213,7 @@ def test_cech_work_beyond_the_budget_is_refused():
 
 def test_delaunay_in_high_dimension_beyond_the_budget_is_refused():
     pts = RNG.random((400, 7))
-    for fn in (cx.delaunay, cx.alpha):
+    for fn in (cx.delaunay, cx.alpha, cx.regular_triangulation):
         with pytest.raises(ValueError, match=r"41,452,800 simplices \(estimated: 2,032,000 top simplices .* "
                                              r"400 points in R\^7\), more than the limit of 10,000,000"):
             fn(pts)

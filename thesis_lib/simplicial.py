@@ -59,6 +59,8 @@ def as_simplex_array(rows: np.ndarray | Sequence[Sequence[int]], dim: int | None
     if arr.size and not np.issubdtype(arr.dtype, np.integer):
         if not np.all(np.isfinite(arr)) or not np.all(arr == np.round(arr)):
             raise ValueError("vertex indices must be integers")
+        if np.abs(arr).max() >= 2.0**63:
+            raise ValueError(f"vertex label {np.abs(arr).max():g} does not fit in int64 (labels must be < 2^63)")
     arr = np.sort(arr.astype(np.int64, copy=False), axis=1)
     if arr.size and arr.min() < 0:
         raise ValueError("vertex indices must be non-negative")

@@ -158,7 +158,8 @@ def _qhull_candidate(geo: Geometry) -> tuple[np.ndarray, np.ndarray] | None:
     centred = pts - pts.mean(axis=0)
     scale = float(np.abs(centred).max()) or 1.0
     centred /= scale
-    lift = np.einsum("ij,ij->i", centred, centred) - w / scale**2
+    with np.errstate(over="ignore"):  # weights near the float range: refused just below
+        lift = np.einsum("ij,ij->i", centred, centred) - w / scale**2
     if not np.all(np.isfinite(lift)):
         return None
     top = lift.max() + (lift.max() - lift.min()) + 1.0
@@ -682,8 +683,12 @@ def regular_triangulation(points: npt.ArrayLike,
     Raises
     ------
     ValueError
-        As ``prepare_geometry``, or for points on a hyperplane.
+        As ``prepare_geometry``, for points on a hyperplane, or for a triangulation estimated above
+        the Delaunay budget (``check_delaunay_size``, R^5 and up).
     """
+    from .delaunay import check_delaunay_size  # (delaunay builds on this module)
+
+    check_delaunay_size(points)
     geo, _ = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))
     return t.simplices, t.neighbours
