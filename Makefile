@@ -25,11 +25,15 @@ endef
 
 install: $(STAMP)
 
-$(STAMP): pyproject.toml
+# The compiled core (src/*.cpp) is built by scikit-build-core into build/ (kept: a C++ change
+# recompiles only what changed, and `make test` / `make book` reinstall when a source is newer).
+$(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*.cpp src/*.hpp)
+	@command -v c++ >/dev/null 2>&1 || command -v g++ >/dev/null 2>&1 || command -v clang++ >/dev/null 2>&1 || { \
+	    echo "error: thesis_lib's compiled core needs a C++17 compiler and none was found (Debian/Ubuntu: apt-get install g++)"; exit 1; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	@# (setuptools prints an "Editable installation" notice on every editable install: not a problem)
-	PYTHONWARNINGS="ignore:Editable installation" $(BIN)/python -m pip install --quiet -e ".[dev]"
+	$(BIN)/python -m pip install --quiet "scikit-build-core>=0.10" "nanobind>=2.4"
+	$(BIN)/python -m pip install --quiet --no-build-isolation -e ".[dev]"
 	touch $(STAMP)
 
 ## book: execute every notebook (cached in book/_build/.jupyter_cache) and build the HTML book,

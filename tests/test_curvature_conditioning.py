@@ -260,8 +260,22 @@ def test_exact_path_only_above_the_bound():
 
 
 # ----------------------------------------------------------------------------- bit identity
+#: the old commit's thesis_lib.jit replaced by the identity: its kernels run as plain Python and numpy
+_PLAIN_JIT = """
+def njit(fn=None, **options):
+    return (lambda f: f) if fn is None else fn
+
+
+prange = range
+"""
+
 _OLD_SCRIPT = r"""
-import sys, numpy as np
+import os, sys
+# an editable install's import hook would hand out the checkout's thesis_lib whatever PYTHONPATH says
+sys.meta_path[:] = [f for f in sys.meta_path if not type(f).__module__.startswith("_editable")]
+import numpy as np
+import thesis_lib
+assert thesis_lib.__file__.startswith(os.environ["PYTHONPATH"]), thesis_lib.__file__
 from thesis_lib import curvature as c
 data = np.load(sys.argv[1], allow_pickle=False)
 out = {}
@@ -300,7 +314,7 @@ def _well_conditioned_meshes() -> dict[str, np.ndarray]:
 def test_well_conditioned_meshes_bit_identical_to_the_float_formulas(tmp_path):
     """On meshes with every simplex of aspect at most ASPECT_BOUND nothing changes by a single bit:
     the library's sources before the exact path (git) run in a subprocess on the same meshes."""
-    old_src = Path(tempfile.gettempdir()) / f"thesis-lab-curvature-{OLD_COMMIT[:12]}"  # kept: numba's cache
+    old_src = Path(tempfile.gettempdir()) / f"thesis-lab-curvature-{OLD_COMMIT[:12]}-python"
     if not (old_src / "thesis_lib" / "curvature" / "validate.py").exists():
         try:
             blob = subprocess.run(["git", "-C", str(ROOT), "archive", OLD_COMMIT, "thesis_lib"],
@@ -311,12 +325,13 @@ def test_well_conditioned_meshes_bit_identical_to_the_float_formulas(tmp_path):
             tar.extractall(tmp_path / "extract", filter="data")
         old_src.mkdir(parents=True, exist_ok=True)
         if not (old_src / "thesis_lib").exists():
+            # numba is no longer a dependency: the old kernels run as the plain Python they were written in
+            (tmp_path / "extract" / "thesis_lib" / "jit.py").write_text(_PLAIN_JIT, encoding="utf-8")
             (tmp_path / "extract" / "thesis_lib").rename(old_src / "thesis_lib")
     data = _well_conditioned_meshes()
     np.savez(tmp_path / "meshes.npz", **data)
     subprocess.run([sys.executable, "-c", _OLD_SCRIPT, str(tmp_path / "meshes.npz"), str(tmp_path / "old.npz")],
-                   check=True, cwd=tmp_path, env={"PYTHONPATH": str(old_src), "PATH": "/usr/bin:/bin",
-                                                  "NUMBA_CACHE_DIR": str(old_src / "numba")})
+                   check=True, cwd=tmp_path, env={"PYTHONPATH": str(old_src), "PATH": "/usr/bin:/bin"})
     old = np.load(tmp_path / "old.npz")
     keys = sorted({k.split(":")[0] for k in data})
     compared = 0

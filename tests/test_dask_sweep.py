@@ -107,7 +107,12 @@ def test_a_worker_without_the_project_is_named(tmp_path):
     with LocalCluster(n_workers=0, processes=False, protocol="tcp", host="127.0.0.1",
                       dashboard_address=None) as cluster:
         env = {**os.environ, "PYTHONPATH": str(shadow.parent)}
-        worker = subprocess.Popen([sys.executable, "-m", "distributed.cli.dask_worker", cluster.scheduler_address,
+        # the shadow package comes first on PYTHONPATH; an editable install's import hook (which would
+        # hand out the checkout's thesis_lib whatever the path says) is taken out of the worker
+        launch = ("import sys; sys.meta_path[:] = [f for f in sys.meta_path "
+                  "if not type(f).__module__.startswith('_editable')]; "
+                  "from distributed.cli.dask_worker import main; sys.argv[0] = 'dask-worker'; main()")
+        worker = subprocess.Popen([sys.executable, "-c", launch, cluster.scheduler_address,
                                    "--nworkers", "1", "--nthreads", "1", "--no-nanny", "--no-dashboard"],
                                   env=env, cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         try:
