@@ -10,11 +10,19 @@ namespace thesis {
 Array<double> triangle_areas(In<std::int64_t, nb::ndim<2>> s, In<double, nb::ndim<2>> dot,
                              In<double, nb::ndim<2>> edge_sq, In<double, nb::ndim<1>> twice,
                              std::int64_t nv, bool mixed) {
+    const std::size_t m = s.shape(0);
+    if (s.shape(1) != 3) throw std::invalid_argument("triangle_areas: s must have shape (m, 3)");
+    if (dot.shape(0) != 3 || dot.shape(1) != m || edge_sq.shape(0) != 3 || edge_sq.shape(1) != m)
+        throw std::invalid_argument("triangle_areas: dot and edge_sq must have shape (3, m)");
+    if (twice.shape(0) != m) throw std::invalid_argument("triangle_areas: twice must have shape (m,)");
+    if (nv < 0) throw std::invalid_argument("triangle_areas: nv must be non-negative");
+    const std::int64_t* sp = s.data();
+    for (std::size_t i = 0; i < 3 * m; ++i)
+        if (sp[i] < 0 || sp[i] >= nv) throw std::invalid_argument("triangle_areas: a vertex index is outside 0..nv-1");
     std::vector<double> out(static_cast<std::size_t>(nv), 0.0);
     const auto S = s.view();
     const auto D = dot.view(), E = edge_sq.view();
     const auto tw2 = twice.view();
-    const std::size_t m = s.shape(0);
     {
         nb::gil_scoped_release release;
         for (std::size_t t = 0; t < m; ++t) {

@@ -27,7 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validate import InvalidTypeError, resolve_alias
-from ..jit import njit
+from .._core import vertex_areas as _vertex_areas_core
 from .manifold import checked_mesh
 from .validate import ASPECT_BOUND, Mesh
 
@@ -172,31 +172,6 @@ def _exact_circumcentric_fractions(p: np.ndarray) -> np.ndarray:
     return np.array([float(c) for c in frac[(1 << w) - 1]])
 
 
-@njit(cache=True)
-def _triangle_areas(s, dot, edge_sq, twice, nv, mixed):
-    """Vertex areas of a triangle mesh from the validated corner data, in one pass.
-
-    Corner k gets 1/8 (cot_{k+1} |e_{k+1}|² + cot_{k+2} |e_{k+2}|²) (its Voronoi share, cot_j =
-    dot_j / (2 area)); with ``mixed``, an obtuse triangle gives its obtuse corner half its area and
-    the other two a quarter each (Meyer et al.).
-    """
-    out = np.zeros(nv)
-    m = s.shape[0]
-    for t in range(m):
-        tw = twice[t]
-        if mixed and (dot[0, t] < 0 or dot[1, t] < 0 or dot[2, t] < 0):
-            for k in range(3):
-                out[s[t, k]] += 0.25 * tw if dot[k, t] < 0 else 0.125 * tw
-            continue
-        w0 = dot[0, t] / tw * edge_sq[0, t]
-        w1 = dot[1, t] / tw * edge_sq[1, t]
-        w2 = dot[2, t] / tw * edge_sq[2, t]
-        out[s[t, 0]] += 0.125 * (w1 + w2)
-        out[s[t, 1]] += 0.125 * (w2 + w0)
-        out[s[t, 2]] += 0.125 * (w0 + w1)
-    return out
-
-
 def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
     """:func:`vertex_areas` on an already validated :class:`~.validate.Mesh`.
 
@@ -224,7 +199,10 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
                          "use 'voronoi' or 'barycentric'")
     if n == 2:
         tri = mesh.tri
-        return _triangle_areas(s, tri.dot, tri.edge_sq, tri.twice_area, nv, area == "mixed")
+        return _vertex_areas_core.triangle_areas(
+            np.ascontiguousarray(s, dtype=np.int64), np.ascontiguousarray(tri.dot, dtype=np.float64),
+            np.ascontiguousarray(tri.edge_sq, dtype=np.float64), np.ascontiguousarray(tri.twice_area, dtype=np.float64),
+            nv, area == "mixed")
     share = circumcentric_fractions(v[s]) * areas[:, None]
     return np.bincount(s.ravel(), weights=share.ravel(), minlength=nv)
 

@@ -7,9 +7,9 @@ is repeated, and (for n >= 2) the link of every vertex is connected, so that its
 fan.  A doubled triangle or two cones glued at their apex (a pinched vertex) are not; on them the
 estimates return numbers without meaning, and the least-squares shape operator breaks down.
 
-:func:`check_pseudomanifold` checks this in one compiled pass (ridges bucketed by their smallest
-vertex, then a union–find of the corners across shared ridges), cheap enough to run on every call
-on meshes of 10⁵ vertices, and names the simplex or vertex that breaks it.
+:func:`check_pseudomanifold` checks this in one compiled C++ pass (``src/pseudomanifold.cpp``: ridges
+bucketed by their smallest vertex, then a union–find of the corners across shared ridges), cheap
+enough to run on every call on meshes of 10⁵ vertices, and names the simplex or vertex that breaks it.
 """
 
 from __future__ import annotations
@@ -17,98 +17,10 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._unionfind import find as _find
-from ..jit import njit
+from .._core import pseudomanifold as _pseudomanifold_core
 from .validate import Mesh, validate_mesh
 
 __all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]
-
-
-@njit(cache=True)
-def _pseudomanifold_kernel(s, lo, key, nv, check_links):
-    """(code, a, b, c, pinched, boundary): 0 ok; 1 simplices a, b repeat; 2 ridge (a without b) in 3+
-    simplices; 3 vertex a pinched between simplices b and c (the first of the ``pinched`` mask);
-    ``boundary`` marks the vertices of the ridges in one simplex.
-
-    Ridge r = (simplex r // k without its local vertex r % k) has smallest vertex ``lo[r]`` and the
-    others encoded injectively in ``key[r]``.
-    """
-    m, k = s.shape
-    counts = np.zeros(nv + 1, dtype=np.int64)
-    for r in range(m * k):
-        counts[lo[r] + 1] += 1
-    for v in range(nv):
-        counts[v + 1] += counts[v]
-    fill = counts[:-1].copy()
-    entries = np.empty(m * k, dtype=np.int64)
-    for r in range(m * k):
-        entries[fill[lo[r]]] = r
-        fill[lo[r]] += 1
-    parent = np.arange(m * k)
-    boundary = np.zeros(nv, dtype=np.bool_)
-    for v in range(nv):
-        start, end = counts[v], counts[v + 1]
-        size = end - start
-        if size == 0:
-            continue
-        bucket = entries[start:end]
-        if size <= 32:  # insertion sort by key (buckets hold a vertex's few ridges on meshes)
-            for x in range(1, size):
-                cur = bucket[x]
-                y = x - 1
-                while y >= 0 and key[bucket[y]] > key[cur]:
-                    bucket[y + 1] = bucket[y]
-                    y -= 1
-                bucket[y + 1] = cur
-        else:
-            bucket = bucket[np.argsort(key[bucket], kind="mergesort")]
-        x = 0
-        while x < size:
-            y = x + 1
-            while y < size and key[bucket[y]] == key[bucket[x]]:
-                y += 1
-            run = y - x
-            if run > 2:
-                return 2, bucket[x] // k, bucket[x] % k, 0, boundary, boundary
-            if run == 1:  # a boundary ridge
-                t1, i1 = bucket[x] // k, bucket[x] % k
-                for j1 in range(k):
-                    if j1 != i1:
-                        boundary[s[t1, j1]] = True
-            if run == 2:
-                t1, i1 = bucket[x] // k, bucket[x] % k
-                t2, i2 = bucket[x + 1] // k, bucket[x + 1] % k
-                if s[t1, i1] == s[t2, i2]:
-                    return 1, min(t1, t2), max(t1, t2), 0, boundary, boundary
-                # glue the corners of the two simplices at each vertex of the common ridge
-                for j1 in range(k):
-                    if j1 == i1:
-                        continue
-                    for j2 in range(k):
-                        if s[t2, j2] == s[t1, j1]:
-                            ra = _find(parent, t1 * k + j1)
-                            rb = _find(parent, t2 * k + j2)
-                            if ra != rb:
-                                parent[ra] = rb
-            x = y
-    pinched = np.zeros(nv, dtype=np.bool_)
-    if not check_links:
-        return 0, 0, 0, 0, pinched, boundary
-    first = np.full(nv, -1, dtype=np.int64)
-    where = np.full(nv, -1, dtype=np.int64)
-    code, a, b, c = 0, 0, 0, 0
-    for t in range(m):
-        for j in range(k):
-            v = s[t, j]
-            r = _find(parent, t * k + j)
-            if first[v] < 0:
-                first[v] = r
-                where[v] = t
-            elif first[v] != r and not pinched[v]:
-                pinched[v] = True
-                if code == 0:
-                    code, a, b, c = 3, v, where[v], t
-    return code, a, b, c, pinched, boundary
 
 
 def _ridge_codes(s: np.ndarray, nv: int) -> tuple[np.ndarray, np.ndarray]:
@@ -138,7 +50,9 @@ def _pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int,
     triangles' (lo, hi) ridge codes when already known (``TriangleGeometry.edge_lo/edge_hi``)."""
     s = np.ascontiguousarray(simplices, dtype=np.int64)
     lo, key = _ridge_codes(s, int(n_vertices)) if edges is None else (edges[0].ravel(), edges[1].ravel())
-    code, a, b, c, pinched, boundary = _pseudomanifold_kernel(s, lo, key, int(n_vertices), s.shape[1] >= 3)
+    code, a, b, c, pinched, boundary = _pseudomanifold_core.pseudomanifold_kernel(
+        s, np.ascontiguousarray(lo, dtype=np.int64), np.ascontiguousarray(key, dtype=np.int64), int(n_vertices),
+        s.shape[1] >= 3)
     if code == 1:
         raise ValueError(f"simplices {a} and {b} have the same vertices {sorted(s[a].tolist())}: a doubled "
                          "simplex is not a pseudo-manifold")

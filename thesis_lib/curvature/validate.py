@@ -40,7 +40,7 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
-from ..jit import njit
+from .._core import triangle_geometry as _triangle_core
 
 __all__ = [
     "Mesh",
@@ -87,59 +87,10 @@ class TriangleGeometry(NamedTuple):
     edge_hi: np.ndarray  #: (m, 3) larger vertex of that edge
 
 
-@njit(cache=True)
-def _triangle_kernel(v, s, dot, sq, twice, pts, lo, hi, rtol):  # pragma: no cover - compiled
-    """Fill the corner data; return (first simplex with a repeated vertex, first degenerate one,
-    number of degenerate ones, longest squared edge), -1 for none (area <= rtol * longest edge², as
-    in validate_mesh)."""
-    m = s.shape[0]
-    first_repeated, first_degenerate, n_degenerate = -1, -1, 0
-    longest = 0.0
-    for t in range(m):
-        if first_repeated < 0 and (s[t, 0] == s[t, 1] or s[t, 1] == s[t, 2] or s[t, 0] == s[t, 2]):
-            first_repeated = t
-        for k in range(3):  # the edge opposite corner k is ridge 3t + k: its vertices (min, max)
-            i, j = s[t, (k + 1) % 3], s[t, (k + 2) % 3]
-            lo[t, k] = min(i, j)
-            hi[t, k] = max(i, j)
-        for k in range(3):
-            for a in range(3):
-                pts[k, a, t] = v[s[t, k], a]
-        # edge opposite corner k: e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0
-        e0x = pts[2, 0, t] - pts[1, 0, t]
-        e0y = pts[2, 1, t] - pts[1, 1, t]
-        e0z = pts[2, 2, t] - pts[1, 2, t]
-        e1x = pts[0, 0, t] - pts[2, 0, t]
-        e1y = pts[0, 1, t] - pts[2, 1, t]
-        e1z = pts[0, 2, t] - pts[2, 2, t]
-        e2x = pts[1, 0, t] - pts[0, 0, t]
-        e2y = pts[1, 1, t] - pts[0, 1, t]
-        e2z = pts[1, 2, t] - pts[0, 2, t]
-        s0 = e0x * e0x + e0y * e0y + e0z * e0z
-        s1 = e1x * e1x + e1y * e1y + e1z * e1z
-        s2 = e2x * e2x + e2y * e2y + e2z * e2z
-        sq[0, t] = s0
-        sq[1, t] = s1
-        sq[2, t] = s2
-        longest = max(longest, s0, s1, s2)
-        dot[0, t] = 0.5 * (s1 + s2 - s0)  # law of cosines
-        dot[1, t] = 0.5 * (s2 + s0 - s1)
-        dot[2, t] = 0.5 * (s0 + s1 - s2)
-        cx = e1y * e2z - e1z * e2y
-        cy = e1z * e2x - e1x * e2z
-        cz = e1x * e2y - e1y * e2x
-        twice[t] = np.sqrt(cx * cx + cy * cy + cz * cz)
-        if 0.5 * twice[t] <= rtol * max(s0, s1, s2):
-            n_degenerate += 1
-            if first_degenerate < 0:
-                first_degenerate = t
-    return first_repeated, first_degenerate, n_degenerate, longest
-
-
 def triangle_geometry(v: np.ndarray, s: np.ndarray) -> TriangleGeometry:
     """Corner dot products, squared opposite edge lengths and twice the areas of triangles in R^3.
 
-    One compiled pass over the triangles (numba); no validation.
+    One compiled pass over the triangles (C++, ``src/triangle_geometry.cpp``); no validation.
     Thesis: Theorem 3.18 and §3.3.2 (the Gram matrices and corner cotangents of triangles).
 
     Parameters
@@ -165,8 +116,9 @@ def _checked_triangle_geometry(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGe
     dot, sq = np.empty((3, m)), np.empty((3, m))
     twice, pts = np.empty(m), np.empty((3, 3, m))
     lo, hi = np.empty((m, 3), dtype=np.int64), np.empty((m, 3), dtype=np.int64)
-    checks = _triangle_kernel(np.ascontiguousarray(v), np.ascontiguousarray(s), dot, sq, twice, pts, lo, hi,
-                              DEGENERATE_RTOL)
+    checks = _triangle_core.triangle_kernel(np.ascontiguousarray(v, dtype=np.float64),
+                                            np.ascontiguousarray(s, dtype=np.int64), dot, sq, twice, pts, lo, hi,
+                                            DEGENERATE_RTOL)
     return (TriangleGeometry(dot, sq, twice, pts, lo, hi), *checks)
 
 

@@ -1,0 +1,93 @@
+// The corner data of triangle meshes in R³: the Gram entries and cotangents of §3.3.
+#include "arrays.hpp"
+
+#include <nanobind/stl/tuple.h>
+
+#include <cmath>
+#include <tuple>
+
+namespace thesis {
+
+// Python's max(a, b, ...) on floats: the first of the largest (a later value replaces only when >).
+inline double py_max(double a, double b) { return b > a ? b : a; }
+
+// Fill the corner data of the triangles s (m, 3) of the vertices v (nv, 3): dot (3, m), sq (3, m),
+// twice (m,), pts (3, 3, m), lo and hi (m, 3); return (first simplex with a repeated vertex, first
+// degenerate one, number of degenerate ones, longest squared edge), -1 for none (degenerate: area
+// <= rtol * longest edge², as in validate_mesh).
+// Thesis: Theorem 3.18 and §3.3.2 (the Gram matrices and corner cotangents of triangles).
+std::tuple<std::int64_t, std::int64_t, std::int64_t, double> triangle_kernel(
+    In<double, nb::ndim<2>> v, In<std::int64_t, nb::ndim<2>> s, Out<double, nb::ndim<2>> dot,
+    Out<double, nb::ndim<2>> sq, Out<double, nb::ndim<1>> twice, Out<double, nb::ndim<3>> pts,
+    Out<std::int64_t, nb::ndim<2>> lo, Out<std::int64_t, nb::ndim<2>> hi, double rtol) {
+    const std::size_t m = s.shape(0);
+    const std::int64_t nv = static_cast<std::int64_t>(v.shape(0));
+    if (v.shape(1) != 3) throw std::invalid_argument("triangle_kernel: v must have shape (nv, 3)");
+    if (s.shape(1) != 3) throw std::invalid_argument("triangle_kernel: s must have shape (m, 3)");
+    if (dot.shape(0) != 3 || dot.shape(1) != m || sq.shape(0) != 3 || sq.shape(1) != m)
+        throw std::invalid_argument("triangle_kernel: dot and sq must have shape (3, m)");
+    if (twice.shape(0) != m) throw std::invalid_argument("triangle_kernel: twice must have shape (m,)");
+    if (pts.shape(0) != 3 || pts.shape(1) != 3 || pts.shape(2) != m)
+        throw std::invalid_argument("triangle_kernel: pts must have shape (3, 3, m)");
+    if (lo.shape(0) != m || lo.shape(1) != 3 || hi.shape(0) != m || hi.shape(1) != 3)
+        throw std::invalid_argument("triangle_kernel: lo and hi must have shape (m, 3)");
+    const std::int64_t* sp = s.data();
+    for (std::size_t i = 0; i < 3 * m; ++i)
+        if (sp[i] < 0 || sp[i] >= nv) throw std::invalid_argument("triangle_kernel: a vertex index is outside 0..nv-1");
+    const auto V = v.view();
+    const auto S = s.view();
+    auto D = dot.view();
+    auto Q = sq.view();
+    auto T = twice.view();
+    auto P = pts.view();
+    auto L = lo.view();
+    auto H = hi.view();
+    std::int64_t first_repeated = -1, first_degenerate = -1, n_degenerate = 0;
+    double longest = 0.0;
+    {
+        nb::gil_scoped_release release;
+        for (std::size_t t = 0; t < m; ++t) {
+            if (first_repeated < 0 && (S(t, 0) == S(t, 1) || S(t, 1) == S(t, 2) || S(t, 0) == S(t, 2)))
+                first_repeated = static_cast<std::int64_t>(t);
+            for (std::size_t k = 0; k < 3; ++k) {  // the edge opposite corner k is ridge 3t + k
+                const std::int64_t i = S(t, (k + 1) % 3), j = S(t, (k + 2) % 3);
+                L(t, k) = i < j ? i : j;
+                H(t, k) = i > j ? i : j;
+            }
+            for (std::size_t k = 0; k < 3; ++k)
+                for (std::size_t a = 0; a < 3; ++a) P(k, a, t) = V(S(t, k), a);
+            // edge opposite corner k: e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0
+            const double e0x = P(2, 0, t) - P(1, 0, t), e0y = P(2, 1, t) - P(1, 1, t), e0z = P(2, 2, t) - P(1, 2, t);
+            const double e1x = P(0, 0, t) - P(2, 0, t), e1y = P(0, 1, t) - P(2, 1, t), e1z = P(0, 2, t) - P(2, 2, t);
+            const double e2x = P(1, 0, t) - P(0, 0, t), e2y = P(1, 1, t) - P(0, 1, t), e2z = P(1, 2, t) - P(0, 2, t);
+            const double s0 = e0x * e0x + e0y * e0y + e0z * e0z;
+            const double s1 = e1x * e1x + e1y * e1y + e1z * e1z;
+            const double s2 = e2x * e2x + e2y * e2y + e2z * e2z;
+            Q(0, t) = s0;
+            Q(1, t) = s1;
+            Q(2, t) = s2;
+            longest = py_max(py_max(py_max(longest, s0), s1), s2);
+            D(0, t) = 0.5 * (s1 + s2 - s0);  // law of cosines
+            D(1, t) = 0.5 * (s2 + s0 - s1);
+            D(2, t) = 0.5 * (s0 + s1 - s2);
+            const double cx = e1y * e2z - e1z * e2y;
+            const double cy = e1z * e2x - e1x * e2z;
+            const double cz = e1x * e2y - e1y * e2x;
+            T(t) = std::sqrt(cx * cx + cy * cy + cz * cz);
+            if (0.5 * T(t) <= rtol * py_max(py_max(s0, s1), s2)) {
+                ++n_degenerate;
+                if (first_degenerate < 0) first_degenerate = static_cast<std::int64_t>(t);
+            }
+        }
+    }
+    return {first_repeated, first_degenerate, n_degenerate, longest};
+}
+
+}  // namespace thesis
+
+NB_MODULE(triangle_geometry, m) {
+    namespace nb = nanobind;
+    m.doc() = "Corner data of triangle meshes in R^3 (thesis Theorem 3.18, §3.3.2).";
+    m.def("triangle_kernel", &thesis::triangle_kernel, nb::arg("v"), nb::arg("s"), nb::arg("dot"), nb::arg("sq"),
+          nb::arg("twice"), nb::arg("pts"), nb::arg("lo"), nb::arg("hi"), nb::arg("rtol"));
+}
