@@ -125,7 +125,7 @@ def memory_run(name: str, tool: str) -> dict:
 
     def setup():
         build = builders(name)[tool]
-        build()  # warm-up: numba compilation, caches
+        build()  # warm-up: caches
         return build
 
     return harness.memory_worker(setup, lambda build: build())

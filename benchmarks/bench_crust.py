@@ -57,7 +57,7 @@ def memory_run(n: str, tool: str) -> dict:
     from thesis_lib.meshes import sample_torus
 
     def setup():
-        _run(tool, sample_torus(500, seed=1))  # warm-up: numba compilation, pymeshlab's plugins
+        _run(tool, sample_torus(500, seed=1))  # warm-up: pymeshlab's plugins
         return sample_torus(int(n), seed=0)
 
     return harness.memory_worker(setup, lambda pts: _run(tool, pts))

@@ -83,7 +83,7 @@ def memory_run(name: str, tool: str) -> dict:
     def setup():
         op, _, V, F = _mesh(name)
         fn = operations()[op][0 if tool == "ours" else 1]
-        fn(*_mesh(f"{op}-8")[2:])  # warm-up on a tiny mesh: numba compilation or caching
+        fn(*_mesh(f"{op}-8")[2:])  # warm-up on a tiny mesh: imports and caches
         return fn, V, F
 
     return harness.memory_worker(setup, lambda state: state[0](state[1], state[2]))

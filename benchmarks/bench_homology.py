@@ -3,7 +3,7 @@
 Usage: ``python benchmarks/bench_homology.py [--quick] [--repeat N] [--case NAME ...]``.
 
 Every timing runs in a fresh subprocess (``--worker TOOL CASE``): build the input (not timed), warm
-up on a small complex (numba compilation and imports excluded), read the resident-set high-water
+up on a small complex (imports excluded), read the resident-set high-water
 mark, time one call, read the mark again (``work_mb`` = what the calls added).  When that first call
 takes under ``SHORT_S`` (0.5 s), the worker reports the best of ``SHORT_REPEAT`` (5) calls on the same
 input, for every tool alike: a single cold call of a few tens of milliseconds moved by ±25 % from one
@@ -150,7 +150,7 @@ def worker(tool: str, name: str) -> dict:
         from thesis_lib.homology import homology
 
         p = 0 if tool == "ours-z" else 2
-        homology([(0, 1, 2), (1, 3)], p)  # warm-up: load the numba kernels
+        homology([(0, 1, 2), (1, 3)], p)  # warm-up: imports and caches
         homology(complex_arrays("linial-meshulam-40"), p)
         run = lambda: homology(arrays, p)  # noqa: E731
         summary = lambda h: {"betti": [b for b, _ in h], "torsion": [[_big(t) for t in ts] for _, ts in h]}  # noqa: E731

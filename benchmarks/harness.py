@@ -6,10 +6,10 @@ benchmark follows these rules, and this module gives one function for each:
 
 **Time: interleaved rounds, medians, paired ratios** — :func:`compare`.
     ``compare({"ours": f, "ripser": g}, rounds=None)`` calls each contender once to warm it up
-    (numba compilation, caches; the warm-up time is kept as ``warmup_s``), then runs *rounds*
+    (imports, caches; the warm-up time is kept as ``warmup_s``), then runs *rounds*
     rounds A, B, A, B, ... so that a burst of load hits every contender alike.  The default
     number of rounds is :func:`default_rounds`: at least 5, and 15 when the slowest contender's
-    first timed round took under 0.1 s (not its warm-up, which includes compilation).  The result
+    first timed round took under 0.1 s (not its warm-up, which includes first-use costs).  The result
     holds every time, the median per contender and, from :func:`paired_ratio`, the median over
     rounds of the ratio of the two times of one round (the figure to publish: ``ratio_<peer>``).
     Compare **whole pipelines** (points → barcode for every tool); a step-only figure is named as
@@ -64,7 +64,7 @@ MIN_ROUNDS = 5  # rounds of interleaved timing, at least
 FAST_ROUNDS = 15  # rounds when a case takes under FAST_BELOW seconds
 FAST_BELOW = 0.1
 TOLERANCE = 0.35  # make bench-check: largest relative move of a stored ratio
-LIBRARIES = ("numpy", "scipy", "numba", "gudhi", "ripser", "giotto-ph", "libigl", "pymeshlab")
+LIBRARIES = ("numpy", "scipy", "gudhi", "ripser", "giotto-ph", "libigl", "pymeshlab")
 
 
 # ---------------------------------------------------------------------------- interleaved timing
