@@ -115,19 +115,6 @@ def meshes(draw):
     return x, f
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _compiled():
-    """Compile (or load from numba's cache) the kernels once, so deadlines time work, not compilation."""
-    pts = np.random.default_rng(0).random((30, 3))
-    cx.alpha(pts)
-    cx.cech(pts, 0.3, 2)
-    cx.witness(pts, [0, 1, 2], 0.5, 2)
-    x, f = ms.torus_grid(6)
-    cv.mean_curvature(x, f)
-    cv.principal_curvatures(x, f)
-    ms.crust(ms.sample_sphere(200, seed=0))
-
-
 # ----------------------------------------------------------------------------- targets
 COMPLEX_CALLS = {
     "rips": lambda p, a, b: cx.rips(p, a, b),

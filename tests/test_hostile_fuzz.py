@@ -35,20 +35,6 @@ HOSTILE = [np.nan, np.inf, -np.inf, -1.0, -0.0, 0.0, 0.5, 1.5, 2.0, 3, 4, 0, 1, 
 hostile = st.sampled_from(HOSTILE)
 
 
-@pytest.fixture(scope="module", autouse=True)
-def _compiled():
-    """Compile (or load from numba's cache) the kernels once, so deadlines time work, not compilation
-    (a cold first call of rips_persistence takes tens of seconds on a loaded machine)."""
-    pts = np.random.default_rng(0).random((6, 2))
-    rips_persistence(pts, max_dim=3)
-    cx.rips(pts, max_radius=1.0, max_dim=2)
-    cx.alpha(pts, weights=np.full(6, 1e-3))
-    cx.delaunay(pts)
-    cx.smallest_enclosing_ball(pts)
-    homology(cx.rips(pts, max_radius=1.0, max_dim=2))
-    morse_matching(cx.rips(pts, max_radius=1.0, max_dim=2), seed=0)
-
-
 def _is_index(v) -> bool:
     return isinstance(v, numbers.Integral) and not isinstance(v, bool) and v >= 0
 
