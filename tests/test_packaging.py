@@ -64,9 +64,26 @@ def _requirement(spec: str) -> tuple[str, str]:
     return m.group(1).lower().replace("_", "-"), m.group(2).replace(" ", "")
 
 
-def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
-    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
-    wanted = dict(_requirement(s) for s in project["dependencies"] + project["optional-dependencies"]["dev"])
+#: what environment.yml adds for building the compiled core and pip cannot: the C++ compiler, and CMake
+#: and Ninja as conda packages (pip users take the system's compiler; scikit-build-core fetches CMake
+#: and Ninja from PyPI when the machine has none)
+CONDA_BUILD_TOOLS = {"cxx-compiler": "", "cmake": None, "ninja": ""}
+
+
+def _extra(project: dict, name: str) -> list[str]:
+    """The requirements of an extra, with ``thesis-lab[a,b]`` replaced by those of extras a and b."""
+    out = []
+    for spec in project["optional-dependencies"][name]:
+        package, rest = _requirement(spec)
+        if package == project["name"]:
+            for inner in rest.strip("[]").split(","):
+                out += _extra(project, inner)
+        else:
+            out.append(spec)
+    return out
+
+
+def _environment_packages() -> dict[str, str]:
     env = yaml.safe_load((ROOT / "environment.yml").read_text())
     have: dict[str, str] = {}
     for dep in env["dependencies"]:
@@ -75,7 +92,47 @@ def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
         elif not dep.startswith(("python", "pip")):
             name, floor = _requirement(dep)
             have[name] = floor
-    assert have == wanted
+    return have
+
+
+def test_the_extras_expand():
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    assert [_requirement(s)[0] for s in _extra(project, "plot")] == ["matplotlib"]
+    book = [_requirement(s)[0] for s in _extra(project, "book")]
+    assert {"matplotlib", "pyvista", "pymeshlab", "biotite", "papermill", "jupyter-book"} <= set(book)
+    assert project["name"] not in {_requirement(s)[0] for s in _extra(project, "dev")}
+
+
+def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
+    # conda installs everything: the library, every package of every extra with the floor of
+    # pyproject.toml, and the build requirements of the compiled core; nothing else
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    project = pyproject["project"]
+    wanted = dict(_requirement(s) for s in project["dependencies"])
+    for extra in project["optional-dependencies"]:
+        for spec in _extra(project, extra):
+            name, floor = _requirement(spec)
+            assert wanted.get(name, floor) == floor, f"{name} has two floors in pyproject.toml"
+            wanted[name] = floor
+    wanted.update(_requirement(s) for s in pyproject["build-system"]["requires"])
+    wanted.update({name: floor for name, floor in CONDA_BUILD_TOOLS.items() if floor is not None})
+    wanted["cmake"] = pyproject["tool"]["scikit-build"]["cmake"].get("version", "")
+    have = _environment_packages()
+    assert {name: have.get(name) for name in wanted if have.get(name) != wanted[name]} == {}
+    assert sorted(set(have) - set(wanted)) == []
+    env = yaml.safe_load((ROOT / "environment.yml").read_text())
+    assert [s for dep in env["dependencies"] if isinstance(dep, dict) for s in dep["pip"]][-1] == "-e ."
+
+
+def test_numba_is_no_dependency():
+    # the kernels are compiled C++ (issue 22): numba is neither required nor offered, nor in the conda route
+    pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    project = pyproject["project"]
+    specs = project["dependencies"] + pyproject["build-system"]["requires"] + [
+        s for extra in project["optional-dependencies"].values() for s in extra]
+    names = {_requirement(s)[0] for s in specs} | set(_environment_packages())
+    assert "numba" not in names and "llvmlite" not in names
+    assert "numpy" in names  # the names were read
 
 
 def test_console_script_and_citation():

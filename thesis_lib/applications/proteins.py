@@ -27,6 +27,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
 from ..filtration import Filtration
 from ..lab.paths import shared_dir
 
@@ -245,9 +246,11 @@ def read_pdb(
     ------
     ValueError
         Missing file, no coordinate records, truncated or garbled records, unknown model.
+    ImportError
+        If biotite is not installed (the ``[proteins]`` extra).
     """
-    import biotite.structure.info as info
-    from biotite.structure.io.pdb import PDBFile
+    info = require("biotite.structure.info", extra="proteins", purpose="reading PDB files")
+    PDBFile = require("biotite.structure.io.pdb", extra="proteins", purpose="reading PDB files").PDBFile
 
     if isinstance(model, bool) or not isinstance(model, (int, np.integer)) or model < 1:
         raise ValueError(f"model must be a positive integer, got {model!r}")
@@ -346,8 +349,10 @@ def vdw_radii(
     ------
     ValueError
         Unknown radius set, or an element without any tabulated radius.
+    ImportError
+        If biotite is not installed (the ``[proteins]`` extra).
     """
-    import biotite.structure.info as info
+    info = require("biotite.structure.info", extra="proteins", purpose="atomic radii")
 
     if set not in RADII_SETS:
         raise ValueError(f"radius set must be one of {', '.join(RADII_SETS)}, got {set!r}")
@@ -693,6 +698,8 @@ def space_filling_image(
     ------
     ValueError
         Not an Atoms record with one radius per atom, or a non-positive scale.
+    ImportError
+        If pyvista (the ``[mesh]`` extra) or matplotlib (``[plot]``) is not installed.
     """
     from ..graphics.render import pyvista_offscreen
 
@@ -702,7 +709,7 @@ def space_filling_image(
     if not (np.isfinite(scale) and scale > 0):
         raise ValueError(f"scale must be positive, got {scale!r}")
     pv = pyvista_offscreen()
-    from matplotlib.colors import to_rgb
+    to_rgb = require("matplotlib.colors", extra="plot", purpose="colouring atoms").to_rgb
 
     colors = np.array([to_rgb(ELEMENT_COLORS.get(e, "#ff69b4")) for e in atoms.elements])
     cloud = pv.PolyData(atoms.coords - atoms.coords.mean(axis=0))

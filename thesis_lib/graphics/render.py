@@ -6,6 +6,8 @@ import os
 import warnings
 from types import ModuleType
 
+from .._optional import require
+
 __all__ = ["pyvista_offscreen"]
 
 
@@ -19,13 +21,18 @@ def pyvista_offscreen() -> ModuleType:
     -------
     types.ModuleType
         The imported ``pyvista`` module, configured.
+
+    Raises
+    ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     """
     os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
     with warnings.catch_warnings():
         # pyvista imports tqdm.auto, which warns (with this machine's path) when ipywidgets is absent;
         # the warning would land in notebook stderr and make stored outputs machine-dependent.
         warnings.filterwarnings("ignore", message="IProgress not found")
-        import pyvista as pv
+        pv = require("pyvista", extra="mesh", purpose="rendering 3-D figures")
 
     pv.OFF_SCREEN = True
     pv.set_jupyter_backend("static")

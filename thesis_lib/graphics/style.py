@@ -18,9 +18,9 @@ import zlib
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-import matplotlib as mpl
+from .._optional import require
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # matplotlib is imported by what draws ([plot] extra); COLORS and png_text need none
     from matplotlib.figure import Figure
 
 __all__ = ["apply", "COLORS", "smallest_text_px", "figure_png", "png_text", "TEXT_PX_KEY"]
@@ -45,7 +45,13 @@ def apply() -> None:
     In an IPython kernel, figures are also turned into PNGs by :func:`figure_png` from then on
     (inline figures, ``display(fig)``, ``myst_nb.glue``), so that each carries its smallest text's
     size.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     """
+    mpl = require("matplotlib", extra="plot", purpose="the book's figure style")
     mpl.rcParams.update(
         {
             "figure.figsize": (7.0, 3.6),
@@ -58,7 +64,7 @@ def apply() -> None:
             "svg.hashsalt": "thesis-lab",
         }
     )
-    _register_png_formatter()
+    _register_png_formatter(mpl)
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -250,7 +256,7 @@ def _png_formatter(fig: Figure) -> str | None:
     return base64.b64encode(figure_png(fig)).decode("ascii")
 
 
-def _register_png_formatter() -> None:
+def _register_png_formatter(mpl) -> None:
     """In IPython, show figures through :func:`figure_png` (re-registered before every cell)."""
     try:
         from IPython import get_ipython

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
 from .paths import repo_root
 from .tables import markdown_table
 
@@ -354,7 +355,7 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
     ValueError
         If no ratio is left to draw.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="benchmark figures")
 
     from ..graphics.style import COLORS
 
@@ -420,7 +421,7 @@ def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
     ValueError
         If no case starts with ``prefix``.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="benchmark figures")
 
     rows = [r for r in load(topic) if str(r.get("case", "")).startswith(prefix)]
     if not rows:

@@ -1,10 +1,12 @@
 """The ``thesis-lab`` command line: run and sweep experiments, the report, the data layer.
 
-Exit codes: 0 success; 1 a notebook or run failed (or runs are missing or corrupt), or the disk is
-full (nothing half-written is kept); 2 bad input (an unknown experiment or parameter, a bad value, a
-path parameter outside the project, a folder that is not a project, a malformed manifest, claims
-file or stored result, an unreachable cluster); 130 / 143 cancelled by Ctrl-C / SIGTERM (running
-kernels are killed, nothing half-written is kept).
+Exit codes: 0 success; 1 a notebook or run failed (or runs are missing or corrupt), the disk is
+full (nothing half-written is kept), or a package the command needs is not installed (one line
+names it and the extra: ``pip install "thesis-lab[lab]"``; ``report`` and ``data`` need none);
+2 bad input (an unknown experiment or parameter, a bad value, a path parameter outside the project,
+a folder that is not a project, a malformed manifest, claims file or stored result, an unreachable
+cluster); 130 / 143 cancelled by Ctrl-C / SIGTERM (running kernels are killed, nothing half-written
+is kept).
 """
 
 from __future__ import annotations
@@ -15,6 +17,8 @@ import errno
 import os
 import signal
 import sys
+
+from .._optional import MissingExtraError
 
 __all__ = ["main", "build_parser"]
 
@@ -267,17 +271,19 @@ def main(argv: list[str] | None = None) -> int:
     Returns
     -------
     int
-        The exit status: 0 success; 1 a notebook or run failed (or runs are missing or corrupt), or
-        no space was left on the device; 2 bad input;
+        The exit status: 0 success; 1 a notebook or run failed (or runs are missing or corrupt),
+        no space was left on the device, or a package of the ``[lab]`` extra the command needs is
+        not installed (one line names it and the install command); 2 bad input;
         130 / 143 cancelled by Ctrl-C / SIGTERM; 141 the reader of stdout went away.
     """
     previous = signal.signal(signal.SIGTERM, _on_sigterm) if _main_thread() else None
     try:
         return _main(argv)
     except KeyboardInterrupt as exc:
-        from .execute import kill_kernels
+        with contextlib.suppress(MissingExtraError):  # without the [lab] extra no kernel was started
+            from .execute import kill_kernels
 
-        kill_kernels()
+            kill_kernels()
         _err("cancelled: running kernels stopped; completed runs are kept, nothing partial is marked complete")
         return 143 if isinstance(exc, Terminated) else 130
     except BrokenPipeError:  # `thesis-lab list | head -1`: the reader left; say nothing more
@@ -324,21 +330,33 @@ def _project_named(variable: str, folder: str | None):
             os.environ[variable] = previous
 
 
-def _run(args) -> int:
-    from nbclient.exceptions import CellExecutionError
+def _lab_errors() -> tuple[tuple[type[Exception], ...], tuple[type[Exception], ...]]:
+    """(the sweep's ClusterError,), (nbclient's CellExecutionError,); both empty without the [lab] extra."""
+    try:
+        from nbclient.exceptions import CellExecutionError
 
+        from .sweep import ClusterError
+    except ImportError:  # report and data run without [lab]; the other commands say what is missing
+        return (), ()
+    return (ClusterError,), (CellExecutionError,)
+
+
+def _run(args) -> int:
     from .data import DataError
     from .experiments import ParameterError
     from .paths import ProjectError
     from .report import ClaimError
     from .results import ResultsError
-    from .sweep import ClusterError
 
+    cluster_error, cell_error = _lab_errors()
     try:
         code = args.func(args)
         sys.stdout.flush()  # inside the try: a closed pipe is reported here, not at exit
         return code
-    except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, ClusterError) as exc:
+    except MissingExtraError as exc:
+        _err(f"error: {exc}")
+        return 1
+    except (ParameterError, DataError, ClaimError, ResultsError, ProjectError, *cluster_error) as exc:
         _err(f"error: {exc}")
         return 2
     except OSError as exc:
@@ -349,7 +367,7 @@ def _run(args) -> int:
              "complete (every write goes to a temporary file or folder first, and it was removed; runs "
              "completed before are kept); free some space and run the command again")
         return 1
-    except CellExecutionError as exc:
+    except cell_error as exc:
         _err(f"error: the notebook failed; nothing was stored:\n{str(exc).strip()[-2000:]}")
         return 1
 

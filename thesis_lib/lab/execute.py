@@ -24,15 +24,19 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
-from jupyter_client import AsyncKernelManager
-from traitlets import Dict, Unicode
-
+from .._optional import require
 from . import atomic
 from .experiments import OUTPUT_PARAMETER
 from .paths import PROJECT_ENV
 
 if TYPE_CHECKING:  # traitlets.config is imported only when a run is configured
     from traitlets.config import Config
+
+# The kernel manager below subclasses jupyter_client's and declares traitlets: this module (the core
+# of the laboratory) needs the [lab] extra to import, and says so when it is missing.
+AsyncKernelManager = require("jupyter_client", extra="lab", purpose="running experiments").AsyncKernelManager
+Dict = require("traitlets", extra="lab", purpose="running experiments").Dict
+Unicode = require("traitlets", extra="lab", purpose="running experiments").Unicode
 
 __all__ = [
     "RunSpec",
@@ -160,7 +164,7 @@ def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | Non
     traitlets.config.Config
         The ``LabKernelManager`` settings, for papermill's or nbclient's ``config``.
     """
-    import zmq
+    zmq = require("zmq", extra="lab", purpose="encrypted kernel connections")
     from traitlets.config import Config
 
     cfg = Config()
@@ -329,9 +333,9 @@ def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False
         ``status`` "ok" or "failed" (the notebook raised, the kernel died, the outputs were too
         large): never raises for a failing notebook.
     """
-    import papermill as pm
-
     from .results import check_name
+
+    pm = require("papermill", extra="lab", purpose="running experiments")
 
     start = time.perf_counter()
     scratch = _scratch(check_name(spec.name))

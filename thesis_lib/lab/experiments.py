@@ -15,8 +15,7 @@ import math
 from collections.abc import Mapping
 from pathlib import Path
 
-import nbformat
-
+from .._optional import require
 from .paths import project_root
 
 __all__ = [
@@ -128,7 +127,8 @@ def experiment_parameters(name: str) -> dict[str, object]:
         If the experiment is unknown, it has not exactly one ``parameters`` cell, or that cell is not
         valid Python or does anything but assign such literals to names.
     """
-    nb = nbformat.read(notebook_path(name), as_version=4)
+    path = notebook_path(name)
+    nb = require("nbformat", extra="lab", purpose="reading experiment notebooks").read(path, as_version=4)
     try:
         tree = ast.parse(_parameters_cell(nb))
     except SyntaxError as exc:

@@ -23,8 +23,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import nbformat
-
+from .._optional import require
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, LabKernelManager, RunOutput, RunSpec, cancellable, execute, kernel_config
 from .experiments import (
@@ -412,9 +411,9 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
     -----
     A failing cell raises nbclient's ``CellExecutionError``; nothing is rewritten.
     """
-    from nbclient import NotebookClient
-
     nb_path = _store_target(path)
+    NotebookClient = require("nbclient", extra="lab", purpose="storing executed notebooks").NotebookClient
+    nbformat = require("nbformat", extra="lab", purpose="storing executed notebooks")
     nb = nbformat.read(nb_path, as_version=4)
     results_root = project_root() / "experiments" / "results"
     results_root.mkdir(parents=True, exist_ok=True)

@@ -28,6 +28,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from .._optional import require
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker
 from .experiments import ParameterError, resolve_parameters, run_hash
@@ -204,8 +205,9 @@ def dask_client(
         If the scheduler cannot be reached within ``timeout`` seconds (nothing is started), or a
         worker lacks a package the runs need (named).
     """
-    import dask
-    from distributed import Client, LocalCluster
+    dask = require("dask", extra="lab", purpose="sweeps on Dask")
+    distributed = require("distributed", extra="lab", purpose="sweeps on Dask")
+    Client, LocalCluster = distributed.Client, distributed.LocalCluster
 
     say = log or (lambda text: None)
     cluster = None
@@ -236,7 +238,7 @@ def dask_client(
                 worker, names = next(iter(missing.items()))
                 raise ClusterError(
                     f"{len(missing)} Dask worker(s) cannot run experiments: {worker} is missing "
-                    f"{', '.join(names)}; install the project there (pip install thesis-lab with its extras)"
+                    f"{', '.join(names)}; install the project there (pip install \"thesis-lab[lab]\")"
                 )
             if "dashboard" in client.scheduler_info().get("services", {}):
                 say(f"Dask dashboard: {client.dashboard_link}")
@@ -251,7 +253,7 @@ class _Progress:
     """The sweep's progress bar: completed / failed / skipped / running."""
 
     def __init__(self, total: int, desc: str, enabled: bool):
-        from tqdm.auto import tqdm
+        tqdm = require("tqdm.auto", extra="lab", purpose="the progress bar of sweeps").tqdm
 
         self.counts = {"ok": 0, "failed": 0, "skipped": 0, "running": 0}
         self.bar = tqdm(total=total, desc=desc, disable=not enabled, unit="run")

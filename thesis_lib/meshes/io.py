@@ -3,7 +3,7 @@
 So that users can bring their own surfaces to the curvature estimates of chapter 3 (and take ours
 to ParaView or any VTK tool), meshes convert to and from pyvista, whose readers and writers cover
 the common formats; the library's own form is the pair ``(vertices (nv, 3), faces (m, 3))``.
-pyvista is imported on first use (it is slow to import).
+pyvista (the ``[mesh]`` extra) is imported on first use (it is slow to import).
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
 from .._validate import InvalidTypeError, as_points, check_simplices
 
 if TYPE_CHECKING:  # pyvista is slow to import: loaded on first use (_pyvista)
@@ -29,9 +30,7 @@ def _pyvista():
 
     with warnings.catch_warnings():  # pyvista's tqdm import warns with this machine's path
         warnings.filterwarnings("ignore", message="IProgress not found")
-        import pyvista
-
-    return pyvista
+        return require("pyvista", extra="mesh", purpose="mesh files and pyvista meshes")
 
 
 def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyData:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
 from .._validate import as_points, check_int
 from ..complexes.scaling import scaled
 
@@ -78,9 +79,12 @@ def ball_pivoting(points: npt.ArrayLike, normals: npt.ArrayLike | None = None,
     ValueError
         On invalid or duplicate points, fewer than 4, points not in R³, normals not of the points'
         shape, or radii that are not positive finite numbers.
+    ImportError
+        If pymeshlab is not installed (the ``[mesh]`` extra).
     """
-    import pymeshlab
     from scipy.spatial import cKDTree
+
+    pymeshlab = require("pymeshlab", extra="mesh", purpose="ball pivoting")
 
     pts = as_points(points, min_points=4, allow_duplicates=False)
     if pts.shape[1] != 3:

@@ -8,6 +8,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
+
 if TYPE_CHECKING:  # matplotlib is imported on first use
     from matplotlib.figure import Figure
 
@@ -133,7 +135,7 @@ def mesh_figure(images: Iterable[npt.ArrayLike], titles: Sequence[str] | None = 
     ValueError
         If ``images`` is empty.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="mesh figures")
     from matplotlib.cm import ScalarMappable
     from matplotlib.colors import Normalize
 

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
+from .._optional import require
 from ..persistence.barcode import Barcode
 from .bifiltration import Bifiltration
 from .invariants import check_grid, fibered_barcode
@@ -59,7 +60,7 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt
     ValueError
         A bad grid, or ``values`` of the wrong shape.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting Hilbert functions")
     from matplotlib.colors import BoundaryNorm
 
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
@@ -163,7 +164,7 @@ def plot_fibered_barcodes(ax: Axes, bifiltration: Bifiltration, base: npt.ArrayL
     ValueError
         A direction that is not positive, or coefficients that are not a prime.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting fibered barcodes")
 
     base = np.asarray(base, dtype=np.float64)
     dirs = np.atleast_2d(np.asarray(directions, dtype=np.float64))

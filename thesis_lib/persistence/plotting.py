@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .._optional import require
 from .barcode import Barcode
 
 if TYPE_CHECKING:
@@ -18,7 +19,7 @@ __all__ = ["plot_barcode", "plot_diagram"]
 
 def _color(dim: int) -> str:
     """One colour per homology dimension, shared by barcodes and diagrams (the book's style)."""
-    from ..graphics.style import COLORS  # imports matplotlib: only when plotting
+    from ..graphics.style import COLORS
 
     dims = COLORS["dims"]
     return dims[dim % len(dims)]
@@ -94,7 +95,7 @@ def plot_barcode(
         No dimension to draw, a negative ``min_length`` or ``min_fraction``, more than ``max_bars``
         bars, or a number of ``axes`` other than of ``dims``.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting barcodes")
 
     dims = _dims(barcode, dims)
     for name, value in (("min_length", min_length), ("min_fraction", min_fraction)):
@@ -191,7 +192,7 @@ def plot_diagram(
     ValueError
         No dimension to draw.
     """
-    import matplotlib.pyplot as plt
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting persistence diagrams")
 
     dims = _dims(barcode, dims)
     right = _right_edge(barcode, dims, max_value)
