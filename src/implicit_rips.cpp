@@ -1,0 +1,770 @@
+// The implicit Vietoris–Rips persistence engine: the barcode of a Rips filtration without storing its
+// simplices (Ripser's reduction, Bauer 2021, on the cohomology side with clearing, apparent and
+// emergent pairs; the port of thesis_lib/persistence/implicit.py's kernels).
+//
+// H0 by union–find over the edges in filtration order; in each dimension k >= 1 the candidates (the
+// k-simplices not cleared) are tested for zero apparent pairs in parallel, the others reduced as
+// coboundary columns, latest first, with a lazy working column: a heap of coboundary enumerators, one
+// per added coboundary f · δs, each yielding the cofaces of s in filtration order (diameter up,
+// index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <thread>
+
+#include <nanobind/stl/tuple.h>
+#include <nanobind/stl/vector.h>
+
+#include "arrays.hpp"
+#include "column_heap.hpp"
+#include "implicit_rips_graph.hpp"
+#include "union_find.hpp"
+
+namespace thesis {
+namespace rips {
+
+// ---------------------------------------------------------------------------- the graph
+// Symmetric neighbour lists from the edges (u, v), each list sorted by decreasing neighbour.
+// Thesis: Definition 2.11 (the edges of the Rips complex, diameter <= 2 eps).
+std::tuple<Array<i64>, Array<i64>, Array<double>> neighbour_lists(i64 n, In<i64, nb::ndim<2>> edges,
+                                                                  In<double, nb::ndim<1>> lengths) {
+    if (n < 0) throw std::invalid_argument("neighbour_lists: n must be >= 0");
+    if (edges.shape(1) != 2) throw std::invalid_argument("neighbour_lists: edges must have shape (m, 2)");
+    if (lengths.shape(0) != edges.shape(0))
+        throw std::invalid_argument("neighbour_lists: lengths must have one entry per edge");
+    const i64 m = static_cast<i64>(edges.shape(0));
+    const i64* E = edges.data();
+    const double* L = lengths.data();
+    for (i64 e = 0; e < 2 * m; ++e)
+        if (E[e] < 0 || E[e] >= n) throw std::invalid_argument("neighbour_lists: an edge has a vertex outside 0 .. n - 1");
+    std::vector<i64> indptr(static_cast<std::size_t>(n + 1), 0), nbr;
+    std::vector<double> length;
+    {
+        nb::gil_scoped_release release;
+        for (i64 e = 0; e < m; ++e) {
+            indptr[E[2 * e] + 1] += 1;
+            indptr[E[2 * e + 1] + 1] += 1;
+        }
+        for (i64 v = 0; v < n; ++v) indptr[v + 1] += indptr[v];
+        std::vector<i64> fill(indptr.begin(), indptr.end() - 1);
+        nbr.resize(static_cast<std::size_t>(indptr[n]));
+        length.resize(static_cast<std::size_t>(indptr[n]));
+        // edges (u, v) with u < v in any order: place v in u's list and u in v's, then sort each list
+        for (i64 e = 0; e < m; ++e) {
+            const i64 u = E[2 * e], v = E[2 * e + 1];
+            nbr[fill[u]] = v;
+            length[fill[u]] = L[e];
+            ++fill[u];
+            nbr[fill[v]] = u;
+            length[fill[v]] = L[e];
+            ++fill[v];
+        }
+        std::vector<i64> order;
+        std::vector<i64> tn;
+        std::vector<double> tl;
+        for (i64 v = 0; v < n; ++v) {
+            const i64 a = indptr[v], b = indptr[v + 1];
+            bool rising = true;  // edges in lexicographic order (every source of ours) fill each list rising
+            for (i64 e = a + 1; e < b; ++e) {
+                if (nbr[e] <= nbr[e - 1]) {
+                    rising = false;
+                    break;
+                }
+            }
+            if (rising) {
+                std::reverse(nbr.begin() + a, nbr.begin() + b);
+                std::reverse(length.begin() + a, length.begin() + b);
+            } else {  // by decreasing neighbour, ties (repeated edges) in their order
+                order.resize(static_cast<std::size_t>(b - a));
+                for (i64 e = a; e < b; ++e) order[e - a] = e;
+                std::stable_sort(order.begin(), order.end(), [&](i64 x, i64 y) { return nbr[x] > nbr[y]; });
+                tn.resize(order.size());
+                tl.resize(order.size());
+                for (std::size_t t = 0; t < order.size(); ++t) {
+                    tn[t] = nbr[order[t]];
+                    tl[t] = length[order[t]];
+                }
+                std::copy(tn.begin(), tn.end(), nbr.begin() + a);
+                std::copy(tl.begin(), tl.end(), length.begin() + a);
+            }
+        }
+    }
+    const std::size_t total = nbr.size();
+    return {to_numpy(std::move(indptr)), to_numpy(std::move(nbr), {total}), to_numpy(std::move(length), {total})};
+}
+
+// The graph's lists sorted by increasing distance, ties by decreasing neighbour (for the apparent
+// pairs and the far cofaces), and the dense matrix when asked for.
+void prepare(Graph& g, bool dense) {
+    const i64 n = g.n;
+    const i64 total = g.indptr[n];
+    g.dnbr.resize(static_cast<std::size_t>(total));
+    g.dlen.resize(static_cast<std::size_t>(total));
+    std::vector<i64> order;
+    for (i64 v = 0; v < n; ++v) {
+        const i64 a = g.indptr[v], b = g.indptr[v + 1];
+        order.resize(static_cast<std::size_t>(b - a));
+        for (i64 e = a; e < b; ++e) order[e - a] = e;
+        std::sort(order.begin(), order.end(), [&](i64 x, i64 y) {
+            return g.length[x] < g.length[y] || (g.length[x] == g.length[y] && g.nbr[x] > g.nbr[y]);
+        });
+        for (i64 t = 0; t < b - a; ++t) {
+            g.dnbr[a + t] = g.nbr[order[t]];
+            g.dlen[a + t] = g.length[order[t]];
+        }
+    }
+    g.dense = dense;
+    if (dense) {
+        g.D.assign(static_cast<std::size_t>(n * n), kInf);
+        for (i64 u = 0; u < n; ++u)
+            for (i64 e = g.indptr[u]; e < g.indptr[u + 1]; ++e) g.D[u * n + g.nbr[e]] = g.length[e];
+    }
+}
+
+// ---------------------------------------------------------------------------- dimension 0
+// Every edge as (diameter, index = C(u, 2) + v for u > v), by increasing index.
+void edges_by_index(const Graph& g, std::vector<double>& ed, std::vector<i64>& ei) {
+    ed.clear();
+    ei.clear();
+    ed.reserve(static_cast<std::size_t>(g.indptr[g.n] / 2));
+    ei.reserve(static_cast<std::size_t>(g.indptr[g.n] / 2));
+    for (i64 u = 0; u < g.n; ++u) {
+        for (i64 e = g.indptr[u + 1] - 1; e >= g.indptr[u]; --e) {  // neighbours increasing
+            const i64 v = g.nbr[e];
+            if (v >= u) break;
+            ed.push_back(g.length[e]);
+            ei.push_back(u * (u - 1) / 2 + v);
+        }
+    }
+}
+
+// Union–find over the edges in filtration order (diameter up, index down): the deaths of the H0
+// classes (elder rule), the number of components, and the positive edges (those closing a cycle).
+// Thesis: Definition 2.31 (elder rule), §2.3.4.
+void h0(i64 n, const std::vector<double>& ed, const std::vector<i64>& ei, std::vector<double>& deaths, i64& comps,
+        std::vector<char>& positive) {
+    const i64 m = static_cast<i64>(ed.size());
+    std::vector<i64> order(static_cast<std::size_t>(m));
+    for (i64 e = 0; e < m; ++e) order[e] = e;
+    std::sort(order.begin(), order.end(),
+              [&](i64 a, i64 b) { return ed[a] < ed[b] || (ed[a] == ed[b] && ei[a] > ei[b]); });
+    std::vector<i64> parent(static_cast<std::size_t>(n));
+    for (i64 v = 0; v < n; ++v) parent[v] = v;
+    deaths.clear();
+    positive.assign(static_cast<std::size_t>(m), 0);
+    for (i64 t = 0; t < m; ++t) {
+        const i64 e = order[t];
+        i64 u = static_cast<i64>((1.0 + std::sqrt(1.0 + 8.0 * static_cast<double>(ei[e]))) / 2.0);
+        while (u * (u - 1) / 2 > ei[e]) --u;  // ei = C(u, 2) + v with v < u
+        while ((u + 1) * u / 2 <= ei[e]) ++u;
+        i64 a = find(parent.data(), u);
+        i64 b = find(parent.data(), ei[e] - u * (u - 1) / 2);
+        if (a == b) {
+            positive[e] = 1;
+            continue;
+        }
+        if (a < b) std::swap(a, b);
+        parent[a] = b;
+        deaths.push_back(ed[e]);
+    }
+    comps = 0;
+    for (i64 v = 0; v < n; ++v)
+        if (parent[v] == v) ++comps;
+}
+
+// ---------------------------------------------------------------------------- apparent pairs
+// For the candidates lo .. hi − 1 (each independent of the others): the earliest coface if it has the
+// same diameter (else −1), its sign, and whether the two form a zero apparent pair.
+// Thesis: Definitions 4.30–4.33 (apparent pairs: a discrete gradient), Theorem 4.42's idea.
+void apparent_block(const Graph& g, i64 lo, i64 hi, i64 k, const i64* cand_i, const double* cand_d, i64* tau,
+                    i64* sign, char* apparent) {
+    std::vector<i64> verts(static_cast<std::size_t>(k + 2)), cur(static_cast<std::size_t>(k + 2)),
+        w(static_cast<std::size_t>(k + 2));
+    double od[1];
+    i64 oi[1], om[1];
+    std::vector<double> pd(static_cast<std::size_t>((k + 2) * (k + 2)), 0.0);
+    for (i64 c = lo; c < hi; ++c) {
+        vertices(g, cand_i[c], k, verts.data());
+        const Coface t = zero_pivot_cofacet(g, verts.data(), k, cand_i[c], cand_d[c], cur.data(), od, oi, om);
+        if (t.index != -1) {
+            tau[c] = t.index;
+            sign[c] = 1 - 2 * (t.m & 1);
+            if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
+                for (i64 r = 0; r < k + 2; ++r) w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
+            const i64 f = zero_pivot_facet(g, t.index, k + 1, cand_d[c], w.data(), pd.data(), t.j >= 0);
+            apparent[c] = f == cand_i[c];
+        }
+    }
+}
+
+// apparent_block over every candidate: above parallel_min candidates in 8 · threads blocks shared by
+// the threads (the output does not depend on how the blocks are shared).
+void apparent(const Graph& g, i64 k, const std::vector<i64>& cand_i, const std::vector<double>& cand_d,
+              std::vector<i64>& tau, std::vector<i64>& sign, std::vector<char>& app, int threads, i64 parallel_min) {
+    const i64 m = static_cast<i64>(cand_i.size());
+    tau.assign(static_cast<std::size_t>(m), -1);
+    sign.assign(static_cast<std::size_t>(m), 0);
+    app.assign(static_cast<std::size_t>(m), 0);
+    if (m < parallel_min || threads <= 1) {
+        apparent_block(g, 0, m, k, cand_i.data(), cand_d.data(), tau.data(), sign.data(), app.data());
+        return;
+    }
+    const i64 nblocks = 8 * static_cast<i64>(threads);
+    const i64 size = (m + nblocks - 1) / nblocks;
+    std::atomic<i64> next{0};
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+    auto work = [&](int t) {
+        try {
+            for (i64 b = next++; b < nblocks; b = next++)
+                apparent_block(g, std::min(m, b * size), std::min(m, (b + 1) * size), k, cand_i.data(),
+                               cand_d.data(), tau.data(), sign.data(), app.data());
+        } catch (...) {
+            errors[t] = std::current_exception();
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
+    for (auto& err : errors)
+        if (err) std::rethrow_exception(err);
+}
+
+// ---------------------------------------------------------------------------- the reduction
+// The working column of one dimension k: a heap of lazy coboundary enumerators (see implicit.py).
+// An enumerator's row of S (width 2k + 8): the vertices of s (decreasing), k + 1 list positions, the
+// base vertex, the phase, the factor f, a coface index to skip (the pivot being cancelled) or −1, the
+// head's key (−index) and coefficient; of F: the diameter of s and the head's diameter.  Phases: the
+// cofaces of s's own diameter d by a scan of the base vertex's neighbours (0) or by selection from
+// its distance-sorted prefix (1), then the others by merging the distance-sorted lists (2).
+// Thesis: §2.3.5, the column of Algorithm 1 being reduced, summed lazily (Bauer 2021).
+class Reducer {
+  public:
+    Reducer(const Graph& g, i64 k, i64 p)
+        : g_(g), k_(k), p_(p), w_(2 * k + 8), S_(static_cast<std::size_t>(64 * (2 * k + 8))), F_(128), heap(64) {}
+
+    ColumnHeap<double, i64, i64> heap;  // heads: (diameter, −index, enumerator)
+    i64 nr = 0;                         // enumerators in use
+
+    void clear() {
+        nr = 0;
+        heap.clear();
+    }
+
+    // Add f · δs (without skip) to the working column: a new enumerator, its head on the heap.
+    void add(i64 s, i64 f, i64 skip, double ds) {
+        if (static_cast<std::size_t>(nr * w_) == S_.size()) {
+            S_.resize(2 * S_.size());
+            F_.resize(2 * F_.size());
+        }
+        if (open(nr, s, f, skip, ds)) {
+            heap.push(F_[2 * nr + 1], S_[nr * w_ + 2 * k_ + 6], nr);
+            ++nr;
+        }
+    }
+
+    // The pivot of the working column, removed from it: (diameter, key, coefficient); coefficient 0
+    // when the column is zero.  read counts the heads popped.
+    Pivot<double, i64, i64> pop_pivot(i64& read) {
+        while (heap.size > 0) {
+            const double v = heap.value[0];
+            const i64 key = heap.key[0];
+            i64 c = 0;
+            while (heap.size > 0 && heap.key[0] == key) {
+                const i64 r = heap.coef[0];
+                c += S_[r * w_ + 2 * k_ + 7];
+                ++read;
+                if (advance(r))
+                    heap.replace_top(F_[2 * r + 1], S_[r * w_ + 2 * k_ + 6], r);
+                else
+                    heap.pop();
+            }
+            c %= p_;
+            if (c != 0) return {v, key, c};
+        }
+        return {kInf, 0, 0};
+    }
+
+  private:
+    const Graph& g_;
+    const i64 k_, p_, w_;
+    std::vector<i64> S_;
+    std::vector<double> F_;
+
+    // Index of s ∪ {j} (s the vertices in row r) and m = #vertices of s above j.
+    i64 coface_index(const i64* row, i64 j, i64& m) const {
+        i64 idx = 0;
+        m = 0;
+        for (i64 q = 0; q <= k_; ++q) {
+            const i64 v = row[q];
+            if (v > j) {
+                idx = wadd(idx, g_.binom(v, k_ + 2 - q));
+                ++m;
+            } else {
+                idx = wadd(idx, g_.binom(v, k_ + 1 - q));
+            }
+        }
+        return wadd(idx, g_.binom(j, k_ + 2 - m));
+    }
+
+    // Make s ∪ {j} (diameter d) the head of enumerator r; false when it is the one to skip.
+    bool emit(i64 r, i64 j, double d) {
+        i64* row = &S_[r * w_];
+        i64 m;
+        const i64 idx = coface_index(row, j, m);
+        if (idx == row[2 * k_ + 5]) return false;
+        row[2 * k_ + 6] = -idx;
+        const i64 f = row[2 * k_ + 4];
+        row[2 * k_ + 7] = (m & 1) == 0 ? f : p_ - f;
+        F_[2 * r + 1] = d;
+        return true;
+    }
+
+    // Enter phase 2: each list position just past the neighbours within s's diameter.
+    void start_far(i64 r) {
+        i64* row = &S_[r * w_];
+        const double d = F_[2 * r];
+        for (i64 q = 0; q <= k_; ++q) {
+            const i64 v = row[q];
+            row[k_ + 1 + q] = upper(g_.dlen.data(), g_.indptr[v], g_.indptr[v + 1], d);
+        }
+        row[2 * k_ + 3] = 2;
+    }
+
+    // Move enumerator r to its next coface; false when it has none left.
+    bool advance(i64 r) {
+        const i64 P0 = k_ + 1, AUX = 2 * k_ + 2, PH = 2 * k_ + 3;
+        const i64* indptr = g_.indptr;
+        const i64* dnbr = g_.dnbr.data();
+        const double* dlen = g_.dlen.data();
+        i64* row = &S_[r * w_];
+        const double d = F_[2 * r];
+        for (;;) {
+            const i64 ph = row[PH];
+            if (ph == 0) {  // cofaces of diameter d, by a scan of the base vertex's neighbours (j decreasing)
+                const i64 b = row[AUX];
+                i64 e = row[P0 + b];
+                const i64 end = indptr[row[b] + 1];
+                while (e < end) {
+                    const i64 j = g_.nbr[e];
+                    const double le = g_.length[e];
+                    ++e;
+                    if (le > d) continue;
+                    bool ok = true;
+                    for (i64 q = 0; q <= k_; ++q) {
+                        if (q != b && g_.dist(row[q], j) > d) {
+                            ok = false;
+                            break;
+                        }
+                    }
+                    if (ok && emit(r, j, d)) {
+                        row[P0 + b] = e;
+                        return true;
+                    }
+                }
+                start_far(r);
+            } else if (ph == 1) {  // the same set by selection: the largest j below the last one emitted
+                const i64 b = row[AUX];
+                const i64 vb = row[b];
+                const i64 last = row[P0];
+                const i64 hi = row[P0 + 1];
+                i64 best = -1;
+                for (i64 e = indptr[vb]; e < hi; ++e) {
+                    const i64 j = dnbr[e];
+                    if (j >= last || j <= best) continue;
+                    bool ok = true;
+                    for (i64 q = 0; q <= k_; ++q) {
+                        if (q != b && g_.dist(row[q], j) > d) {
+                            ok = false;
+                            break;
+                        }
+                    }
+                    if (ok) best = j;
+                }
+                if (best == -1) {
+                    start_far(r);
+                    continue;
+                }
+                row[P0] = best;
+                if (emit(r, best, d)) return true;
+            } else if (ph == 2) {  // the far cofaces: merge the distance-sorted lists by (distance, −neighbour)
+                for (;;) {
+                    i64 qi = -1;
+                    double bd = kInf;
+                    i64 bj = -1;
+                    for (i64 q = 0; q <= k_; ++q) {
+                        const i64 c = row[P0 + q];
+                        if (c < indptr[row[q] + 1]) {
+                            const double x = dlen[c];
+                            if (qi == -1 || x < bd || (x == bd && dnbr[c] > bj)) {
+                                qi = q;
+                                bd = x;
+                                bj = dnbr[c];
+                            }
+                        }
+                    }
+                    if (qi == -1) {
+                        row[PH] = 3;
+                        return false;
+                    }
+                    row[P0 + qi] += 1;
+                    bool ok = true;
+                    for (i64 q = 0; q <= k_; ++q) {
+                        if (q != qi) {
+                            const double x = g_.dist(row[q], bj);
+                            if (x > bd || (x == bd && q > qi)) {
+                                ok = false;
+                                break;
+                            }
+                        }
+                    }
+                    if (ok && emit(r, bj, bd)) return true;
+                }
+            } else {
+                return false;
+            }
+        }
+    }
+
+    // Set up enumerator r for f · δs without the coface skip; false when it yields nothing.
+    bool open(i64 r, i64 s, i64 f, i64 skip, double ds) {
+        i64* row = &S_[r * w_];
+        vertices(g_, s, k_, row);
+        F_[2 * r] = ds;
+        row[2 * k_ + 4] = f;
+        row[2 * k_ + 5] = skip;
+        i64 b = 0;
+        i64 cb = i64(1) << 62;
+        for (i64 q = 0; q <= k_; ++q) {  // the base: the vertex with the fewest neighbours within ds
+            const i64 v = row[q];
+            const i64 c = upper(g_.dlen.data(), g_.indptr[v], g_.indptr[v + 1], ds) - g_.indptr[v];
+            if (c < cb) {
+                cb = c;
+                b = q;
+            }
+        }
+        const i64 vb = row[b];
+        row[2 * k_ + 2] = b;
+        if (cb == 0) {
+            start_far(r);
+        } else if (cb * cb <= g_.degree(vb)) {
+            row[2 * k_ + 3] = 1;
+            row[k_ + 1] = g_.n;  // last j emitted: none yet
+            row[k_ + 2] = g_.indptr[vb] + cb;
+        } else {
+            row[2 * k_ + 3] = 0;
+            row[k_ + 1 + b] = g_.indptr[vb];
+        }
+        return advance(r);
+    }
+};
+
+// The outcome of one dimension's reduction.
+struct Reduced {
+    std::vector<double> births, deaths, ess;
+    Table pivots{0};
+    i64 emergent = 0, worked = 0, additions = 0, read = 0, most = 0;
+};
+
+// Reduce the coboundary columns of the k-simplices col_i (latest first) over Z/p: col_tau/col_sign
+// give each column's earliest coface when it has the column's diameter (else −1) and its sign; app
+// is the table tau → s of the zero apparent pairs (s, tau) of this dimension.
+// Thesis: Algorithm 1 (Reduce) inside Algorithm 2, §2.3.5, on the cohomology side (Theorem 2.39),
+// with emergent and apparent pairs (Definitions 4.30–4.33).
+Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::vector<double>& col_d,
+               const std::vector<i64>& col_tau, const std::vector<i64>& col_sign, const Table& app, i64 p) {
+    const i64 ncol = static_cast<i64>(col_i.size());
+    Reduced out;
+    out.pivots = Table(ncol);
+    Table& piv_t = out.pivots;
+    std::vector<i64> pcoef(static_cast<std::size_t>(ncol), 0), vstart(static_cast<std::size_t>(ncol), -1),
+        vlen(static_cast<std::size_t>(ncol), 0);
+    std::vector<i64> pool_s, pool_c;
+    std::vector<double> pool_d;
+    std::vector<i64> verts(static_cast<std::size_t>(k + 2)), w(static_cast<std::size_t>(k + 2));
+    std::vector<i64> wk, wc, pos, sums;
+    std::vector<double> wd;
+    Reducer col(g, k, p);
+    for (i64 c = 0; c < ncol; ++c) {
+        const i64 s = col_i[c];
+        const double ds = col_d[c];
+        const i64 t = col_tau[c];
+        if (t != -1) {  // emergent pair: the earliest coface has s's diameter and nobody owns it
+            const i64 h = piv_t.slot(t);
+            if (piv_t.keys[h] == -1 && !app.contains(t)) {
+                piv_t.keys[h] = t;
+                piv_t.vals[h] = c;
+                pcoef[c] = floor_mod(col_sign[c], p);
+                ++out.emergent;
+                continue;
+            }
+        }
+        col.clear();
+        col.add(s, 1, -1, ds);
+        wk.clear();
+        wc.clear();
+        wd.clear();
+        i64 piv = -1;
+        for (;;) {
+            const Pivot<double, i64, i64> pv = col.pop_pivot(out.read);
+            if (pv.coef == 0) {  // the column is zero: s creates an essential class
+                piv = -1;
+                break;
+            }
+            piv = -pv.key;
+            const i64 h = piv_t.slot(piv);
+            if (piv_t.keys[h] != -1) {  // add the column owning this pivot: factor · Σ_{s' in V_o} δ(s')
+                const i64 o = piv_t.vals[h];
+                const i64 factor = (p - pv.coef * mod_inverse(pcoef[o], p) % p) % p;
+                const i64 ol = vstart[o] == -1 ? 1 : vlen[o] + 1;
+                for (i64 q = 0; q < ol; ++q) {
+                    i64 so, co;
+                    double dso;
+                    if (q == 0) {
+                        so = col_i[o];
+                        co = 1;
+                        dso = col_d[o];
+                    } else {
+                        so = pool_s[vstart[o] + q - 1];
+                        co = pool_c[vstart[o] + q - 1];
+                        dso = pool_d[vstart[o] + q - 1];
+                    }
+                    const i64 f = factor * co % p;
+                    wk.push_back(so);
+                    wc.push_back(f);
+                    wd.push_back(dso);
+                    col.add(so, f, piv, dso);
+                }
+                ++out.additions;
+                continue;
+            }
+            const i64 ha = app.slot(piv);
+            if (app.keys[ha] != -1) {  // pivot of a zero apparent pair (e, tau): add δe, the column of e
+                const i64 e = app.vals[ha];
+                const double de = pv.value;  // the pair has equal diameters
+                vertices(g, piv, k + 1, w.data());
+                vertices(g, e, k, verts.data());
+                i64 r = 0;
+                while (r <= k && w[r] == verts[r]) ++r;
+                const i64 se = (r & 1) == 0 ? 1 : p - 1;  // coefficient of tau in δe: (−1)^r
+                const i64 factor = (p - pv.coef * mod_inverse(se, p) % p) % p;
+                wk.push_back(e);
+                wc.push_back(factor);
+                wd.push_back(de);
+                col.add(e, factor, piv, de);
+                ++out.additions;
+                continue;
+            }
+            // the pivot is free: (s, tau) is a persistence pair
+            if (pv.value > ds) {
+                out.births.push_back(ds);
+                out.deaths.push_back(pv.value);
+            }
+            piv_t.keys[h] = piv;
+            piv_t.vals[h] = c;
+            pcoef[c] = pv.coef;
+            break;
+        }
+        out.most = std::max(out.most, col.nr);
+        const i64 wn = static_cast<i64>(wk.size());
+        if (wn > 0) ++out.worked;
+        if (piv == -1) {
+            out.ess.push_back(ds);
+            continue;
+        }
+        if (wn > 0) {  // store V_c (merged, zeros dropped; s itself is implicit) for later additions
+            merge_entries(wk.data(), wc.data(), wn, p, pos, sums);
+            vstart[c] = static_cast<i64>(pool_s.size());
+            for (std::size_t q = 0; q < pos.size(); ++q) {
+                pool_s.push_back(wk[pos[q]]);
+                pool_c.push_back(sums[q]);
+                pool_d.push_back(wd[pos[q]]);
+            }
+            vlen[c] = static_cast<i64>(pos.size());
+        }
+    }
+    return out;
+}
+
+// ---------------------------------------------------------------------------- candidates of dimension k >= 2
+// All k-simplices as cofaces of the (k−1)-simplices whose new vertex is the largest, in that order.
+// Thesis: Definition 2.11 (the flag complex, dimension by dimension).
+void next_simplices(const Graph& g, i64 k, std::vector<i64>& all_i, std::vector<double>& all_d, i64 maxdeg) {
+    std::vector<i64> out_i;
+    std::vector<double> out_d;
+    out_i.reserve(all_i.size());
+    out_d.reserve(all_i.size());
+    std::vector<i64> verts(static_cast<std::size_t>(k + 1)), cur(static_cast<std::size_t>(k + 1));
+    std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
+    std::vector<i64> oi(static_cast<std::size_t>(maxdeg + 1)), om(static_cast<std::size_t>(maxdeg + 1));
+    for (std::size_t s = 0; s < all_i.size(); ++s) {
+        vertices(g, all_i[s], k - 1, verts.data());
+        const i64 c = cofaces(g, verts.data(), k - 1, all_i[s], all_d[s], cur.data(), od.data(), oi.data(), om.data(),
+                              false, true);
+        out_i.insert(out_i.end(), oi.begin(), oi.begin() + c);
+        out_d.insert(out_d.end(), od.begin(), od.begin() + c);
+    }
+    all_i.swap(out_i);
+    all_d.swap(out_d);
+}
+
+// One dimension's output: births, deaths, essential births and the statistics (simplices, apparent,
+// columns, emergent, reduced, additions, entries, enumerators).
+using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>>;
+
+struct DimOut {
+    std::vector<double> births, deaths, ess;
+    std::vector<i64> stats;
+};
+
+// Refuse a graph that is not the symmetric, sorted neighbour lists of rips_graph.
+void check_graph(i64 n, const i64* indptr, std::size_t nptr, const i64* nbr, const double* length, std::size_t nnbr,
+                 std::size_t nlen) {
+    if (n < 1) throw std::invalid_argument("rips_barcode: n must be >= 1");
+    if (nptr != static_cast<std::size_t>(n + 1)) throw std::invalid_argument("rips_barcode: indptr must have n + 1 entries");
+    if (indptr[0] != 0) throw std::invalid_argument("rips_barcode: indptr[0] must be 0");
+    for (i64 v = 0; v < n; ++v)
+        if (indptr[v + 1] < indptr[v]) throw std::invalid_argument("rips_barcode: indptr must be non-decreasing");
+    if (static_cast<std::size_t>(indptr[n]) != nnbr || nlen != nnbr)
+        throw std::invalid_argument("rips_barcode: indptr[n], neighbours and lengths disagree in size");
+    for (i64 v = 0; v < n; ++v) {
+        for (i64 e = indptr[v]; e < indptr[v + 1]; ++e) {
+            const i64 u = nbr[e];
+            if (u < 0 || u >= n || u == v) throw std::invalid_argument("rips_barcode: a neighbour outside 0 .. n - 1");
+            if (e > indptr[v] && nbr[e - 1] <= u)
+                throw std::invalid_argument("rips_barcode: neighbour lists must be strictly decreasing");
+            if (std::isnan(length[e])) throw std::invalid_argument("rips_barcode: a length is NaN");
+        }
+    }
+    for (i64 v = 0; v < n; ++v) {  // symmetric, with equal lengths (lists sorted: binary search)
+        for (i64 e = indptr[v]; e < indptr[v + 1]; ++e) {
+            const i64 u = nbr[e];
+            i64 lo = indptr[u], hi = indptr[u + 1];
+            while (lo < hi) {
+                const i64 mid = (lo + hi) >> 1;
+                if (nbr[mid] > v)
+                    lo = mid + 1;
+                else
+                    hi = mid;
+            }
+            if (lo == indptr[u + 1] || nbr[lo] != v || !(length[lo] == length[e]))
+                throw std::invalid_argument("rips_barcode: the neighbour lists are not symmetric");
+        }
+    }
+}
+
+// The barcode of the Rips filtration of the graph in dimensions 0 .. max_dim − 1, in diameters: for
+// dimension 0 the deaths (births 0) and, as essential births, one 0 per component; above, births,
+// deaths and essential births, with the statistics of the reduction.
+// Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, by the dual reduction),
+// Definitions 4.30–4.33 and Theorem 4.42 (apparent pairs as a discrete gradient).
+std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, nb::ndim<1>> neighbours,
+                                    In<double, nb::ndim<1>> lengths, i64 max_dim, i64 p, bool dense, int n_threads,
+                                    i64 parallel_min) {
+    check_graph(n, indptr.data(), indptr.shape(0), neighbours.data(), lengths.data(), neighbours.shape(0),
+                lengths.shape(0));
+    if (max_dim < 1 || max_dim > n + 1) throw std::invalid_argument("rips_barcode: max_dim must be in 1 .. n + 1");
+    if (p < 2 || p >= (i64(1) << 31)) throw std::invalid_argument("rips_barcode: p must be a prime below 2^31");
+    if (dense && n > 46340) throw std::invalid_argument("rips_barcode: too many points for a dense matrix");
+    const int threads = thread_count(n_threads);
+    std::vector<DimOut> dims(static_cast<std::size_t>(max_dim));
+    {
+        nb::gil_scoped_release release;
+        Graph g;
+        g.n = n;
+        g.indptr = indptr.data();
+        g.nbr = neighbours.data();
+        g.length = lengths.data();
+        binomials(g, std::max(n + 1, max_dim + 2), max_dim + 1);
+        prepare(g, dense);
+        i64 maxdeg = 0;
+        for (i64 v = 0; v < n; ++v) maxdeg = std::max(maxdeg, g.degree(v));
+        // ---- H0: union–find
+        std::vector<double> ed;
+        std::vector<i64> ei;
+        edges_by_index(g, ed, ei);
+        std::vector<char> positive;
+        i64 comps = 0;
+        h0(n, ed, ei, dims[0].deaths, comps, positive);
+        dims[0].ess.assign(static_cast<std::size_t>(comps), 0.0);
+        // ---- dimensions 1 .. max_dim − 1: cohomology with clearing, apparent and emergent pairs
+        std::vector<i64> all_i = ei, cand_i;  // every (k−1)-simplex, to generate the k-simplices
+        std::vector<double> all_d = ed, cand_d;
+        for (std::size_t e = 0; e < ei.size(); ++e) {
+            if (positive[e]) {
+                cand_i.push_back(ei[e]);
+                cand_d.push_back(ed[e]);
+            }
+        }
+        std::vector<i64> tau, sign;
+        std::vector<char> app;
+        for (i64 k = 1; k < max_dim; ++k) {
+            apparent(g, k, cand_i, cand_d, tau, sign, app, threads, parallel_min);
+            i64 napp = 0;
+            for (char a : app) napp += a;
+            Table app_t(napp);
+            std::vector<i64> cols;
+            for (std::size_t c = 0; c < cand_i.size(); ++c) {
+                if (app[c]) {
+                    const i64 h = app_t.slot(tau[c]);
+                    app_t.keys[h] = tau[c];
+                    app_t.vals[h] = cand_i[c];
+                } else {
+                    cols.push_back(static_cast<i64>(c));
+                }
+            }
+            // latest first: diameter down, index up
+            std::sort(cols.begin(), cols.end(), [&](i64 a, i64 b) {
+                return cand_d[a] > cand_d[b] || (cand_d[a] == cand_d[b] && cand_i[a] < cand_i[b]);
+            });
+            std::vector<i64> col_i(cols.size()), col_tau(cols.size()), col_sign(cols.size());
+            std::vector<double> col_d(cols.size());
+            for (std::size_t c = 0; c < cols.size(); ++c) {
+                col_i[c] = cand_i[cols[c]];
+                col_d[c] = cand_d[cols[c]];
+                col_tau[c] = tau[cols[c]];
+                col_sign[c] = sign[cols[c]];
+            }
+            Reduced red = reduce(g, k, col_i, col_d, col_tau, col_sign, app_t, p);
+            DimOut& out = dims[static_cast<std::size_t>(k)];
+            out.births = std::move(red.births);
+            out.deaths = std::move(red.deaths);
+            out.ess = std::move(red.ess);
+            out.stats = {static_cast<i64>(cand_i.size()), napp, static_cast<i64>(col_i.size()), red.emergent,
+                         red.worked, red.additions, red.read, red.most};
+            if (k + 1 < max_dim) {
+                next_simplices(g, k + 1, all_i, all_d, maxdeg);
+                cand_i.clear();
+                cand_d.clear();
+                for (std::size_t c = 0; c < all_i.size(); ++c) {
+                    if (!red.pivots.contains(all_i[c]) && !app_t.contains(all_i[c])) {
+                        cand_i.push_back(all_i[c]);
+                        cand_d.push_back(all_d[c]);
+                    }
+                }
+            }
+        }
+    }
+    std::vector<DimResult> result;
+    for (DimOut& d : dims) {
+        if (d.stats.empty()) d.births.assign(d.deaths.size(), 0.0);  // dimension 0: born at 0
+        result.emplace_back(to_numpy(std::move(d.births)), to_numpy(std::move(d.deaths)), to_numpy(std::move(d.ess)),
+                            to_numpy(std::move(d.stats)));
+    }
+    return result;
+}
+
+}  // namespace rips
+}  // namespace thesis
+
+NB_MODULE(implicit_rips, m) {
+    namespace nb = nanobind;
+    m.doc() = "The implicit Vietoris–Rips persistence engine (thesis Definition 2.11, Algorithm 2, §4.2).";
+    m.def("neighbour_lists", &thesis::rips::neighbour_lists, nb::arg("n"), nb::arg("edges"), nb::arg("lengths"),
+          "Symmetric neighbour lists (indptr, neighbours, lengths) of the edges, each list by decreasing vertex.");
+    m.def("rips_barcode", &thesis::rips::rips_barcode, nb::arg("n"), nb::arg("indptr"), nb::arg("neighbours"),
+          nb::arg("lengths"), nb::arg("max_dim"), nb::arg("p"), nb::arg("dense"), nb::arg("n_threads"),
+          nb::arg("parallel_min"),
+          "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics), in diameters.");
+}

@@ -1,0 +1,317 @@
+// The neighbour graph of a Rips filtration and the simplices it determines, for the implicit engine.
+//
+// A Rips complex is a flag complex: a simplex is its vertices, its value the longest edge.  Only the
+// graph (diameter <= 2 eps) is stored, as neighbour lists sorted by decreasing vertex (nbr, length)
+// and the same lists sorted by (distance up, vertex down) (dnbr, dlen); a k-simplex {v_k > ... > v_0}
+// is the integer C(v_0, 1) + ... + C(v_k, k + 1) (the combinatorial number system), decoded by binary
+// search in a table of binomials.  Index arithmetic wraps modulo 2^64 as the numba original's int64
+// did (the Python layer refuses indices that could overflow; the table's unused corners may).
+// Used by implicit_rips.cpp only.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace thesis {
+namespace rips {
+
+using i64 = std::int64_t;
+using u64 = std::uint64_t;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// a + b and a - b modulo 2^64 (numba's int64 arithmetic, without C++'s signed-overflow UB).
+inline i64 wadd(i64 a, i64 b) { return static_cast<i64>(static_cast<u64>(a) + static_cast<u64>(b)); }
+inline i64 wsub(i64 a, i64 b) { return static_cast<i64>(static_cast<u64>(a) - static_cast<u64>(b)); }
+
+// The validated graph, its distance-sorted lists, the dense matrix (small n) and the binomials.
+struct Graph {
+    i64 n = 0;
+    const i64* indptr = nullptr;
+    const i64* nbr = nullptr;
+    const double* length = nullptr;
+    std::vector<i64> dnbr;
+    std::vector<double> dlen;
+    std::vector<double> D;  // n * n, inf where there is no edge; empty when not dense
+    bool dense = false;
+    std::vector<i64> B;  // B[v * bw + k] = C(v, k)
+    i64 bw = 0;
+
+    i64 binom(i64 v, i64 k) const { return B[static_cast<std::size_t>(v * bw + k)]; }
+    i64 degree(i64 v) const { return indptr[v + 1] - indptr[v]; }
+
+    // Distance of u and v: from the dense matrix when there is one, else by binary search in u's
+    // neighbour list (decreasing); inf if there is no edge.
+    // Thesis: Definition 2.11 (the edge lengths of the Rips graph).
+    double dist(i64 u, i64 v) const {
+        if (dense) return D[static_cast<std::size_t>(u * n + v)];
+        i64 lo = indptr[u], hi = indptr[u + 1];
+        const i64 end = hi;
+        while (lo < hi) {
+            const i64 mid = (lo + hi) >> 1;
+            if (nbr[mid] > v)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        if (lo < end && nbr[lo] == v) return length[lo];
+        return kInf;
+    }
+};
+
+// B[v, k] = C(v, k) for 0 <= v < rows, 0 <= k <= kmax (Pascal's rule, wrapping as numba's int64).
+// Thesis: §2.3.5 (the simplices of the filtration indexed by the combinatorial number system).
+inline void binomials(Graph& g, i64 rows, i64 kmax) {
+    g.bw = kmax + 1;
+    g.B.assign(static_cast<std::size_t>(rows * g.bw), 0);
+    for (i64 v = 0; v < rows; ++v) {
+        g.B[static_cast<std::size_t>(v * g.bw)] = 1;
+        const i64 top = v < kmax ? v : kmax;
+        for (i64 k = 1; k <= top; ++k)
+            g.B[static_cast<std::size_t>(v * g.bw + k)] =
+                wadd(g.B[static_cast<std::size_t>((v - 1) * g.bw + k - 1)],
+                     k <= v - 1 ? g.B[static_cast<std::size_t>((v - 1) * g.bw + k)] : 0);
+    }
+}
+
+// The vertices of the k-simplex idx, decreasing, into out[0..k].
+// Thesis: §2.3.5 (a simplex read back from its index).
+inline void vertices(const Graph& g, i64 idx, i64 k, i64* out) {
+    i64 top = g.n - 1;
+    for (i64 r = 0; r <= k; ++r) {
+        const i64 kk = k + 1 - r;
+        i64 lo = kk - 1, hi = top;
+        while (lo < hi) {
+            const i64 mid = (lo + hi + 1) >> 1;
+            if (g.binom(mid, kk) <= idx)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        out[r] = lo;
+        idx = wsub(idx, g.binom(lo, kk));
+        top = lo - 1;
+    }
+}
+
+// First position in the increasing arr[lo..hi) with a value > x.
+inline i64 upper(const double* arr, i64 lo, i64 hi, double x) {
+    while (lo < hi) {
+        const i64 mid = (lo + hi) >> 1;
+        if (arr[mid] <= x)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+// Enumerate the cofaces s ∪ {j} of the k-simplex s (vertices verts, decreasing), j decreasing: each
+// coface's diameter, index and m = #{vertices of s above j} (its sign in δs is (−1)^m) into out_*,
+// returning their number.  With first_equal it stops at the first coface of diameter diam (the
+// earliest coface when one has s's diameter) and returns 1 (0 when there is none); with above_only
+// only cofaces whose new vertex is above s's are listed (each (k+1)-simplex from exactly one facet).
+// Thesis: Definition 2.11 (a coface of a flag simplex is a common neighbour), §2.3.5 (coboundary).
+inline i64 cofaces(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur, double* out_d,
+                   i64* out_i, i64* out_m, bool first_equal, bool above_only) {
+    const i64* indptr = g.indptr;
+    const i64* nbr = g.nbr;
+    const double* length = g.length;
+    i64 base = 0;
+    for (i64 i = 0; i <= k; ++i) {
+        cur[i] = indptr[verts[i]];
+        if (indptr[verts[i] + 1] - indptr[verts[i]] < indptr[verts[base] + 1] - indptr[verts[base]]) base = i;
+    }
+    const i64 vb = verts[base];
+    i64 idx_above = 0;
+    i64 idx_below = idx;
+    i64 m = 0;
+    i64 count = 0;
+    for (i64 e = indptr[vb]; e < indptr[vb + 1]; ++e) {
+        const i64 j = nbr[e];
+        if (above_only && j < verts[0]) break;
+        while (m <= k && verts[m] > j) {
+            idx_below = wsub(idx_below, g.binom(verts[m], k + 1 - m));
+            idx_above = wadd(idx_above, g.binom(verts[m], k + 2 - m));
+            ++m;
+        }
+        double dmax = length[e] > diam ? length[e] : diam;
+        bool ok = true;
+        for (i64 i = 0; i <= k; ++i) {
+            if (i == base) continue;
+            i64 c = cur[i];
+            const i64 end = indptr[verts[i] + 1];
+            while (c < end && nbr[c] > j) ++c;
+            cur[i] = c;
+            if (c == end || nbr[c] != j) {
+                ok = false;
+                break;
+            }
+            if (length[c] > dmax) dmax = length[c];
+        }
+        if (!ok) continue;
+        if (first_equal) {
+            if (dmax == diam) {
+                out_d[0] = dmax;
+                out_i[0] = wadd(wadd(idx_above, g.binom(j, k + 2 - m)), idx_below);
+                out_m[0] = m;
+                return 1;
+            }
+            continue;
+        }
+        out_d[count] = dmax;
+        out_i[count] = wadd(wadd(idx_above, g.binom(j, k + 2 - m)), idx_below);
+        out_m[count] = m;
+        ++count;
+    }
+    return count;
+}
+
+// A coface found: its index, m = #vertices of s above the new vertex, and that vertex j (−1 when
+// unknown); index −1 when there is none.
+struct Coface {
+    i64 index;
+    i64 m;
+    i64 j;
+};
+
+// (index of s ∪ {j}, m, j) for the k-simplex s = idx; (−1, 0, −1) when j < 0.
+inline Coface with_vertex(const Graph& g, const i64* verts, i64 k, i64 idx, i64 j) {
+    if (j < 0) return {-1, 0, -1};
+    i64 idx_above = 0;
+    i64 idx_below = idx;
+    i64 m = 0;
+    while (m <= k && verts[m] > j) {
+        idx_below = wsub(idx_below, g.binom(verts[m], k + 1 - m));
+        idx_above = wadd(idx_above, g.binom(verts[m], k + 2 - m));
+        ++m;
+    }
+    return {wadd(wadd(idx_above, g.binom(j, k + 2 - m)), idx_below), m, j};
+}
+
+// The largest j within diam of each of the k + 1 vertices verts in the dense matrix, −1 if none
+// (D[v, v] = inf: the vertices themselves never match).
+inline i64 dense_first(const Graph& g, const i64* verts, i64 k, double diam) {
+    for (i64 j = g.n - 1; j >= 0; --j) {
+        bool ok = true;
+        for (i64 i = 0; i <= k; ++i) {
+            if (g.D[static_cast<std::size_t>(verts[i] * g.n + j)] > diam) {
+                ok = false;
+                break;
+            }
+        }
+        if (ok) return j;
+    }
+    return -1;
+}
+
+// The earliest coface of the k-simplex s if it has s's diameter (index −1 otherwise), its m and its
+// new vertex j (−1 when not known).  The cofaces of s's diameter are s ∪ {j} for the j within diam of
+// every vertex; the earliest has the largest j.  When one vertex has few neighbours that close they
+// are read from its distance-sorted list and checked; otherwise the coboundary is scanned with j
+// decreasing up to the first hit (with a dense matrix, a scan of its columns j = n − 1, n − 2, ...).
+// Thesis: Definition 4.30 (the earliest coface of a zero apparent pair), Theorem 4.42's idea.
+inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur,
+                                 double* od, i64* oi, i64* om) {
+    const i64* indptr = g.indptr;
+    const double* dlen = g.dlen.data();
+    if (g.dense) {  // every vertex has more than 1/8 of its neighbours within diam: scan D
+        bool wide = true;
+        for (i64 i = 0; i <= k; ++i) {
+            const i64 v = verts[i];
+            const i64 deg = indptr[v + 1] - indptr[v];
+            if (deg == 0 || dlen[indptr[v] + deg / 8] > diam) {
+                wide = false;
+                break;
+            }
+        }
+        if (wide) return with_vertex(g, verts, k, idx, dense_first(g, verts, k, diam));
+    }
+    i64 best = -1;
+    i64 bcount = i64(1) << 62;
+    for (i64 i = 0; i <= k; ++i) {
+        const i64 v = verts[i];
+        const i64 c = upper(dlen, indptr[v], indptr[v + 1], diam) - indptr[v];
+        if (c < bcount) {
+            bcount = c;
+            best = i;
+        }
+    }
+    i64 jmax = -1;
+    if (8 * bcount > indptr[verts[best] + 1] - indptr[verts[best]]) {
+        if (g.dense) return with_vertex(g, verts, k, idx, dense_first(g, verts, k, diam));
+        if (cofaces(g, verts, k, idx, diam, cur, od, oi, om, true, false)) return {oi[0], om[0], -1};
+        return {-1, 0, -1};
+    }
+    const i64 vb = verts[best];
+    for (i64 e = indptr[vb]; e < indptr[vb] + bcount; ++e) {
+        const i64 j = g.dnbr[static_cast<std::size_t>(e)];
+        if (j <= jmax) continue;
+        bool ok = true;
+        for (i64 i = 0; i <= k; ++i) {
+            if (i != best && g.dist(verts[i], j) > diam) {
+                ok = false;
+                break;
+            }
+        }
+        if (ok) jmax = j;
+    }
+    return with_vertex(g, verts, k, idx, jmax);
+}
+
+// The latest facet of the k1-simplex tau if it has tau's diameter (−1 otherwise) and the position r of
+// the omitted vertex w[r] (its sign in ∂tau is (−1)^r).  With known the vertices of tau are already in w
+// (decreasing); otherwise they are decoded.  pd is a (k1 + 1) × (k1 + 1) scratch matrix.
+// Thesis: Definition 4.30 (the latest facet of a zero apparent pair).
+inline i64 zero_pivot_facet(const Graph& g, i64 tau, i64 k1, double diam, i64* w, double* pd, bool known) {
+    if (!known) vertices(g, tau, k1, w);
+    const i64 s = k1 + 1;
+    for (i64 a = 0; a <= k1; ++a) {
+        for (i64 b = a + 1; b <= k1; ++b) {
+            const double d = g.dist(w[a], w[b]);
+            pd[a * s + b] = d;
+            pd[b * s + a] = d;
+        }
+    }
+    i64 idx_above = 0;
+    i64 idx_below = tau;
+    for (i64 r = 0; r <= k1; ++r) {  // omit w[r]: facet indices increase with r, so the first is the latest
+        idx_below = wsub(idx_below, g.binom(w[r], k1 + 1 - r));
+        double fd = 0.0;
+        for (i64 a = 0; a <= k1; ++a) {
+            if (a == r) continue;
+            for (i64 b = a + 1; b <= k1; ++b)
+                if (b != r && pd[a * s + b] > fd) fd = pd[a * s + b];
+        }
+        if (fd == diam) return wadd(idx_above, idx_below);
+        idx_above = wadd(idx_above, g.binom(w[r], k1 - r));
+    }
+    return -1;
+}
+
+// An open-addressing hash table of non-negative int64 keys (−1: empty), capacity a power of two at
+// least 2 size + 2.
+struct Table {
+    std::vector<i64> keys;
+    std::vector<i64> vals;
+    i64 mask = 0;
+
+    explicit Table(i64 size) {
+        i64 cap = 16;
+        while (cap < 2 * size + 2) cap *= 2;
+        keys.assign(static_cast<std::size_t>(cap), -1);
+        vals.assign(static_cast<std::size_t>(cap), 0);
+        mask = cap - 1;
+    }
+    // The slot holding key, or the empty slot where it would go.
+    i64 slot(i64 key) const {
+        i64 h = static_cast<i64>((static_cast<u64>(key) * 0x9E3779B97F4A7C15ULL) >> 17) & mask;
+        while (keys[static_cast<std::size_t>(h)] != -1 && keys[static_cast<std::size_t>(h)] != key) h = (h + 1) & mask;
+        return h;
+    }
+    bool contains(i64 key) const { return keys[static_cast<std::size_t>(slot(key))] != -1; }
+};
+
+}  // namespace rips
+}  // namespace thesis
