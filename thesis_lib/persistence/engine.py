@@ -17,6 +17,9 @@ pairs of the boundary and the coboundary reductions coincide, de Silva–Morozov
   and only colliding columns are reduced, lazily as in Ripser (Bauer 2021): a heap of coface
   entries, added columns kept as combinations V of original coboundaries, in the library's one
   stored-matrix reduction loop (:func:`~thesis_lib.persistence.kernels.reduce_columns`).
+
+The kernels (union–find, coboundary assembly, reduction) are compiled C++: ``src/explicit_cohomology.cpp``
+and ``src/reduction.cpp``.
 """
 
 from __future__ import annotations
@@ -26,10 +29,9 @@ from typing import Any
 
 import numpy as np
 
-from .._unionfind import find as _find
+from .._core import explicit_cohomology
 from .._validate import resolve_coefficients
 from ..filtration import Filtration, as_complex
-from ..jit import njit
 from .barcode import Barcode
 from .kernels import KEEP_V, reduce_columns
 
@@ -37,142 +39,22 @@ __all__ = ["persistence"]
 
 
 # ---------------------------------------------------------------------------- coboundary columns
-@njit(cache=True)
-def _column_storage(indptr: np.ndarray, m_d: int):
-    """Turn the per-column counts ``indptr[c + 1]`` into offsets (in place) and allocate the columns:
-    (fill cursors, rows, signs, pivot, pivot_sign, pivot_value), no pivot found yet.
-
-    The fill passes of :func:`_coboundary_triangles` and :func:`_coboundary` keep their entry code
-    inline: an @njit call per entry there measured 8x slower (even with ``inline="always"``).
-    """
-    for c in range(m_d):
-        indptr[c + 1] += indptr[c]
-    fill = indptr[:-1].copy()
-    rows = np.empty(indptr[m_d], dtype=np.int32)
-    signs = np.empty(indptr[m_d], dtype=np.int8)
-    pivot = np.full(m_d, -1, dtype=np.int64)
-    pivot_sign = np.zeros(m_d, dtype=np.int64)
-    pivot_value = np.full(m_d, np.inf)
-    return fill, rows, signs, pivot, pivot_sign, pivot_value
-
-
-@njit(cache=True)
-def _coboundary_triangles(edges: np.ndarray, tris: np.ndarray, n: np.int64, up_values: np.ndarray):
-    """:func:`_coboundary` of the edges, fused with the dense facet lookup (no facet array at all)."""
-    m_d = edges.shape[0]
-    table = np.full(n * n, -1, dtype=np.int32)
-    for r in range(m_d):
-        table[edges[r, 0] * n + edges[r, 1]] = r
-    indptr = np.zeros(m_d + 1, dtype=np.int64)
-    for t in range(tris.shape[0]):
-        a, b, c = tris[t, 0], tris[t, 1], tris[t, 2]
-        e0, e1, e2 = table[b * n + c], table[a * n + c], table[a * n + b]
-        if e0 < 0 or e1 < 0 or e2 < 0:
-            return indptr, np.empty(0, dtype=np.int32), np.empty(0, dtype=np.int8), indptr, indptr, t
-        indptr[e0 + 1] += 1
-        indptr[e1 + 1] += 1
-        indptr[e2 + 1] += 1
-    fill, rows, signs, pivot, pivot_sign, pivot_value = _column_storage(indptr, m_d)
-    for t in range(tris.shape[0]):
-        v = up_values[t]
-        a, b, c = tris[t, 0], tris[t, 1], tris[t, 2]
-        for i in range(3):
-            if i == 0:
-                e = table[b * n + c]
-            elif i == 1:
-                e = table[a * n + c]
-            else:
-                e = table[a * n + b]
-            rows[fill[e]] = t
-            signs[fill[e]] = 1 - 2 * (i & 1)
-            fill[e] += 1
-            if pivot[e] == -1 or v < pivot_value[e]:
-                pivot[e] = t
-                pivot_sign[e] = 1 - 2 * (i & 1)
-                pivot_value[e] = v
-    return indptr, rows, signs, pivot, pivot_sign, -1
-
-
 def _coboundary_matrix(K, d: int, up_values: np.ndarray):
-    """(indptr, rows, signs, pivot, pivot_sign) of δ on the d-simplices of K."""
+    """(indptr, rows, signs, pivot, pivot_sign) of δ on the d-simplices of K (compiled:
+    :func:`explicit_cohomology.coboundary`; edges through a dense edge table when it is small)."""
     m_d = K.simplices[d].shape[0]
     if d == 1:  # edges: the triangles' facets through a dense edge table, fused with the assembly
         lower, upper = K.simplices[1], K.simplices[2]
         n = int(max(lower.max(initial=0), upper.max(initial=0))) + 1
         if n * n <= max(1 << 22, 8 * lower.shape[0]):
-            out = _coboundary_triangles(np.ascontiguousarray(lower), np.ascontiguousarray(upper), np.int64(n),
-                                        up_values)
+            out = explicit_cohomology.coboundary_triangles(
+                np.ascontiguousarray(lower, dtype=np.int64), np.ascontiguousarray(upper, dtype=np.int64), n, up_values
+            )
             if out[5] >= 0:
                 t = upper[out[5]]
                 raise ValueError(f"an edge of the triangle {tuple(int(v) for v in t)} is missing from the filtration")
             return out[:5]
-    return _coboundary(K.facet_indices(d + 1), up_values, m_d)
-
-
-# ---------------------------------------------------------------------------- H0: union-find
-@njit(cache=True)
-def _h0(edge_facets: np.ndarray, vrank: np.ndarray, order1: np.ndarray):
-    """Elder-rule union–find over the edges in filtration order.
-
-    Returns (death pairs as (vertex index, edge index), negative-edge mask, essential vertices).
-    """
-    n = vrank.shape[0]
-    parent = np.arange(n, dtype=np.int64)
-    m1 = order1.shape[0]
-    pv = np.empty(n, dtype=np.int64)
-    pe = np.empty(n, dtype=np.int64)
-    negative = np.zeros(m1, dtype=np.bool_)
-    count = 0
-    for r in range(m1):
-        e = order1[r]
-        a = _find(parent, edge_facets[e, 0])
-        b = _find(parent, edge_facets[e, 1])
-        if a == b:
-            continue
-        if vrank[a] > vrank[b]:  # a is younger: it dies
-            a, b = b, a
-        parent[b] = a  # b (the younger root) joins the elder a
-        pv[count] = b
-        pe[count] = e
-        count += 1
-        negative[e] = True
-    ess = np.empty(n - count, dtype=np.int64)
-    k = 0
-    for v in range(n):
-        if parent[v] == v:
-            ess[k] = v
-            k += 1
-    return pv[:count], pe[:count], negative, ess
-
-
-# ---------------------------------------------------------------------------- coboundary matrix
-@njit(cache=True)
-def _coboundary(facets: np.ndarray, up_values: np.ndarray, m_d: int):
-    """Compressed columns of δ on the d-simplices (by index): entries are indices of the (d+1)-cofaces.
-
-    One counting pass and one fill pass, both reading the cofaces sequentially; each column comes out
-    sorted by coface index (not yet by value).  The fill pass also finds every column's pivot, its
-    earliest coface in the filtration order.  The sign of σ in ∂τ is (-1)^i when σ omits vertex i of τ
-    (Definition 2.18).
-    """
-    m_up, w = facets.shape
-    indptr = np.zeros(m_d + 1, dtype=np.int64)
-    for t in range(m_up):
-        for i in range(w):
-            indptr[facets[t, i] + 1] += 1
-    fill, rows, signs, pivot, pivot_sign, pivot_value = _column_storage(indptr, m_d)
-    for t in range(m_up):
-        v = up_values[t]
-        for i in range(w):
-            c = facets[t, i]
-            rows[fill[c]] = t
-            signs[fill[c]] = 1 - 2 * (i & 1)
-            fill[c] += 1
-            if pivot[c] == -1 or v < pivot_value[c]:  # t ascending: ties keep the smaller index
-                pivot[c] = t
-                pivot_sign[c] = 1 - 2 * (i & 1)
-                pivot_value[c] = v
-    return indptr, rows, signs, pivot, pivot_sign
+    return explicit_cohomology.coboundary(np.ascontiguousarray(K.facet_indices(d + 1), dtype=np.int64), up_values, m_d)
 
 
 # ---------------------------------------------------------------------------- driver
@@ -249,7 +131,8 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     vrank = np.empty(K.simplices[0].shape[0], dtype=np.int64)
     vrank[orders[0]] = np.arange(orders[0].shape[0])
     order1 = orders[1] if D > 1 else np.argsort(K.values[1], kind="stable")
-    pv, pe, cleared, ess = _h0(K.facet_indices(1), vrank, order1)
+    pv, pe, cleared, ess = explicit_cohomology.h0(np.ascontiguousarray(K.facet_indices(1), dtype=np.int64), vrank,
+                                                  np.ascontiguousarray(order1, dtype=np.int64))
     finish(0, pv, pe, ess)
     if stats is not None:
         stats[0] = {"columns": int(K.simplices[1].shape[0]), "additions": 0}

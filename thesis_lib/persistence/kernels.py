@@ -6,7 +6,8 @@ Two reduction loops exist in the library, and only two:
   of a matrix held in compressed columns.  It serves the explicit engine (:mod:`.engine`,
   coboundary columns: cohomology), the persistence of a general filtered chain complex
   (:mod:`.chains`, boundary columns, hence the Morse reduction of :mod:`thesis_lib.morse`) and the
-  representative cycles (:mod:`.representatives`, which read R or V off its record).
+  representative cycles (:mod:`.representatives`, which read R or V off its record).  Compiled
+  C++: ``src/reduction.cpp`` (the module ``thesis_lib._core.reduction``); this function is its face.
 * ``_reduce`` in :mod:`.implicit`, **the implicit kernel** of the Rips engine: its coboundaries are
   enumerated on the fly from the neighbour graph, never stored, so it cannot share a loop over
   stored columns; it is built from this module's primitives only (heap, pivot popping, chain
@@ -24,6 +25,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._core import reduction
 from ..jit import njit
 
 __all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "merge_entries", "grow",
@@ -184,7 +186,6 @@ def grow(hv, hk, hc, n, need):
 KEEP_V, KEEP_V_ALL, KEEP_REDUCED = 0, 1, 2
 
 
-@njit(cache=True)
 def reduce_columns(
     indptr: npt.NDArray[np.int64], rows: npt.NDArray[np.integer], coefs: npt.NDArray[np.integer],
     row_value: npt.NDArray[np.float64], columns: npt.NDArray[np.int64], cleared: npt.NDArray[np.bool_],
@@ -203,8 +204,8 @@ def reduce_columns(
     cofaces' values for coboundary columns (pivot = earliest coface).  A column whose pivot is still
     free is paired as it stands, without touching its entries (apparent and emergent pairs: the
     common case).  A colliding column is reduced lazily, as in Ripser (Bauer 2021): the working
-    column is a heap of entries (:func:`heap_push`, :func:`pop_pivot`) summed only when they reach
-    the top, and only the entries up to the next free pivot are ever combined.  A column added to
+    column is a heap of entries summed only when they reach the top, and only the entries up to the
+    next free pivot are ever combined.  Compiled C++ (``src/reduction.cpp``).  A column added to
     another is either regenerated from its chain V of original columns (``KEEP_V``: cohomology, where
     reduced columns fill in) or read from its stored reduced column (``KEEP_REDUCED``: homology).
 
@@ -249,125 +250,20 @@ def reduce_columns(
         ``start[c] = −1``: column c was not added to (V_c = c, reduced column = column c).
     pool_keys, pool_coefs : numpy.ndarray of int64
         The kept chains or columns, coefficients in ``1 .. p − 1``.
+
+    Raises
+    ------
+    ValueError
+        Arrays of inconsistent lengths, a decreasing ``indptr``, a column, row or pivot index out of
+        range, ``p`` outside ``2 .. 2³¹ − 1`` or an unknown ``keep``.
     """
-    m = indptr.shape[0] - 1
-    owner = np.full(row_value.shape[0], -1, dtype=np.int32)  # the column owning each pivot
-    pcoef = np.zeros(m, dtype=np.int64)  # coefficient of its pivot in each reduced column
-    vstart = np.full(m, -1, dtype=np.int64)
-    vlen = np.zeros(m, dtype=np.int64)
-    pool_k = np.empty(1024, dtype=np.int64)
-    pool_c = np.empty(1024, dtype=np.int64)
-    vused = 0
-    hv = np.empty(1024)
-    hk = np.empty(1024, dtype=np.int64)
-    hc = np.empty(1024, dtype=np.int64)
-    wk = np.empty(64, dtype=np.int64)
-    wc = np.empty(64, dtype=np.int64)
-    npmax = min(columns.shape[0], row_value.shape[0])
-    pair_c = np.empty(npmax, dtype=np.int64)
-    pair_r = np.empty(npmax, dtype=np.int64)
-    npairs = 0
-    zero = np.empty(columns.shape[0], dtype=np.int64)
-    nzero = 0
-    additions = 0
-    reduced = keep == KEEP_REDUCED
-    for pos in range(columns.shape[0]):
-        c = columns[pos]
-        if cleared[c]:
-            continue
-        piv = pivot[c]
-        if piv == -1:  # an empty column
-            zero[nzero] = c
-            nzero += 1
-            continue
-        if owner[piv] == -1:  # pivot still free: the column is already reduced (apparent/emergent pair)
-            owner[piv] = c
-            pcoef[c] = pivot_coef[c] % p
-            pair_c[npairs] = c
-            pair_r[npairs] = piv
-            npairs += 1
-            continue
-        # ---- lazy reduction: a heap of (row value, row, coefficient); V as a list of (column, coefficient)
-        wk[0] = c
-        wc[0] = 1
-        wn = 1
-        a, b = indptr[c], indptr[c + 1]
-        hv, hk, hc = grow(hv, hk, hc, 0, b - a)
-        hn = 0
-        for e in range(a, b):
-            r = np.int64(rows[e])
-            hn = heap_push(hv, hk, hc, hn, row_value[r], r, np.int64(coefs[e]) % p)
-        while True:
-            # pop the pivot: the least row whose coefficients do not cancel
-            hn, _, piv, pc = pop_pivot(hv, hk, hc, hn, p)
-            if pc == 0:
-                piv = -1
-                break
-            o = np.int64(owner[piv])
-            if o == -1:
-                break
-            # add factor · (reduced column of o); its pivot entry cancels the popped one: never pushed
-            additions += 1
-            factor = (p - pc * mod_inverse(pcoef[o], p) % p) % p
-            if reduced and vstart[o] != -1:
-                a, b = vstart[o] + 1, vstart[o] + vlen[o]
-                hv, hk, hc = grow(hv, hk, hc, hn, hn + (b - a))
-                for e in range(a, b):
-                    r = pool_k[e]
-                    hn = heap_push(hv, hk, hc, hn, row_value[r], r, factor * pool_c[e] % p)
-                continue
-            ol = 1 if vstart[o] == -1 else vlen[o]
-            for q in range(ol):  # factor · Σ_k V_o[k] · column k
-                if vstart[o] == -1:
-                    k_s, k_c = o, np.int64(1)
-                else:
-                    k_s, k_c = pool_k[vstart[o] + q], pool_c[vstart[o] + q]
-                f = factor * k_c % p
-                if wn == wk.shape[0]:
-                    wk, wc, _ = grow(wk, wc, wc, wn, wn + 1)
-                wk[wn] = k_s
-                wc[wn] = f
-                wn += 1
-                a, b = indptr[k_s], indptr[k_s + 1]
-                hv, hk, hc = grow(hv, hk, hc, hn, hn + (b - a))
-                for e in range(a, b):
-                    r = np.int64(rows[e])
-                    if r != piv:
-                        hn = heap_push(hv, hk, hc, hn, row_value[r], r, f * (np.int64(coefs[e]) % p) % p)
-        if piv == -1:
-            zero[nzero] = c
-            nzero += 1
-            if keep != KEEP_V_ALL:
-                continue
-        vstart[c] = vused
-        if reduced:  # the reduced column: its pivot, then the rest of the heap
-            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + 1)
-            pool_k[vused] = piv
-            pool_c[vused] = pc
-            vused += 1
-            while True:
-                hn, _, r, rc = pop_pivot(hv, hk, hc, hn, p)
-                if rc == 0:
-                    break
-                if vused == pool_k.shape[0]:
-                    pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + 1)
-                pool_k[vused] = r
-                pool_c[vused] = rc
-                vused += 1
-        else:  # V_c, duplicates merged and zeros dropped
-            at, sums = merge_entries(wk, wc, wn, p)
-            pool_k, pool_c, _ = grow(pool_k, pool_c, pool_c, vused, vused + at.shape[0])
-            for q in range(at.shape[0]):
-                pool_k[vused + q] = wk[at[q]]
-                pool_c[vused + q] = sums[q]
-            vused += at.shape[0]
-        vlen[c] = vused - vstart[c]
-        if piv == -1:
-            continue
-        owner[piv] = c
-        pcoef[c] = pc
-        pair_c[npairs] = c
-        pair_r[npairs] = piv
-        npairs += 1
-    return (pair_c[:npairs], pair_r[:npairs], zero[:nzero], additions, vstart, vlen, pool_k[:vused],
-            pool_c[:vused])
+    rows = np.asarray(rows)
+    coefs = np.asarray(coefs)
+    return reduction.reduce_columns(
+        np.ascontiguousarray(indptr, dtype=np.int64),
+        np.ascontiguousarray(rows, dtype=np.int32 if rows.dtype == np.int32 else np.int64),
+        np.ascontiguousarray(coefs, dtype=np.int8 if coefs.dtype == np.int8 else np.int64),
+        np.ascontiguousarray(row_value, dtype=np.float64), np.ascontiguousarray(columns, dtype=np.int64),
+        np.ascontiguousarray(cleared, dtype=np.bool_), np.ascontiguousarray(pivot, dtype=np.int64),
+        np.ascontiguousarray(pivot_coef, dtype=np.int64), int(p), int(keep),
+    )
