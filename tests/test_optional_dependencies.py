@@ -320,6 +320,53 @@ def test_using_an_extra_says_which_to_install():
     assert out["bars"] == 2
 
 
+def test_a_python_that_has_only_numpy_and_scipy(tmp_path):
+    # no blocker: the base interpreter without site-packages (-S), whose path holds numpy, scipy and
+    # thesis_lib alone, as after `pip install thesis-lab` into an empty environment
+    import numpy
+    import scipy
+
+    for module in [numpy, scipy] + [pytest.importorskip(m) for m in sorted(TRANSITIONAL)]:
+        folder = Path(module.__file__).parent
+        for entry in [folder, folder.with_name(folder.name + ".libs")]:  # wheels keep shared libraries beside
+            if entry.exists():
+                (tmp_path / entry.name).symlink_to(entry)
+    (tmp_path / "thesis_lib").symlink_to(PACKAGE)
+    code = textwrap.dedent("""
+        import importlib, json, pkgutil, sys
+        import numpy as np
+        import thesis_lib
+        from thesis_lib.persistence import plot_barcode, rips_persistence
+
+        failed = {}
+        for name in sorted(m.name for m in pkgutil.walk_packages(thesis_lib.__path__, "thesis_lib.")):
+            try:
+                importlib.import_module(name)
+            except ImportError as error:
+                failed[name] = str(error)
+        barcode = rips_persistence(np.array([[0.0, 0.0], [3.0, 4.0]]), max_dim=1)
+        try:
+            plot_barcode(barcode)
+            plotted = "plotted"
+        except ImportError as error:
+            plotted = str(error)
+        outside = {m.partition(".")[0] for m in sys.modules} - set(sys.stdlib_module_names)
+        print(json.dumps({"failed": failed, "h0": barcode.intervals(0).tolist(), "plot": plotted,
+                          "packages": sorted(p for p in outside if not p.startswith("_"))}))
+    """)
+    env = {"PYTHONPATH": str(tmp_path), "PATH": "/usr/bin:/bin", "HOME": str(tmp_path), "MPLBACKEND": "Agg"}
+    proc = subprocess.run([getattr(sys, "_base_executable", sys.executable), "-S", "-c", code], cwd=tmp_path,
+                          env=env, capture_output=True, text=True, timeout=900)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    out = json.loads(proc.stdout.strip().splitlines()[-1].replace("Infinity", '"inf"'))
+    lab = 'jupyter_client is needed for running experiments; install it with: pip install "thesis-lab[lab]"'
+    assert out["failed"] == dict.fromkeys(sorted(LAB_CORE), lab)
+    assert out["h0"] == [[0.0, 2.5], [0.0, "inf"]]
+    assert out["plot"] == 'matplotlib is needed for plotting barcodes; install it with: pip install "thesis-lab[plot]"'
+    assert set(out["packages"]) <= LIBRARY | TRANSITIONAL | {"cython_runtime"}
+    assert {"numpy", "scipy", "thesis_lib"} <= set(out["packages"])
+
+
 @pytest.mark.parametrize("argv, missing", [
     (["run", "torus-curvature"], "jupyter_client is needed for running experiments"),
     (["sweep", "torus-curvature", "-p", "n", "8"], "jupyter_client is needed for running experiments"),

@@ -352,6 +352,8 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         If no ratio is left to draw.
     """
@@ -418,6 +420,8 @@ def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         If no case starts with ``prefix``.
     """

@@ -52,6 +52,8 @@ def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyDat
 
     Raises
     ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     ValueError
         On invalid vertices, vertices not in R³, or faces that are not (m, 3) indices of vertices.
     """
@@ -83,6 +85,8 @@ def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
 
     Raises
     ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     TypeError
         If ``mesh`` is not a pyvista data set (``InvalidTypeError``, also a ``ValueError``).
     ValueError
@@ -130,6 +134,8 @@ def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
 
     Raises
     ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     FileNotFoundError
         If there is no such file.
     ValueError
@@ -176,6 +182,8 @@ def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.Arra
 
     Raises
     ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     ValueError
         On a path without suffix, an invalid mesh, or a format pyvista cannot write.
     FileNotFoundError

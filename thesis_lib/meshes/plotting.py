@@ -65,6 +65,8 @@ def render_mesh(
 
     Raises
     ------
+    ImportError
+        If pyvista is not installed (the ``[mesh]`` extra).
     ValueError
         If ``vertices`` is not (nv, 3).
     """
@@ -132,6 +134,8 @@ def mesh_figure(images: Iterable[npt.ArrayLike], titles: Sequence[str] | None = 
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         If ``images`` is empty.
     """

@@ -57,6 +57,8 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         A bad grid, or ``values`` of the wrong shape.
     """
@@ -161,6 +163,8 @@ def plot_fibered_barcodes(ax: Axes, bifiltration: Bifiltration, base: npt.ArrayL
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         A direction that is not positive, or coefficients that are not a prime.
     """

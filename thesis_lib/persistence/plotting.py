@@ -91,6 +91,8 @@ def plot_barcode(
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         No dimension to draw, a negative ``min_length`` or ``min_fraction``, more than ``max_bars``
         bars, or a number of ``axes`` other than of ``dims``.
@@ -189,6 +191,8 @@ def plot_diagram(
 
     Raises
     ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
         No dimension to draw.
     """
