@@ -7,7 +7,8 @@ every n-simplex through the ridge is a direction — exactly as the triangles ab
 So both steps of the 3-D trimming hold in any dimension: remove simplices with a sharp ridge (in one
 simplex only, or all its simplices within a wedge of angle < π/2), then walk from an outer simplex
 across every ridge to the next simplex met when turning about the ridge through the outside,
-orienting coherently; a simplex that would put a third simplex on a ridge is left out.
+orienting coherently; a simplex that would put a third simplex on a ridge is left out.  The walks
+and the sharp-ridge test are compiled C++ (``src/crust_trimming.cpp``).
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from ..jit import njit
+from .._core import crust_trimming as _trimming_core
 from .crust_geometry import simplex_normals
 
 __all__ = ["unique_rows", "outer_walk", "open_walk"]
@@ -74,85 +75,9 @@ def _ridge_structure(simplices: np.ndarray, nv: int):
     start = np.concatenate([[0], np.cumsum(counts)])
     tri_of = order % m
     opp = simplices[tri_of, np.asarray(slots)[order // m]]
-    return ridges, ridge_of, start, tri_of, opp
-
-
-@njit(cache=True)
-def _edge_vectors(pts, verts):
-    """Rows p_{i+1} − p_0 for the vertices ``verts`` (k + 1,) of a simplex: shape (k, d)."""
-    k = verts.shape[0] - 1
-    e = np.empty((k, pts.shape[1]))
-    for i in range(k):
-        e[i] = pts[verts[i + 1]] - pts[verts[0]]
-    return e
-
-
-@njit(cache=True)
-def _complement_basis(pts, ridge):
-    """Orthonormal basis (rows) of the directions of the ridge's affine span (Gram–Schmidt)."""
-    q = _edge_vectors(pts, ridge)
-    for i in range(q.shape[0]):
-        for j in range(i):
-            q[i] = q[i] - (q[i] * q[j]).sum() * q[j]
-        q[i] = q[i] / (np.sqrt((q[i] * q[i]).sum()) + 1e-300)
-    return q
-
-
-@njit(cache=True)
-def _project(w, q):
-    """``w`` minus its projection on the span of the rows of ``q``."""
-    for j in range(q.shape[0]):
-        w = w - (w * q[j]).sum() * q[j]
-    return w
-
-
-@njit(cache=True)
-def _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp):
-    """Update ``sharp`` on the ridges ``todo``: a ridge is sharp when one live simplex contains it,
-    or all of them lie in a wedge < π/2."""
-    angles = np.empty(64)
-    for e in todo:
-        sharp[e] = False
-        q = _complement_basis(pts, ridges[e])
-        a = pts[ridges[e, 0]]
-        ref = np.zeros(pts.shape[1])
-        y = np.zeros(pts.shape[1])
-        got_ref = False
-        got_y = False
-        cnt = 0
-        for s in range(start[e], start[e + 1]):
-            if not alive[tri_of[s]]:
-                continue
-            w = _project(pts[opp[s]] - a, q)
-            w = w / (np.sqrt((w * w).sum()) + 1e-300)
-            if not got_ref:
-                ref = w
-                got_ref = True
-            elif not got_y:
-                yy = w - (w * ref).sum() * ref
-                ny = np.sqrt((yy * yy).sum())
-                if ny > 1e-9:
-                    y = yy / ny
-                    got_y = True
-            cnt += 1
-        if cnt == 0:
-            continue
-        if cnt == 1:
-            sharp[e] = True
-            continue
-        m = 0
-        for s in range(start[e], start[e + 1]):
-            if not alive[tri_of[s]] or m >= 64:
-                continue
-            w = _project(pts[opp[s]] - a, q)
-            angles[m] = np.arctan2((w * y).sum(), (w * ref).sum()) % (2 * np.pi)
-            m += 1
-        srt = np.sort(angles[:m])
-        gap = 2 * np.pi - srt[m - 1] + srt[0]
-        for i in range(1, m):
-            gap = max(gap, srt[i] - srt[i - 1])
-        if gap > 1.5 * np.pi:
-            sharp[e] = True
+    i64 = np.int64
+    return (np.ascontiguousarray(ridges, dtype=i64), ridge_of, np.ascontiguousarray(start, dtype=i64),
+            np.ascontiguousarray(tri_of, dtype=i64), np.ascontiguousarray(opp, dtype=i64))
 
 
 def _prune_sharp(pts, simplices, ridges, ridge_of, start, tri_of, opp, max_rounds: int = 10000) -> np.ndarray:
@@ -162,177 +87,14 @@ def _prune_sharp(pts, simplices, ridges, ridge_of, start, tri_of, opp, max_round
     sharp = np.zeros(len(ridges), dtype=bool)
     todo = np.arange(len(ridges))
     for _ in range(max_rounds):
-        _sharp_ridges(pts, ridges, alive, start, tri_of, opp, todo, sharp)
+        _trimming_core.sharp_ridges(pts, ridges, alive, start, tri_of, opp, np.ascontiguousarray(todo, dtype=np.int64),
+                                    sharp)
         kill = alive & sharp[ridge_of].any(axis=1)
         if not kill.any():
             break
         alive &= ~kill
         todo = np.unique(ridge_of[kill])
     return alive
-
-
-@njit(cache=True)
-def _oriented_normal(pts, o):
-    """Normal of the oriented simplex o: cofactors of its edge vectors (the cross product for n = 2)."""
-    n = o.shape[0] - 1
-    d = pts.shape[1]
-    e = _edge_vectors(pts, o)
-    nrm = np.empty(d)
-    sub = np.empty((n, n))
-    for k in range(d):
-        for i in range(n):
-            c = 0
-            for j in range(d):
-                if j != k:
-                    sub[i, c] = e[i, j]
-                    c += 1
-        sign = 1.0 if k % 2 == 0 else -1.0
-        nrm[k] = sign * np.linalg.det(sub)
-    return nrm / (np.sqrt((nrm * nrm).sum()) + 1e-300)
-
-
-@njit(cache=True)
-def _parity(a, b):
-    """+1 if the vertex list ``b`` is an even permutation of ``a``, -1 if odd (same vertex sets)."""
-    k = a.shape[0]
-    perm = np.empty(k, dtype=np.int64)
-    for i in range(k):
-        for j in range(k):
-            if b[i] == a[j]:
-                perm[i] = j
-    inv = 0
-    for i in range(k):
-        for j in range(i + 1, k):
-            if perm[i] > perm[j]:
-                inv += 1
-    return 1 if inv % 2 == 0 else -1
-
-
-@njit(cache=True)
-def _walk(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, seed, seed_flip, breadth_first,
-             max_fold):
-    """Coherently oriented walk from ``seed`` across every ridge to the next live simplex met when
-    turning about the ridge through the outside (the side the oriented normal points to).  Depth
-    first (a closed hypersurface), or ``breadth_first`` (a piece with boundary: the simplices near the
-    seed are claimed before the walk reaches the debris along the boundary)."""
-    m, k1 = simplices.shape
-    n = k1 - 1
-    orient = np.zeros((m, k1), dtype=np.int64)
-    seen = np.zeros(m, dtype=np.bool_)
-    stack = np.empty(m, dtype=np.int64)
-    visit = np.empty(m, dtype=np.int64)
-    nvisit = 0
-    for i in range(k1):
-        orient[seed, i] = simplices[seed, i]
-    if seed_flip:
-        orient[seed, 0], orient[seed, 1] = orient[seed, 1], orient[seed, 0]
-    seen[seed] = True
-    stack[0] = seed
-    top = 1
-    conflicts = 0
-    want = np.empty(k1, dtype=np.int64)
-    rot = np.empty(k1, dtype=np.int64)
-    head = 0
-    while top > head:
-        if breadth_first:
-            t = stack[head]
-            head += 1
-        else:
-            top -= 1
-            t = stack[top]
-        visit[nvisit] = t
-        nvisit += 1
-        o = orient[t].copy()
-        nrm = _oriented_normal(pts, o)
-        for j in range(k1):
-            pos_c = (j + n) % k1  # positions n, 0, 1, ..., n - 1
-            c = o[pos_c]
-            kc = 0
-            for i in range(k1):
-                if simplices[t, i] == c:
-                    kc = i
-            e = ridge_of[t, kc]
-            q = _complement_basis(pts, ridges[e])
-            a = pts[ridges[e, 0]]
-            wc = _project(pts[c] - a, q)
-            wc = wc / (np.sqrt((wc * wc).sum()) + 1e-300)
-            best = -1
-            best_ang = 1e300
-            best_d = -1
-            for s in range(start[e], start[e + 1]):
-                t2 = tri_of[s]
-                if t2 == t or not alive[t2]:
-                    continue
-                wd = _project(pts[opp[s]] - a, q)
-                ang = np.arctan2((wd * nrm).sum(), (wd * wc).sum()) % (2 * np.pi)
-                if ang < best_ang:
-                    best_ang = ang
-                    best = t2
-                    best_d = opp[s]
-            if best < 0 or abs(best_ang - np.pi) > max_fold:
-                continue
-            # the ridge in cyclic order after c, then d; it must induce the opposite orientation
-            for i in range(n):
-                rot[i] = o[(pos_c + 1 + i) % k1]
-            rot[n] = best_d
-            # [ridge, c] = sigma [o] with sigma the sign of a cyclic shift by pos_c + 1
-            sigma = -1 if (n * (pos_c + 1)) % 2 == 1 else 1
-            for i in range(k1):
-                want[i] = rot[i]
-            if sigma == 1:  # want -[ridge, d]: one transposition (for n = 2: (b, a, d) across the edge a → b)
-                want[0], want[1] = rot[1], rot[0]
-            if seen[best]:
-                if _parity(want, orient[best]) != 1:
-                    conflicts += 1
-                continue
-            seen[best] = True
-            for i in range(k1):
-                orient[best, i] = want[i]
-            stack[top] = best
-            top += 1
-    return orient, visit[:nvisit], conflicts
-
-
-@njit(cache=True)
-def _greedy_manifold(ridge_of, order, n_ridges):
-    """Keep simplices in visiting order while each of their ridges has fewer than two kept ones."""
-    used = np.zeros(n_ridges, dtype=np.int64)
-    keep = np.zeros(len(order), dtype=np.bool_)
-    k1 = ridge_of.shape[1]
-    for i in range(len(order)):
-        t = order[i]
-        ok = True
-        for k in range(k1):
-            if used[ridge_of[t, k]] >= 2:
-                ok = False
-        if ok:
-            keep[i] = True
-            for k in range(k1):
-                used[ridge_of[t, k]] += 1
-    return keep
-
-
-@njit(cache=True)
-def _openness(pts, simplices, alive, ridges, ridge_of, start, tri_of, opp, t, flip):
-    """Smallest turning angle, over the ridges of simplex ``t`` (oriented, flipped or not), to another
-    live simplex: about π on a sheet, small on the inner side of a pocket of candidates."""
-    o = simplices[t].copy()
-    if flip:
-        o[0], o[1] = o[1], o[0]
-    nrm = _oriented_normal(pts, o)
-    worst = 2 * np.pi
-    for kc in range(o.shape[0]):
-        e = ridge_of[t, kc]
-        q = _complement_basis(pts, ridges[e])
-        a = pts[ridges[e, 0]]
-        wc = _project(pts[simplices[t, kc]] - a, q)
-        wc = wc / (np.sqrt((wc * wc).sum()) + 1e-300)
-        for s in range(start[e], start[e + 1]):
-            if tri_of[s] == t or not alive[tri_of[s]]:
-                continue
-            wd = _project(pts[opp[s]] - a, q)
-            worst = min(worst, np.arctan2((wd * nrm).sum(), (wd * wc).sum()) % (2 * np.pi))
-    return worst
 
 
 #: an open piece is walked from the most open of this many simplices nearest the samples' centroid
@@ -353,12 +115,15 @@ def _outer_seed(pts, s, alive) -> tuple[int, bool]:
 
 
 def _open_seed(pts, s, structure) -> tuple[int, bool]:
-    """The most open (largest :func:`_openness`) simplex and orientation near the samples' centroid."""
+    """The most open simplex and orientation near the samples' centroid: the largest smallest turning
+    angle to another candidate over its ridges (about π on a sheet, small inside a pocket)."""
     alive = np.ones(len(s), dtype=bool)
     dist = np.linalg.norm(pts[s].mean(axis=1) - pts.mean(axis=0), axis=1)
     near = np.argsort(dist, kind="stable")[:_OPEN_SEEDS]
-    best = max((_openness(pts, s, alive, *structure, int(t), f), -i, int(t), f)
-               for i, t in enumerate(near) for f in (False, True))
+    ts = np.repeat(near.astype(np.int64), 2)
+    flips = np.tile(np.array([False, True]), len(near))
+    worst = _trimming_core.openness(pts, s, alive, *structure, ts, flips).tolist()
+    best = max((worst[2 * i + j], -i, int(t), f) for i, t in enumerate(near) for j, f in enumerate((False, True)))
     return best[2], best[3]
 
 
@@ -390,6 +155,8 @@ def outer_walk(pts: np.ndarray, simplices: np.ndarray, *, prune: bool = True) ->
     ValueError
         If ``prune`` removes every simplex (the sample is too sparse).
     """
+    pts = np.ascontiguousarray(pts, dtype=np.float64)
+    simplices = np.ascontiguousarray(simplices, dtype=np.int64)
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
     if prune:
@@ -397,7 +164,7 @@ def outer_walk(pts: np.ndarray, simplices: np.ndarray, *, prune: bool = True) ->
         if not alive.any():
             raise ValueError("trimming removed every simplex: the sample is too sparse for the Crust")
     seed, flip = _outer_seed(pts, simplices, alive)
-    return _kept(*_walk(pts, simplices, alive, *structure, seed, flip, False, np.pi), structure)
+    return _kept(*_trimming_core.walk(pts, simplices, alive, *structure, seed, flip, False, np.pi), structure)
 
 
 def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
@@ -421,13 +188,16 @@ def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
     conflicts : int
         The orientation conflicts met by the walk.
     """
+    pts = np.ascontiguousarray(pts, dtype=np.float64)
+    simplices = np.ascontiguousarray(simplices, dtype=np.int64)
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
     seed, flip = _open_seed(pts, simplices, structure)
-    return _kept(*_walk(pts, simplices, alive, *structure, seed, flip, True, np.pi / 2), structure)
+    return _kept(*_trimming_core.walk(pts, simplices, alive, *structure, seed, flip, True, np.pi / 2), structure)
 
 
 def _kept(orient, order, conflicts, structure) -> tuple[np.ndarray, int]:
-    """The walked simplices, oriented, that :func:`_greedy_manifold` keeps, and the conflict count."""
+    """The walked simplices, oriented, that the greedy manifold keeps (in visiting order, while each of
+    their ridges has fewer than two kept ones), and the conflict count."""
     ridges, ridge_of = structure[0], structure[1]
-    return orient[order[_greedy_manifold(ridge_of, order, len(ridges))]], int(conflicts)
+    return orient[order[_trimming_core.greedy_manifold(ridge_of, order, len(ridges))]], int(conflicts)
