@@ -18,8 +18,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._core import alpha_complex
 from ..filtration import Filtration
-from ..jit import njit
 from ..simplicial import facets, find_rows, row_keys
 from .delaunay import check_delaunay_size
 from .orthoballs import attached, orthoballs
@@ -28,45 +28,6 @@ from .scaling import unscale_values
 from .triangulation import lexicographic, lexicographic_order, prepare_geometry, triangulate
 
 __all__ = ["alpha"]
-
-
-@njit(cache=True)
-def _facet_ids(nb):
-    """Number the facets of a triangulation: ``ids[s, i]`` for the facet opposite vertex i of
-    simplex s (both occurrences of an interior facet get the same id), and one (s, i) per id."""
-    m, w = nb.shape
-    ids = np.full((m, w), -1, dtype=np.int64)
-    rep_s = np.empty(m * w, dtype=np.int64)
-    rep_i = np.empty(m * w, dtype=np.int64)
-    count = 0
-    for s in range(m):
-        for i in range(w):
-            if ids[s, i] >= 0:
-                continue
-            ids[s, i] = count
-            rep_s[count], rep_i[count] = s, i
-            t = nb[s, i]
-            if t >= 0:
-                for j in range(w):
-                    if nb[t, j] == s:
-                        ids[t, j] = count
-                        break
-            count += 1
-    return ids, rep_s[:count], rep_i[:count]
-
-
-@njit(cache=True)
-def _coface_min(fidx, values, size):
-    """For each face, the smallest value among the cofaces listing it in ``fidx``."""
-    out = np.full(size, np.inf)
-    m, w = fidx.shape
-    for r in range(m):
-        v = values[r]
-        for i in range(w):
-            f = fidx[r, i]
-            if v < out[f]:
-                out[f] = v
-    return out
 
 
 def _face_levels(top: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarray], dict[int, np.ndarray]]:
@@ -93,7 +54,7 @@ def _face_levels(top: np.ndarray, nb: np.ndarray, n: int) -> tuple[list[np.ndarr
             fidx_of[1] = pos[upper[:, ::-1]]
             continue
         if k == k_top - 1:  # facets of the top simplices, numbered through the neighbours
-            ids, rep_s, rep_i = _facet_ids(nb)
+            ids, rep_s, rep_i = alpha_complex.facet_ids(np.ascontiguousarray(nb, dtype=np.int64))
             keep = np.array([[j for j in range(k + 2) if j != i] for i in range(k + 2)])
             lower = np.take_along_axis(upper[rep_s], keep[rep_i], axis=1)
             srt = lexicographic_order(lower, n)
@@ -174,7 +135,9 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
         hit = attached(geo, lower, ball, fidx.ravel(), upper.ravel())
         is_attached = np.zeros(lower.shape[0], dtype=bool)
         is_attached[fidx.ravel()[hit]] = True
-        coface_min = _coface_min(fidx, values[k + 1], lower.shape[0])
+        coface_min = alpha_complex.coface_min(np.ascontiguousarray(fidx, dtype=np.int64),
+                                              np.ascontiguousarray(values[k + 1], dtype=np.float64),
+                                              lower.shape[0])
         values[k] = np.where(is_attached, coface_min, ball[1])
     # a simplex never enters before its faces (float rounding), as GUDHI's make_filtration_non_decreasing
     for k in range(1, top + 1):

@@ -5,28 +5,15 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._core import miniball
 from .._validate import MAX_WORK, as_points, check_max_dim, check_radius
 from ..filtration import Filtration
-from ..jit import njit
 from ..simplicial import facets, find_rows
 from ._flag import check_expansion, edges_within, expand_level, upper_csr
-from .miniball import meb_radius_small
 from .rips import check_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["cech"]
-
-
-@njit(cache=True)
-def _meb_radii(points, simplices):
-    m, k = simplices.shape
-    out = np.empty(m)
-    buf = np.empty((k, points.shape[1]))
-    for r in range(m):
-        for i in range(k):
-            buf[i] = points[simplices[r, i]]
-        out[r] = meb_radius_small(buf)
-    return out
 
 
 def _check_work(indptr: np.ndarray, max_dim: int) -> None:
@@ -92,7 +79,7 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
             if simplices[-1].shape[0] == 0:
                 break
             cand, cand_vals = expand_level(simplices[-1], values[-1], indptr, indices, vals)
-            radii = np.maximum(_meb_radii(pts, cand), cand_vals)
+            radii = np.maximum(miniball.meb_radii(pts, np.ascontiguousarray(cand, dtype=np.int64)), cand_vals)
             keep = radii <= eps
             cand, radii = cand[keep], radii[keep]
             if cand.shape[0]:

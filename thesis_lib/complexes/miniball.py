@@ -5,9 +5,10 @@ Two independent implementations:
 * :func:`smallest_enclosing_ball` — Welzl's randomised algorithm in Gärtner's move-to-front form
   ([Gär99]); recursion only on the support set (depth <= d + 2) and a vectorised scan for the first
   point outside the current ball, so it runs on large point sets.
-* :func:`meb_radius_small` (numba) — for the few vertices of one simplex: the smallest ball is the
-  circumscribed ball, within the affine hull, of some subset of the points, so the radius is the
-  smallest such circumradius whose ball contains every point.  Used by the Čech complex.
+* :func:`meb_radius_small` (compiled C++, ``src/miniball.cpp``) — for the few vertices of one
+  simplex: the smallest ball is the circumscribed ball, within the affine hull, of some subset of
+  the points, so the radius is the smallest such circumradius whose ball contains every point.
+  Used by the Čech complex.
 """
 
 from __future__ import annotations
@@ -15,9 +16,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._core import miniball
 from .._validate import as_points, check_seed
-from ..jit import njit
-from ._pivot import pivot_row
 from .scaling import scaled
 
 __all__ = ["smallest_enclosing_ball", "circumball", "meb_radius_small"]
@@ -152,106 +152,23 @@ def _smallest_containing(pts: np.ndarray, centre: np.ndarray, e: int, start: flo
     return r
 
 
-@njit(cache=True)
-def _solve_small(a, b, k):
-    """Gaussian elimination with partial pivoting on the leading k x k block; False if singular."""
-    m = a.copy()
-    x = b.copy()
-    scale = 0.0
-    for i in range(k):
-        for j in range(k):
-            scale = max(scale, abs(m[i, j]))
-    if scale == 0.0:
-        return x, False
-    for col in range(k):
-        piv, best = pivot_row(m, col, k)
-        if best <= 1e-13 * scale:
-            return x, False
-        if piv != col:
-            for j in range(k):
-                tmp = m[col, j]
-                m[col, j] = m[piv, j]
-                m[piv, j] = tmp
-            tmp = x[col]
-            x[col] = x[piv]
-            x[piv] = tmp
-        for r in range(col + 1, k):
-            f = m[r, col] / m[col, col]
-            for j in range(col, k):
-                m[r, j] -= f * m[col, j]
-            x[r] -= f * x[col]
-    for col in range(k - 1, -1, -1):
-        s = x[col]
-        for j in range(col + 1, k):
-            s -= m[col, j] * x[j]
-        x[col] = s / m[col, col]
-    return x, True
-
-
-@njit(cache=True)
-def meb_radius_small(pts):
+def meb_radius_small(pts: npt.ArrayLike) -> float:
     """Radius of the smallest enclosing ball of a few points (rows of ``pts``), by subset search.
 
     Thesis: Definition 2.9 / Theorem 2.10 (the ball realising the Čech value of a simplex).
+
+    Compiled C++ (``src/miniball.cpp``): the smallest ball is the circumscribed ball, within the
+    affine hull, of some subset of the points, so the radius is the smallest such circumradius
+    whose ball contains every point (2^k subsets, each a small Gaussian elimination).
+
+    Parameters
+    ----------
+    pts : array_like of float, shape (k, d)
+        The points (k at most 62).
+
+    Returns
+    -------
+    float
+        The radius (0 for one point or coincident points).
     """
-    k, dim = pts.shape
-    if k == 1:
-        return 0.0
-    best = np.inf
-    scale = 0.0
-    for i in range(k):
-        for j in range(dim):
-            scale = max(scale, abs(pts[i, j] - pts[0, j]))
-    slack = 1e-12 * scale * scale
-    gram = np.empty((k, k))
-    rhs = np.empty(k)
-    centre = np.empty(dim)
-    sub = np.empty(k, dtype=np.int64)
-    for mask in range(1, 1 << k):
-        size = 0
-        for i in range(k):
-            if mask >> i & 1:
-                sub[size] = i
-                size += 1
-        if size == 1:
-            continue  # a single point encloses the others only if they coincide (radius 0 handled below)
-        p0 = sub[0]
-        for a in range(size - 1):
-            ia = sub[a + 1]
-            s = 0.0
-            for t in range(dim):
-                da = pts[ia, t] - pts[p0, t]
-                s += da * da
-            rhs[a] = s
-            for b in range(size - 1):
-                ib = sub[b + 1]
-                g = 0.0
-                for t in range(dim):
-                    g += (pts[ia, t] - pts[p0, t]) * (pts[ib, t] - pts[p0, t])
-                gram[a, b] = 2.0 * g
-        lam, ok = _solve_small(gram, rhs, size - 1)
-        if not ok:
-            continue
-        for t in range(dim):
-            c = pts[p0, t]
-            for a in range(size - 1):
-                c += lam[a] * (pts[sub[a + 1], t] - pts[p0, t])
-            centre[t] = c
-        r2 = 0.0
-        for t in range(dim):
-            r2 += (centre[t] - pts[p0, t]) ** 2
-        if r2 >= best:
-            continue
-        inside = True
-        for i in range(k):
-            d2 = 0.0
-            for t in range(dim):
-                d2 += (pts[i, t] - centre[t]) ** 2
-            if d2 > r2 + slack + 1e-12 * r2:
-                inside = False
-                break
-        if inside:
-            best = r2
-    if best == np.inf:
-        return 0.0  # all points coincide
-    return np.sqrt(best)
+    return miniball.meb_radius_small(np.ascontiguousarray(pts, dtype=np.float64))

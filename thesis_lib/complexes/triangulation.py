@@ -35,8 +35,8 @@ from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from scipy.spatial import ConvexHull, QhullError, cKDTree
 
+from .._core import triangulation as triangulation_core
 from .._validate import as_points, check_size, check_weights
-from ..jit import njit
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
@@ -221,49 +221,6 @@ def _locate(geo: Geometry, tri: np.ndarray, nb: np.ndarray, queries: np.ndarray,
     return cur
 
 
-@njit(cache=True)
-def _hint_pairs(tri, hint):
-    """Facet pairs claimed by ``hint`` (s1 < s2), checked: the back pointer exists and the facets
-    have the same vertices.  Returns (s1, i1, s2, i2, ok) with one row per claimed pair."""
-    m, w = tri.shape
-    count = 0
-    for s in range(m):
-        for i in range(w):
-            if hint[s, i] > s:
-                count += 1
-    s1 = np.empty(count, dtype=np.int64)
-    i1 = np.empty(count, dtype=np.int64)
-    s2 = np.empty(count, dtype=np.int64)
-    i2 = np.empty(count, dtype=np.int64)
-    ok = np.zeros(count, dtype=np.bool_)
-    r = 0
-    for s in range(m):
-        for i in range(w):
-            t = hint[s, i]
-            if t <= s:
-                continue
-            s1[r], i1[r], s2[r], i2[r] = s, i, t, 0
-            for j in range(w):
-                if hint[t, j] == s:
-                    i2[r] = j
-                    good = True
-                    a = 0
-                    b = 0
-                    for _ in range(w - 1):
-                        if a == i:
-                            a += 1
-                        if b == j:
-                            b += 1
-                        if tri[s, a] != tri[t, b]:
-                            good = False
-                        a += 1
-                        b += 1
-                    ok[r] = good
-                    break
-            r += 1
-    return s1, i1, s2, i2, ok
-
-
 def _pairing(tri: np.ndarray, n: int, hint: np.ndarray | None):
     """Interior facet pairs (s1, i1, s2, i2), boundary occurrences (s, i), neighbours, and the
     simplices with a facet in three or more simplices or a neighbour ``hint`` that does not match."""
@@ -271,7 +228,8 @@ def _pairing(tri: np.ndarray, n: int, hint: np.ndarray | None):
     d = w - 1
     bad = np.zeros(m, dtype=bool)
     if hint is not None:
-        s1, i1, s2, i2, same = _hint_pairs(np.ascontiguousarray(tri), np.ascontiguousarray(hint))
+        s1, i1, s2, i2, same = triangulation_core.hint_pairs(np.ascontiguousarray(tri, dtype=np.int64),
+                                                                np.ascontiguousarray(hint, dtype=np.int64))
         bad[s1[~same]] = bad[s2[~same]] = True
         s1, i1, s2, i2 = s1[same], i1[same], s2[same], i2[same]
         nb = np.full((m, w), -1, dtype=np.int64)
