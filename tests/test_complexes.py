@@ -58,10 +58,11 @@ def test_rips_equals_gudhi(dim, eps, max_dim):
 
 def test_rips_kd_tree_path_equals_gudhi():
     # more than 2000 points in low dimension: edges come from a k-d tree instead of all pairs
-    from thesis_lib.complexes._flag import edges_within, pairwise_edges
+    from thesis_lib._core import flag_complex
+    from thesis_lib.complexes._flag import edges_within
 
     pts = np.random.default_rng(9).random((2500, 3))
-    a, b = edges_within(pts, 0.06), pairwise_edges(pts, 0.06)
+    a, b = edges_within(pts, 0.06), flag_complex.pairwise_edges(pts, 0.06)  # k-d tree vs brute force
     np.testing.assert_array_equal(a[0], b[0])
     np.testing.assert_array_equal(a[1], b[1])
     f = rips(pts, 0.04, 3)
@@ -279,18 +280,18 @@ def test_witness_random_against_brute_force(seed, n, n_landmarks, nu, eps):
 
 def test_witness_kernel_paths_agree():
     # the sorted-prefix scan, the gathered scan and the full scan give identical children and values
-    from thesis_lib.complexes.witness import _edge_values, _witness_level
+    from thesis_lib._core import witness_complex
 
     pts = np.random.default_rng(8).random((3000, 4))
     lm = maxmin_landmarks(pts, 16, seed=0)
     D = np.ascontiguousarray(witness_offsets(pts, lm, 1))
-    ev, arg = _edge_values(D)
+    ev, arg = witness_complex.edge_values(D)
     order = np.argsort(D, axis=1, kind="stable")
     sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
     tri = np.array(list(itertools.combinations(range(16), 3)))
     for eps in (np.inf, 0.3):
-        a = _witness_level(tri, D, ev, arg, eps, order, sorted_d, True, 7)
-        b = _witness_level(tri, D, ev, arg, eps, order, sorted_d, False, 1)
+        a = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, True, n_threads=2)
+        b = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, False, n_threads=1)
         np.testing.assert_array_equal(a[0], b[0])
         np.testing.assert_array_equal(a[1], b[1])
 

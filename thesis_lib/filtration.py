@@ -263,7 +263,7 @@ class Filtration:
             raise ValueError(f"no facets for dimension {d} in a filtration of dimension {self.dimension}")
         cache = self.__dict__.setdefault("_facet_cache", {})
         if d not in cache:
-            from .facet_lookup import facet_indices  # numba kernels: loaded when first needed
+            from .facet_lookup import facet_indices  # compiled kernels: loaded when first needed
 
             cache[d] = facet_indices(self.simplices[d - 1], self.simplices[d])
         return cache[d]

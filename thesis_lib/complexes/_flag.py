@@ -1,44 +1,26 @@
-"""numba kernels shared by the flag-complex constructions (Rips, Čech candidates, lazy witness).
+"""The flag-complex constructions shared by Rips, Čech candidates and the lazy witness complex.
 
 A graph is stored as an "upper" CSR structure: for every vertex ``v`` the sorted neighbours
 ``u > v`` (``indices[indptr[v]:indptr[v + 1]]``) and the edge values in the same places.  A level of
 the expansion turns the ``d``-simplices (rows sorted ascending, rows in lexicographic order) into
 the ``(d + 1)``-simplices that are cliques, again in lexicographic order, with value = the maximum
-of the parent's value and the new edges' values.  Output buffers grow by doubling, so one pass is
-enough and no Python object is made per simplex.
+of the parent's value and the new edges' values.  The loops are compiled C++ (``src/flag_complex.cpp``):
+one pass per level, no Python object made per simplex.
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from .._core import flag_complex
 from .._validate import MAX_SIMPLICES
-from ..jit import njit
 
 
-@njit(cache=True)
-def _grow(buf, vals, count):
-    new_buf = np.empty((2 * buf.shape[0] + 16, buf.shape[1]), dtype=buf.dtype)
-    new_vals = np.empty(2 * vals.shape[0] + 16, dtype=vals.dtype)
-    new_buf[:count] = buf[:count]
-    new_vals[:count] = vals[:count]
-    return new_buf, new_vals
+def lower_bound(arr: np.ndarray, lo: int, hi: int, x) -> int:
+    """The first position in ``arr[lo:hi]`` whose entry is not below ``x`` (``arr`` sorted there).
 
-
-@njit(cache=True, inline="always")
-def _append_edge(out, out_v, count, i, j, value):
-    """Write edge ``(i, j)`` with ``value`` at row ``count`` of the growing buffers; return them
-    (new arrays when they had to grow).  Inlined: it runs once per edge found."""
-    if count == out.shape[0]:
-        out, out_v = _grow(out, out_v, count)
-    out[count, 0] = i
-    out[count, 1] = j
-    out_v[count] = value
-    return out, out_v
-
-
-@njit(cache=True)
-def lower_bound(arr, lo, hi, x):
+    Thesis: §2.1.2 (cliques and witnesses are found in sorted lists).
+    """
     while lo < hi:
         mid = (lo + hi) >> 1
         if arr[mid] < x:
@@ -48,115 +30,36 @@ def lower_bound(arr, lo, hi, x):
     return lo
 
 
-@njit(cache=True)
-def _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, fill):
-    m, width = parents.shape
-    count = 0
-    ptr = np.empty(width, dtype=np.int64)
-    ends = np.empty(width, dtype=np.int64)
-    for r in range(m):
-        last = parents[r, width - 1]
-        start_last = indptr[last]
-        end_last = indptr[last + 1]
-        if start_last == end_last:
-            continue
-        first_cand = indices[start_last]
-        ok = True
-        for i in range(width - 1):
-            v = parents[r, i]
-            ptr[i] = lower_bound(indices, indptr[v], indptr[v + 1], first_cand)
-            ends[i] = indptr[v + 1]
-            if ptr[i] == ends[i]:
-                ok = False
-                break
-        if not ok:
-            continue
-        base = parent_vals[r]
-        for q in range(start_last, end_last):
-            w = indices[q]
-            val = max(base, edge_vals[q])
-            found = True
-            for i in range(width - 1):
-                p = ptr[i]
-                e = ends[i]
-                while p < e and indices[p] < w:
-                    p += 1
-                ptr[i] = p
-                if p == e:
-                    found = False
-                    ok = False
-                    break
-                if indices[p] != w:
-                    found = False
-                    break
-                if edge_vals[p] > val:
-                    val = edge_vals[p]
-            if not ok:
-                break
-            if found:
-                if fill:
-                    for i in range(width):
-                        out[count, i] = parents[r, i]
-                    out[count, width] = w
-                    out_v[count] = val
-                count += 1
-    return count
-
-
-@njit(cache=True)
-def expand_level(parents, parent_vals, indptr, indices, edge_vals):
+def expand_level(parents: np.ndarray, parent_vals: np.ndarray, indptr: np.ndarray, indices: np.ndarray,
+                 edge_vals: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """All cliques one dimension up from ``parents``; returns ``(children, values)``.
 
-    Two passes over the same loop: count, then fill arrays of the exact size.
+    ``parents``: the d-simplices (sorted rows, lexicographic), ``parent_vals`` their values; the graph
+    is the upper CSR ``indptr, indices, edge_vals`` of :func:`upper_csr`.  A child's value is the
+    maximum of its parent's and of its new edges' values; children are lexicographic.
+    Compiled C++ (``src/flag_complex.cpp``).  Thesis: §2.1.2 (a flag complex).
     """
-    width = parents.shape[1]
-    dummy = np.empty((0, width + 1), dtype=np.int64)
-    dummy_v = np.empty(0, dtype=np.float64)
-    count = _expand_pass(parents, parent_vals, indptr, indices, edge_vals, dummy, dummy_v, False)
-    out = np.empty((count, width + 1), dtype=np.int64)
-    out_v = np.empty(count, dtype=np.float64)
-    _expand_pass(parents, parent_vals, indptr, indices, edge_vals, out, out_v, True)
-    return out, out_v
+    return flag_complex.expand_level(np.ascontiguousarray(parents, dtype=np.int64),
+                                     np.ascontiguousarray(parent_vals, dtype=np.float64),
+                                     np.ascontiguousarray(indptr, dtype=np.int64),
+                                     np.ascontiguousarray(indices, dtype=np.int64),
+                                     np.ascontiguousarray(edge_vals, dtype=np.float64))
 
 
-@njit(cache=True)
-def pairwise_edges(points, threshold):
-    """Pairs ``i < j`` with ``|p_i - p_j| <= threshold`` (lexicographic) and their lengths."""
-    n, dim = points.shape
-    cap = 1024
-    out = np.empty((cap, 2), dtype=np.int64)
-    out_v = np.empty(cap, dtype=np.float64)
-    count = 0
-    t2 = threshold * threshold
-    for i in range(n):
-        for j in range(i + 1, n):
-            s = 0.0
-            for k in range(dim):
-                diff = points[i, k] - points[j, k]
-                s += diff * diff
-            if s <= t2 * (1.0 + 1e-12) + 1e-300:
-                length = np.sqrt(s)
-                if length <= threshold:
-                    out, out_v = _append_edge(out, out_v, count, i, j, length)
-                    count += 1
-    return out[:count].copy(), out_v[:count].copy()
+def pairwise_edges(points: np.ndarray, threshold: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs ``i < j`` with ``|p_i - p_j| <= threshold`` (lexicographic) and their lengths.
+
+    Brute force, compiled C++ (``src/flag_complex.cpp``).  Thesis: Definition 2.11.
+    """
+    return flag_complex.pairwise_edges(np.ascontiguousarray(points, dtype=np.float64), float(threshold))
 
 
-@njit(cache=True)
-def matrix_edges(matrix, threshold):
-    """Pairs ``i < j`` with ``matrix[i, j] <= threshold`` (lexicographic) and their entries."""
-    n = matrix.shape[0]
-    cap = 1024
-    out = np.empty((cap, 2), dtype=np.int64)
-    out_v = np.empty(cap, dtype=np.float64)
-    count = 0
-    for i in range(n):
-        for j in range(i + 1, n):
-            v = matrix[i, j]
-            if v <= threshold:
-                out, out_v = _append_edge(out, out_v, count, i, j, v)
-                count += 1
-    return out[:count].copy(), out_v[:count].copy()
+def matrix_edges(matrix: np.ndarray, threshold: float) -> tuple[np.ndarray, np.ndarray]:
+    """Pairs ``i < j`` with ``matrix[i, j] <= threshold`` (lexicographic) and their entries.
+
+    Compiled C++ (``src/flag_complex.cpp``).  Thesis: Definition 2.11.
+    """
+    return flag_complex.matrix_edges(np.ascontiguousarray(matrix, dtype=np.float64), float(threshold))
 
 
 def upper_csr(n: int, edges: np.ndarray, edge_values: np.ndarray):
@@ -217,7 +120,7 @@ def flag_levels(n: int, edges: np.ndarray, edge_values: np.ndarray, max_dim: int
 def edges_within(points: np.ndarray, threshold: float) -> tuple[np.ndarray, np.ndarray]:
     """Lexicographic pairs ``i < j`` at distance <= ``threshold`` and their lengths.
 
-    Brute force in numba for small inputs; a k-d tree (scipy) when there are many points in low
+    Brute force in compiled C++ for small inputs; a k-d tree (scipy) when there are many points in low
     dimension and the threshold is finite (then far pairs are never looked at).
     """
     n, dim = points.shape

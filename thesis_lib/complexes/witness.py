@@ -13,7 +13,8 @@ so **ν = k + 1**: the thesis's k = 0 is ``nu=1`` (the default), and this ν is 
   complex is the flag complex of those edges (a simplex's value is its largest edge value).
 
 Vertices of both complexes are landmark positions ``0..L-1``: vertex ``i`` is the point
-``points[landmarks[i]]``.  Every landmark is its own witness, so vertices enter at 0.
+``points[landmarks[i]]``.  Every landmark is its own witness, so vertices enter at 0.  The edge values
+and the levels of :func:`witness` are computed in compiled C++ (``src/witness_complex.cpp``).
 """
 
 from __future__ import annotations
@@ -21,10 +22,10 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
+from .._core import witness_complex
 from .._validate import as_points, check_indices, check_int, check_max_dim, check_memory, check_radius
 from ..filtration import Filtration
-from ..jit import load_numba, njit, prange
-from ._flag import flag_levels, lower_bound, matrix_edges
+from ._flag import flag_levels, matrix_edges
 from .scaling import scaled, unscale_values
 
 __all__ = ["witness", "lazy_witness", "witness_offsets"]
@@ -85,193 +86,6 @@ def _offsets(points, landmarks, nu, per_pair: int) -> np.ndarray:
 
 
 _SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted witness lists are kept
-_BIG = 1e300  # stands for "not a witness" (finite, so the fastmath reductions stay valid)
-
-
-@njit(cache=True, fastmath=True)
-def _minmax_full(cur, row):
-    best = _BIG
-    for x in range(cur.shape[0]):
-        v = cur[x] if cur[x] > row[x] else row[x]
-        best = v if v < best else best
-    return best
-
-
-@njit(cache=True)
-def _minmax_gather(cur, idx, cnt, row):
-    best = _BIG
-    for j in range(cnt):
-        v = row[idx[j]]
-        if cur[j] > v:
-            v = cur[j]
-        if v < best:
-            best = v
-    return best
-
-
-@njit(cache=True)
-def _candidate_counts(parents, ev, eps):
-    """Per parent: the landmarks w > last vertex whose edges to every vertex have value <= eps."""
-    m, width = parents.shape
-    n_l = ev.shape[0]
-    counts = np.zeros(m, dtype=np.int64)
-    for r in range(m):
-        c = 0
-        for w in range(parents[r, width - 1] + 1, n_l):
-            ok = True
-            for i in range(width):
-                if ev[parents[r, i], w] > eps:
-                    ok = False
-                    break
-            if ok:
-                c += 1
-        counts[r] = c
-    return counts
-
-
-@njit(cache=True)
-def _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid, start,
-                    cur, ccur, idx):
-    """Children of parent ``r`` written into rows ``start, start + 1, ...`` (one per candidate)."""
-    width = parents.shape[1]
-    n_l, n_x = D.shape
-    cnt = 0
-    pv = _BIG
-    xp = 0
-    for x in range(n_x):
-        mx = D[parents[r, 0], x]
-        for i in range(1, width):
-            v = D[parents[r, i], x]
-            if v > mx:
-                mx = v
-        if mx <= eps:
-            cur[x] = mx
-            ccur[cnt] = mx
-            idx[cnt] = x
-            cnt += 1
-            if mx < pv:
-                pv = mx
-                xp = x
-        else:
-            cur[x] = _BIG
-    slot = start
-    last = parents[r, width - 1]
-    compressed = 4 * cnt < n_x
-    for w in range(last + 1, n_l):
-        lb = pv
-        ok = True
-        for i in range(width):
-            e = ev[parents[r, i], w]
-            if e > eps:
-                ok = False
-                break
-            if e > lb:
-                lb = e
-        if not ok:
-            continue
-        # (the parent is in the complex, so cnt > 0 and xp is a real witness)
-        ub = max(cur[xp], D[w, xp])
-        for i in range(width):
-            x = arg[parents[r, i], w]
-            v = max(cur[x], D[w, x])
-            if v < ub:
-                ub = v
-        n_scan = n_x + 1
-        u_best = 0
-        if use_sorted and ub > lb:
-            for i in range(width + 1):
-                u = parents[r, i] if i < width else w
-                c = lower_bound(sorted_d[u], 0, sorted_d.shape[1], ub)
-                if c < n_scan:
-                    n_scan = c
-                    u_best = u
-        if ub <= lb:
-            best = ub
-        elif 3 * n_scan < (cnt if compressed else n_x):
-            best = ub
-            for k in range(n_scan):
-                if sorted_d[u_best, k] >= best:
-                    break
-                x = order[u_best, k]
-                v = cur[x]
-                if D[w, x] > v:
-                    v = D[w, x]
-                if v < best:
-                    best = v
-        elif compressed:
-            best = _minmax_gather(ccur, idx, cnt, D[w])
-        else:
-            best = _minmax_full(cur, D[w])
-        for i in range(width):
-            out[slot, i] = parents[r, i]
-        out[slot, width] = w
-        out_v[slot] = max(best, 0.0)
-        valid[slot] = best <= eps
-        slot += 1
-
-
-@njit(cache=True, parallel=True)
-def _witness_level(parents, D, ev, arg, eps, order, sorted_d, use_sorted, n_chunks):
-    """Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.
-
-    ``ev[a, b]`` is the (unclamped) value of edge ab and ``arg[a, b]`` a witness realising it; they
-    give a lower bound and candidate witnesses, so many simplices need no scan over all points.
-    With ``use_sorted``, ``order[l]`` lists the points by increasing ``D[l, x]`` (``sorted_d[l]``):
-    a witness beating the current best b has D[u, x] < b for every vertex u, so only the prefix of
-    the shortest such list is scanned.  Parents are processed in parallel, each writing its
-    candidates into its own rows (so the output order does not depend on the threads).
-    """
-    m, width = parents.shape
-    n_x = D.shape[1]
-    counts = _candidate_counts(parents, ev, eps)
-    starts = np.zeros(m + 1, dtype=np.int64)
-    for r in range(m):
-        starts[r + 1] = starts[r] + counts[r]
-    total = starts[m]
-    out = np.empty((total, width + 1), dtype=np.int64)
-    out_v = np.empty(total, dtype=np.float64)
-    valid = np.zeros(total, dtype=np.bool_)
-    n_chunks = max(1, min(m, n_chunks))
-    for c in prange(n_chunks):
-        cur = np.empty(n_x)
-        ccur = np.empty(n_x)
-        idx = np.empty(n_x, dtype=np.int64)
-        for r in range(c * m // n_chunks, (c + 1) * m // n_chunks):
-            if counts[r] > 0:
-                _witness_parent(r, parents, D, ev, arg, eps, order, sorted_d, use_sorted, out, out_v, valid,
-                                starts[r], cur, ccur, idx)
-    keep = np.flatnonzero(valid)
-    return out[keep], out_v[keep]
-
-
-@njit(cache=True)
-def _edge_values(D):
-    """Unclamped edge values min_x max(D[a, x], D[b, x]) and a witness realising each."""
-    n_l, n_x = D.shape
-    out = np.zeros((n_l, n_l))
-    arg = np.zeros((n_l, n_l), dtype=np.int64)
-    for a in range(n_l):
-        best0 = np.inf
-        for x in range(n_x):
-            if D[a, x] < best0:
-                best0 = D[a, x]
-                arg[a, a] = x
-        out[a, a] = best0
-        for b in range(a + 1, n_l):
-            best = np.inf
-            bx = 0
-            for x in range(n_x):
-                u = D[a, x]
-                v = D[b, x]
-                val = u if u > v else v
-                if val < best:
-                    best = val
-                    bx = x
-            out[a, b] = best
-            out[b, a] = best
-            arg[a, b] = bx
-            arg[b, a] = bx
-    return out, arg
 
 
 def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
@@ -301,7 +115,7 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
     simplices = [np.arange(n_l, dtype=np.int64).reshape(n_l, 1)]
     values = [np.zeros(n_l)]
     if max_dim >= 1:
-        ev, arg = _edge_values(D)
+        ev, arg = witness_complex.edge_values(D)
         edges, vals = matrix_edges(np.maximum(ev, 0.0), eps)
         simplices.append(edges)
         values.append(vals)
@@ -314,8 +128,8 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
         for _ in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break
-            s, v = _witness_level(simplices[-1], D, ev, arg, eps, order, sorted_d, use_sorted,
-                                  64 * load_numba().get_num_threads())
+            s, v = witness_complex.witness_level(np.ascontiguousarray(simplices[-1], dtype=np.int64), D, ev, arg,
+                                                 eps, order, sorted_d, use_sorted)
             simplices.append(s)
             values.append(v)
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)
@@ -342,7 +156,7 @@ def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: fl
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
     D = np.ascontiguousarray(_offsets(points, landmarks, nu, 16))
-    ev, _ = _edge_values(D)
+    ev, _ = witness_complex.edge_values(D)
     edges, vals = matrix_edges(np.maximum(ev, 0.0), eps) if max_dim >= 1 else (np.empty((0, 2), np.int64), np.empty(0))
     simplices, values = flag_levels(D.shape[0], edges, vals, max_dim)
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)
