@@ -34,47 +34,49 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, double> triangle_kernel(
     const std::int64_t* sp = s.data();
     for (std::size_t i = 0; i < 3 * m; ++i)
         if (sp[i] < 0 || sp[i] >= nv) throw std::invalid_argument("triangle_kernel: a vertex index is outside 0..nv-1");
-    const auto V = v.view();
-    const auto S = s.view();
-    auto D = dot.view();
-    auto Q = sq.view();
-    auto T = twice.view();
-    auto P = pts.view();
-    auto L = lo.view();
-    auto H = hi.view();
+    // raw C-order pointers: dot, sq (3, m) corner-major; pts (3, 3, m); lo, hi (m, 3)
+    const double* V = v.data();
+    double *D = dot.data(), *Q = sq.data(), *T = twice.data(), *P = pts.data();
+    std::int64_t *L = lo.data(), *H = hi.data();
     std::int64_t first_repeated = -1, first_degenerate = -1, n_degenerate = 0;
     double longest = 0.0;
     {
         nb::gil_scoped_release release;
         for (std::size_t t = 0; t < m; ++t) {
-            if (first_repeated < 0 && (S(t, 0) == S(t, 1) || S(t, 1) == S(t, 2) || S(t, 0) == S(t, 2)))
+            const std::int64_t* st = sp + 3 * t;
+            if (first_repeated < 0 && (st[0] == st[1] || st[1] == st[2] || st[0] == st[2]))
                 first_repeated = static_cast<std::int64_t>(t);
             for (std::size_t k = 0; k < 3; ++k) {  // the edge opposite corner k is ridge 3t + k
-                const std::int64_t i = S(t, (k + 1) % 3), j = S(t, (k + 2) % 3);
-                L(t, k) = i < j ? i : j;
-                H(t, k) = i > j ? i : j;
+                const std::int64_t i = st[(k + 1) % 3], j = st[(k + 2) % 3];
+                L[3 * t + k] = i < j ? i : j;
+                H[3 * t + k] = i > j ? i : j;
             }
+            double c[3][3];  // c[k][a]: coordinate a of corner k, also stored in pts[k, a, t]
             for (std::size_t k = 0; k < 3; ++k)
-                for (std::size_t a = 0; a < 3; ++a) P(k, a, t) = V(S(t, k), a);
+                for (std::size_t a = 0; a < 3; ++a) {
+                    c[k][a] = V[3 * st[k] + a];
+                    P[(3 * k + a) * m + t] = c[k][a];
+                }
             // edge opposite corner k: e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0
-            const double e0x = P(2, 0, t) - P(1, 0, t), e0y = P(2, 1, t) - P(1, 1, t), e0z = P(2, 2, t) - P(1, 2, t);
-            const double e1x = P(0, 0, t) - P(2, 0, t), e1y = P(0, 1, t) - P(2, 1, t), e1z = P(0, 2, t) - P(2, 2, t);
-            const double e2x = P(1, 0, t) - P(0, 0, t), e2y = P(1, 1, t) - P(0, 1, t), e2z = P(1, 2, t) - P(0, 2, t);
+            const double e0x = c[2][0] - c[1][0], e0y = c[2][1] - c[1][1], e0z = c[2][2] - c[1][2];
+            const double e1x = c[0][0] - c[2][0], e1y = c[0][1] - c[2][1], e1z = c[0][2] - c[2][2];
+            const double e2x = c[1][0] - c[0][0], e2y = c[1][1] - c[0][1], e2z = c[1][2] - c[0][2];
             const double s0 = e0x * e0x + e0y * e0y + e0z * e0z;
             const double s1 = e1x * e1x + e1y * e1y + e1z * e1z;
             const double s2 = e2x * e2x + e2y * e2y + e2z * e2z;
-            Q(0, t) = s0;
-            Q(1, t) = s1;
-            Q(2, t) = s2;
+            Q[t] = s0;
+            Q[m + t] = s1;
+            Q[2 * m + t] = s2;
             longest = py_max(py_max(py_max(longest, s0), s1), s2);
-            D(0, t) = 0.5 * (s1 + s2 - s0);  // law of cosines
-            D(1, t) = 0.5 * (s2 + s0 - s1);
-            D(2, t) = 0.5 * (s0 + s1 - s2);
+            D[t] = 0.5 * (s1 + s2 - s0);  // law of cosines
+            D[m + t] = 0.5 * (s2 + s0 - s1);
+            D[2 * m + t] = 0.5 * (s0 + s1 - s2);
             const double cx = e1y * e2z - e1z * e2y;
             const double cy = e1z * e2x - e1x * e2z;
             const double cz = e1x * e2y - e1y * e2x;
-            T(t) = std::sqrt(cx * cx + cy * cy + cz * cz);
-            if (0.5 * T(t) <= rtol * py_max(py_max(s0, s1), s2)) {
+            const double tw = std::sqrt(cx * cx + cy * cy + cz * cz);
+            T[t] = tw;
+            if (0.5 * tw <= rtol * py_max(py_max(s0, s1), s2)) {
                 ++n_degenerate;
                 if (first_degenerate < 0) first_degenerate = static_cast<std::int64_t>(t);
             }
