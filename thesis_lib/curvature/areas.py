@@ -26,8 +26,8 @@ from fractions import Fraction
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import InvalidTypeError, resolve_alias
 from .._core import vertex_areas as _vertex_areas_core
+from .._validate import InvalidTypeError, resolve_alias
 from .manifold import checked_mesh
 from .validate import ASPECT_BOUND, Mesh
 
