@@ -8,6 +8,7 @@
 // operation by operation (the same comparisons in the same order, so the same bytes).
 #include <nanobind/stl/tuple.h>
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -123,6 +124,16 @@ Edges expand_level(In<std::int64_t, nb::ndim<2>> parents, In<double, nb::ndim<1>
     std::vector<double> out_v;
     {
         nb::gil_scoped_release release;
+        // at most one child per upper neighbour of a parent's last vertex: reserve that once (pages
+        // not written are never touched), so the buffers do not regrow level after level
+        std::int64_t bound = 0;
+        for (std::int64_t r = 0; r < m; ++r) {
+            const std::int64_t last = par[r * width + width - 1];
+            bound += ip[last + 1] - ip[last];
+        }
+        bound = std::min<std::int64_t>(bound, std::int64_t(1) << 22);
+        out.reserve(static_cast<std::size_t>(bound * (width + 1)));
+        out_v.reserve(static_cast<std::size_t>(bound));
         std::vector<std::int64_t> ptr(static_cast<std::size_t>(width)), ends(static_cast<std::size_t>(width));
         for (std::int64_t r = 0; r < m; ++r) {
             const std::int64_t* row = par + r * width;

@@ -181,6 +181,8 @@ void witness_parent(const Level& L, std::int64_t r, std::int64_t* out, double* o
     }
 }
 
+// Refuse an index array with an entry outside [0, bound) before any of it is used.
+// Thesis: §2.1.2 (vertices are landmarks 0..L-1, witnesses points 0..N-1).
 void check_index_array(const std::int64_t* a, std::size_t size, std::int64_t bound, const char* what) {
     for (std::size_t k = 0; k < size; ++k)
         if (a[k] < 0 || a[k] >= bound) throw std::invalid_argument(std::string("witness_level: ") + what);
