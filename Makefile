@@ -10,7 +10,7 @@ export PATH := $(abspath $(BIN)):$(PATH)
 export PYDEVD_DISABLE_FILE_VALIDATION := 1
 export VTK_DEFAULT_OPENGL_WINDOW := vtkEGLRenderWindow
 
-.PHONY: book test experiments notebooks sweep bench bench-check clean install chromium
+.PHONY: book test test-sanitize experiments notebooks sweep bench bench-check clean install chromium
 
 # $(call unchanged,COMMAND): run COMMAND, then fail if it changed what `git status` shows
 define unchanged
@@ -47,6 +47,11 @@ test: $(STAMP) chromium
 	$(call unchanged,$(BIN)/python -m pytest -n 2 --dist loadfile -p no:cacheprovider \
 	    tests book experiments --nbval --nbval-sanitize-with tests/nbval_sanitize.cfg \
 	    --nbval-current-env)
+
+## test-sanitize: the compiled core built with AddressSanitizer and UndefinedBehaviorSanitizer
+## (build/sanitize), under its kernel, fuzz and cross-check tests (.ci/sanitize)
+test-sanitize: $(STAMP)
+	$(call unchanged,.ci/sanitize)
 
 chromium:
 	@command -v chromium >/dev/null 2>&1 || { \
