@@ -339,7 +339,8 @@ def sizes(work: Path, keep: bool = False) -> list[dict]:
     if not keep:
         shutil.rmtree(work)
     harness.write_results(SIZES_TOPIC, rows, meta=meta)
-    harness.print_table([("install", "{case}"), ("MB above numpy+scipy", lambda r: _fmt(r.get("mb"), ".1f")),
+    harness.print_table([("install", "{case}"), ("site-packages MB", "{site_packages_mb:.1f}"),
+                         ("MB above numpy+scipy", lambda r: _fmt(r.get("mb"), ".1f")),
                          ("apparent MB", lambda r: _fmt(r.get("apparent_mb"), ".1f")),
                          ("distributions added", lambda r: str(r.get("n_added", "—")))], rows)
     return rows
