@@ -737,6 +737,8 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
                 next_simplices(g, k + 1, all_i, all_d, maxdeg);
                 cand_i.clear();
                 cand_d.clear();
+                cand_i.reserve(all_i.size());
+                cand_d.reserve(all_i.size());
                 for (std::size_t c = 0; c < all_i.size(); ++c) {
                     if (!red.pivots.contains(all_i[c]) && !app_t.contains(all_i[c])) {
                         cand_i.push_back(all_i[c]);

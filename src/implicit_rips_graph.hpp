@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace thesis {
@@ -294,14 +295,14 @@ inline i64 zero_pivot_facet(const Graph& g, i64 tau, i64 k1, double diam, i64* w
 // least 2 size + 2.
 struct Table {
     std::vector<i64> keys;
-    std::vector<i64> vals;
+    std::unique_ptr<i64[]> vals;  // read only where keys are set: left uninitialised (as numba's np.empty)
     i64 mask = 0;
 
     explicit Table(i64 size) {
         i64 cap = 16;
         while (cap < 2 * size + 2) cap *= 2;
         keys.assign(static_cast<std::size_t>(cap), -1);
-        vals.assign(static_cast<std::size_t>(cap), 0);
+        vals.reset(new i64[static_cast<std::size_t>(cap)]);
         mask = cap - 1;
     }
     // The slot holding key, or the empty slot where it would go.
