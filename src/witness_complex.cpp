@@ -7,9 +7,11 @@
 // std::thread, each parent writing its own rows, so the output does not depend on the threads.
 #include <nanobind/stl/tuple.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <system_error>
 #include <tuple>
 
 #include "arrays.hpp"
@@ -211,7 +213,37 @@ std::tuple<Array<double>, Array<std::int64_t>> edge_values(In<double, nb::ndim<2
                 }
             }
             out[a * n_l + a] = best0;
-            for (std::int64_t b = a + 1; b < n_l; ++b) {
+            // four b at a time: D[a] is read once for them, and each b keeps its own scan in x order
+            // (val < best replaces), so the result is the one of one b at a time
+            std::int64_t b = a + 1;
+            for (; b + 4 <= n_l; b += 4) {
+                const double* D0 = d + b * n_x;
+                const double* D1 = D0 + n_x;
+                const double* D2 = D1 + n_x;
+                const double* D3 = D2 + n_x;
+                double best0 = inf, best1 = inf, best2 = inf, best3 = inf;
+                std::int64_t bx0 = 0, bx1 = 0, bx2 = 0, bx3 = 0;
+                for (std::int64_t x = 0; x < n_x; ++x) {
+                    const double u = Da[x];
+                    const double v0 = u > D0[x] ? u : D0[x];
+                    const double v1 = u > D1[x] ? u : D1[x];
+                    const double v2 = u > D2[x] ? u : D2[x];
+                    const double v3 = u > D3[x] ? u : D3[x];
+                    if (v0 < best0) { best0 = v0; bx0 = x; }
+                    if (v1 < best1) { best1 = v1; bx1 = x; }
+                    if (v2 < best2) { best2 = v2; bx2 = x; }
+                    if (v3 < best3) { best3 = v3; bx3 = x; }
+                }
+                const double best[4] = {best0, best1, best2, best3};
+                const std::int64_t bx[4] = {bx0, bx1, bx2, bx3};
+                for (int j = 0; j < 4; ++j) {
+                    out[a * n_l + b + j] = best[j];
+                    out[(b + j) * n_l + a] = best[j];
+                    arg[a * n_l + b + j] = bx[j];
+                    arg[(b + j) * n_l + a] = bx[j];
+                }
+            }
+            for (; b < n_l; ++b) {
                 const double* Db = d + b * n_x;
                 double best = inf;
                 std::int64_t bx = 0;
@@ -306,7 +338,13 @@ std::tuple<Array<std::int64_t>, Array<double>> witness_level(
         } else {
             std::vector<std::thread> pool;
             pool.reserve(static_cast<std::size_t>(threads - 1));
-            for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+            for (int t = 1; t < threads; ++t) {
+                try {
+                    pool.emplace_back(work);
+                } catch (const std::system_error&) {
+                    break;  // no more threads to be had: those started and this one share the chunks
+                }
+            }
             work();
             for (auto& th : pool) th.join();
         }
