@@ -46,17 +46,33 @@ struct Columns {
         pivot_value.assign(static_cast<std::size_t>(m_d), std::numeric_limits<double>::infinity());
     }
 
-    // The entry (coface t of value v, facet position i) of column c.
-    void put(std::int64_t c, std::int64_t t, double v, std::int64_t i) {
-        const std::int8_t s = static_cast<std::int8_t>(1 - 2 * (i & 1));
-        rows[fill[c]] = static_cast<std::int32_t>(t);
-        signs[fill[c]] = s;
-        ++fill[c];
-        if (pivot[c] == -1 || v < pivot_value[c]) {  // t ascending: ties keep the smaller index
-            pivot[c] = t;
-            pivot_sign[c] = s;
-            pivot_value[c] = v;
+    // Raw views of the columns for the fill pass (locals the compiler keeps in registers: an int8 store
+    // may alias anything, so member vectors would be reloaded after every entry).
+    struct Fill {
+        std::int64_t* fill;
+        std::int32_t* rows;
+        std::int8_t* signs;
+        std::int64_t* pivot;
+        std::int64_t* pivot_sign;
+        double* pivot_value;
+
+        // The entry (coface t of value v, facet position i) of column c.
+        void put(std::int64_t c, std::int64_t t, double v, std::int64_t i) const {
+            const std::int8_t s = static_cast<std::int8_t>(1 - 2 * (i & 1));
+            const std::int64_t at = fill[c];
+            rows[at] = static_cast<std::int32_t>(t);
+            signs[at] = s;
+            fill[c] = at + 1;
+            if (pivot[c] == -1 || v < pivot_value[c]) {  // t ascending: ties keep the smaller index
+                pivot[c] = t;
+                pivot_sign[c] = s;
+                pivot_value[c] = v;
+            }
         }
+    };
+
+    Fill filler() {
+        return {fill.data(), rows.data(), signs.data(), pivot.data(), pivot_sign.data(), pivot_value.data()};
     }
 
     Coboundary release() {
@@ -77,20 +93,30 @@ Coboundary coboundary(In<std::int64_t, nb::ndim<2>> facets_a, In<double, nb::ndi
         throw std::invalid_argument("coboundary: up_values must have one value per coface");
     const std::int64_t* facets = facets_a.data();
     const double* up_values = up_values_a.data();
-    for (std::int64_t e = 0; e < m_up * w; ++e)
-        if (facets[e] < 0 || facets[e] >= m_d) throw std::invalid_argument("coboundary: a facet index is out of range");
     Columns col;
+    bool out_of_range = false;
     {
         nb::gil_scoped_release release;
         col.indptr.assign(static_cast<std::size_t>(m_d + 1), 0);
-        for (std::int64_t t = 0; t < m_up; ++t)
-            for (std::int64_t i = 0; i < w; ++i) ++col.indptr[facets[t * w + i] + 1];
-        col.allocate(m_d);
-        for (std::int64_t t = 0; t < m_up; ++t) {
-            const double v = up_values[t];
-            for (std::int64_t i = 0; i < w; ++i) col.put(facets[t * w + i], t, v, i);
+        std::int64_t* count = col.indptr.data() + 1;
+        for (std::int64_t e = 0; e < m_up * w; ++e) {  // the counting pass checks every facet index
+            const std::int64_t f = facets[e];
+            if (f < 0 || f >= m_d) {
+                out_of_range = true;
+                break;
+            }
+            ++count[f];
+        }
+        if (!out_of_range) {
+            col.allocate(m_d);
+            const auto put = col.filler();
+            for (std::int64_t t = 0; t < m_up; ++t) {
+                const double v = up_values[t];
+                for (std::int64_t i = 0; i < w; ++i) put.put(facets[t * w + i], t, v, i);
+            }
         }
     }
+    if (out_of_range) throw std::invalid_argument("coboundary: a facet index is out of range");
     return col.release();
 }
 
@@ -137,12 +163,13 @@ std::tuple<I64, Array<std::int32_t>, Array<std::int8_t>, I64, I64, std::int64_t>
         }
         if (bad < 0) {
             col.allocate(m_d);
+            const auto put = col.filler();
             for (std::int64_t t = 0; t < m_up; ++t) {
                 const double v = up_values[t];
                 const std::int64_t a = tris[3 * t], b = tris[3 * t + 1], c = tris[3 * t + 2];
-                col.put(table[b * n + c], t, v, 0);
-                col.put(table[a * n + c], t, v, 1);
-                col.put(table[a * n + b], t, v, 2);
+                put.put(table[b * n + c], t, v, 0);
+                put.put(table[a * n + c], t, v, 1);
+                put.put(table[a * n + b], t, v, 2);
             }
         } else {
             col = Columns();

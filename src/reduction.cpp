@@ -37,7 +37,7 @@ Reduction reduce_columns(In<std::int64_t, nb::ndim<1>> indptr_a, In<R, nb::ndim<
                          In<std::int64_t, nb::ndim<1>> columns_a, In<bool, nb::ndim<1>> cleared_a,
                          In<std::int64_t, nb::ndim<1>> pivot_a, In<std::int64_t, nb::ndim<1>> pivot_coef_a,
                          std::int64_t p, int keep) {
-    // ---- the shapes and indices, checked once (entries' rows are checked where they are read)
+    // ---- the shapes and indices, checked once (the rows of an entry where it is read)
     if (indptr_a.shape(0) < 1) throw std::invalid_argument("reduce_columns: indptr must have m + 1 >= 1 entries");
     const std::int64_t m = static_cast<std::int64_t>(indptr_a.shape(0)) - 1;
     const std::int64_t nrows = static_cast<std::int64_t>(row_value_a.shape(0));
@@ -73,6 +73,7 @@ Reduction reduce_columns(In<std::int64_t, nb::ndim<1>> indptr_a, In<R, nb::ndim<
     std::int64_t additions = 0;
     {
         nb::gil_scoped_release release;
+        // a column's rows are checked when they are first read (most columns are paired untouched)
         auto row_at = [&](std::int64_t e) -> std::int64_t {
             const std::int64_t r = static_cast<std::int64_t>(rows[e]);
             if (r < 0 || r >= nrows) throw std::invalid_argument("reduce_columns: a row index is out of range");
@@ -80,6 +81,10 @@ Reduction reduce_columns(In<std::int64_t, nb::ndim<1>> indptr_a, In<R, nb::ndim<
         };
         std::vector<std::int32_t> owner(static_cast<std::size_t>(nrows), -1);  // the column owning each pivot
         std::vector<std::int64_t> pcoef(static_cast<std::size_t>(m), 0);  // its pivot's coefficient, reduced
+        const std::size_t npmax = static_cast<std::size_t>(std::min(ncols, nrows));  // pairs: distinct pivots
+        pair_c.reserve(npmax);
+        pair_r.reserve(npmax);
+        zero.reserve(static_cast<std::size_t>(ncols));
         vstart.assign(static_cast<std::size_t>(m), -1);
         vlen.assign(static_cast<std::size_t>(m), 0);
         ColumnHeap<double, std::int64_t, std::int64_t> heap;
