@@ -24,8 +24,10 @@ matrix ``A`` of rank ``r`` with invariant factors ``s_1 | s_2 | ... | s_r``:
    ``[0, M)``) gives ``diag(s_1, ..., s_r, 0, ...)`` exactly.
 
 Steps 1–3 cost ``O(m n r)`` word operations and ``O(r³)`` per prime; step 5 runs only when there
-is torsion.  (This is the determinant-modulus idea of Kannan–Bachem and Hafner–McCurley with the
-modulus taken as a gcd of minors instead of one determinant.)
+is torsion.  The word-size kernels (rank profile, determinant and adjugate modulo a prime, inverse
+modulo a prime, p-adic digits) are compiled C++ (``src/modular_smith.cpp``).  (This is the
+determinant-modulus idea of Kannan–Bachem and Hafner–McCurley with the modulus taken as a gcd of
+minors instead of one determinant.)
 """
 
 from __future__ import annotations
@@ -33,10 +35,10 @@ from __future__ import annotations
 import math
 import random
 
-import numba
 import numpy as np
 
-from ._elimination import dense_kernel, mod_inverse
+from ._core import modular_smith
+from ._elimination import dense_kernel
 from ._validate import is_prime
 
 __all__ = ["dense_invariants", "crt_primes"]
@@ -68,128 +70,6 @@ def _prime_stream():
             crt_primes(len(_PRIMES) + 64)
         yield _PRIMES[i]
         i += 1
-
-
-# --------------------------------------------------------------------------------------------
-# word-size kernels
-# --------------------------------------------------------------------------------------------
-
-
-@numba.njit(cache=True, inline="always")
-def _sub_mod(d, s, f, p, inv_p):
-    """(d - f s) mod p for float64 residues below 2²⁶: f·s < 2⁵² is exact, and x - p·floor(x/p)
-    reduces without an integer division (which would keep the loops of :func:`_axpy` from vectorising)."""
-    x = d - f * s
-    x -= p * np.floor(x * inv_p)
-    if x < 0:
-        x += p
-    elif x >= p:
-        x -= p
-    return x
-
-
-@numba.njit(cache=True)
-def _axpy(dst, src, f, p, inv_p, idx, n_idx, lo, hi):
-    """dst[c] = (dst[c] - f src[c]) mod p over ``idx[:n_idx]`` (if n_idx >= 0) or ``lo:hi``."""
-    if n_idx >= 0:
-        for t in range(n_idx):
-            c = idx[t]
-            dst[c] = _sub_mod(dst[c], src[c], f, p, inv_p)
-    else:
-        for c in range(lo, hi):
-            dst[c] = _sub_mod(dst[c], src[c], f, p, inv_p)
-
-
-@numba.njit(cache=True)
-def _rank_profile(a, p):
-    """Row echelon form of ``a`` (float64 residues mod p < 2²⁶, overwritten): pivot rows and columns."""
-    m, n = a.shape
-    fp = float(p)
-    inv_p = 1.0 / fp
-    order = np.arange(m)
-    rows = np.empty(min(m, n), dtype=np.int64)
-    cols = np.empty(min(m, n), dtype=np.int64)
-    idx = np.empty(n, dtype=np.int64)
-    k = 0
-    for j in range(n):
-        if k == m:
-            break
-        sel = -1
-        for i in range(k, m):
-            if a[i, j] != 0:
-                sel = i
-                break
-        if sel < 0:
-            continue
-        if sel != k:
-            for c in range(j, n):
-                a[k, c], a[sel, c] = a[sel, c], a[k, c]
-            order[k], order[sel] = order[sel], order[k]
-        inv = float(mod_inverse(np.int64(a[k, j]), p))
-        nnz = 0
-        for c in range(j, n):
-            if a[k, c] != 0:
-                idx[nnz] = c
-                nnz += 1
-        sparse = nnz if 2 * nnz < n - j else -1
-        for i in range(k + 1, m):
-            if a[i, j] != 0:
-                f = a[i, j] * inv
-                f -= fp * np.floor(f * inv_p)
-                _axpy(a[i], a[k], f, fp, inv_p, idx, sparse, j, n)
-        rows[k] = order[k]
-        cols[k] = j
-        k += 1
-    return rows[:k], cols[:k]
-
-
-@numba.njit(cache=True)
-def _pivot_row(a, k, r):
-    """The first row i in k..r-1 with a[i, k] != 0, or -1."""
-    for i in range(k, r):
-        if a[i, k] != 0:
-            return i
-    return -1
-
-
-@numba.njit(cache=True)
-def _det_adjugate(b, y, p):
-    """(det b mod p, adj(b) y mod p, ok) by LU mod p (float64 residues, p < 2²⁶); ok is False if
-    p divides det b."""
-    r = b.shape[0]
-    t = y.shape[1]
-    fp = float(p)
-    inv_p = 1.0 / fp
-    a = np.concatenate((b, y), axis=1)  # eliminate [b | y] together
-    det = 1
-    idx = np.empty(0, dtype=np.int64)
-    for k in range(r):
-        sel = _pivot_row(a, k, r)
-        if sel < 0:
-            return 0, np.zeros((r, t), dtype=np.int64), False
-        if sel != k:
-            for c in range(k, r + t):
-                a[k, c], a[sel, c] = a[sel, c], a[k, c]
-            det = p - det
-        det = det * np.int64(a[k, k]) % p
-        inv = float(mod_inverse(np.int64(a[k, k]), p))
-        for i in range(k + 1, r):
-            if a[i, k] != 0:
-                f = a[i, k] * inv
-                f -= fp * np.floor(f * inv_p)
-                _axpy(a[i], a[k], f, fp, inv_p, idx, -1, k + 1, r + t)
-    z = np.empty((r, t), dtype=np.int64)
-    for k in range(r - 1, -1, -1):  # back substitution, then scale by det: adj(b) y = det · b⁻¹ y
-        inv = mod_inverse(np.int64(a[k, k]), p)
-        for c in range(t):
-            s = np.int64(a[k, r + c])
-            for u in range(k + 1, r):
-                s = (s - np.int64(a[k, u]) * z[u, c]) % p
-            z[k, c] = s * inv % p
-    for k in range(r):
-        for c in range(t):
-            z[k, c] = z[k, c] * det % p
-    return det, z, True
 
 
 # --------------------------------------------------------------------------------------------
@@ -231,7 +111,7 @@ def _remainders(b: np.ndarray, y: np.ndarray, bound: int) -> tuple[list[int], li
     for q in _prime_stream():
         if product > 2 * bound:
             break
-        det, z, ok = _det_adjugate(_residues(b, q), _residues(y, q) if y.size else np.zeros((r, 0)), q)
+        det, z, ok = modular_smith.det_adjugate(_residues(b, q), _residues(y, q) if y.size else np.zeros((r, 0)), q)
         if ok:
             dets.append(det)
             zs.append(z)
@@ -248,59 +128,6 @@ def _determinant(b: np.ndarray, y: np.ndarray) -> tuple[int, np.ndarray]:
     dets, zs, used = _remainders(b, y, bound)
     det = int(_crt([np.array([d]) for d in dets], used)[0])
     return det, (_crt(zs, used) if y.size else np.zeros(y.shape, dtype=object))
-
-
-@numba.njit(cache=True)
-def _inverse_matrix(b, p):
-    """b⁻¹ mod p by Gauss–Jordan, and whether b is invertible mod p."""
-    r = b.shape[0]
-    a = b % p
-    inv = np.zeros((r, r), dtype=np.int64)
-    for i in range(r):
-        inv[i, i] = 1
-    for k in range(r):
-        sel = _pivot_row(a, k, r)
-        if sel < 0:
-            return inv, False
-        if sel != k:
-            for c in range(r):
-                a[k, c], a[sel, c] = a[sel, c], a[k, c]
-                inv[k, c], inv[sel, c] = inv[sel, c], inv[k, c]
-        f = mod_inverse(a[k, k], p)
-        for c in range(r):
-            a[k, c] = a[k, c] * f % p
-            inv[k, c] = inv[k, c] * f % p
-        for i in range(r):
-            g = a[i, k]
-            if i != k and g != 0:
-                for c in range(r):
-                    a[i, c] = (a[i, c] - g * a[k, c]) % p
-                    inv[i, c] = (inv[i, c] - g * inv[k, c]) % p
-    return inv, True
-
-
-@numba.njit(cache=True)
-def _dixon_digits(b, binv, res, p, steps):
-    """``steps`` more p-adic digits of x = b⁻¹ y (Dixon), from the residual ``res`` (updated in place).
-
-    x ≡ Σ_i digits[i] p^i; each step solves b d ≡ res (mod p) and sets res = (res - b d) / p.
-    Needs |b d| < 2⁶² for residues d < p (p chosen by the caller) and |res| < 2⁶².
-    """
-    r, t = res.shape
-    digits = np.empty((steps, r, t), dtype=np.int64)
-    for i in range(steps):
-        for c in range(t):
-            for k in range(r):
-                acc = 0
-                for u in range(r):
-                    acc = (acc + binv[k, u] * (res[u, c] % p)) % p
-                digits[i, k, c] = acc
-            for k in range(r):
-                acc = res[k, c]
-                for u in range(r):
-                    acc -= b[k, u] * digits[i, u, c]
-                res[k, c] = acc // p  # exact: b d ≡ res (mod p)
-    return digits
 
 
 def _horner(digits: np.ndarray, p: int) -> np.ndarray:
@@ -349,20 +176,20 @@ def _solve_dixon(b: np.ndarray, y: np.ndarray) -> tuple[int, np.ndarray] | None:
     while True:
         while not is_prime(q):
             q -= 1
-        binv, ok = _inverse_matrix(b, q)
+        binv, ok = modular_smith.inverse_mod(b, q)
         if ok:
             break
         q -= 1
     most = 1  # with q**most > 2 N D the reconstruction is certain to exist
     while q**most <= 2 * num_bound * hadamard:
         most += 1
-    res = y.copy()
+    res = np.array(y, dtype=np.int64, order="C")  # the residual, updated in place by the kernel
     u = np.zeros((r, t), dtype=object)
     steps, chunk = 0, 8
     b_obj = b.astype(object)
     while True:
         chunk = min(chunk, most - steps)
-        u = u + _horner(_dixon_digits(b, binv, res, q, chunk), q) * q**steps
+        u = u + _horner(modular_smith.dixon_digits(b, binv, res, q, chunk), q) * q**steps
         steps += chunk
         modulus = q**steps
         bound = math.isqrt((modulus - 1) // 2) if steps < most else None
@@ -442,7 +269,7 @@ def _smith_mod(a: np.ndarray, modulus: int) -> list[int]:
     a = a.copy()
     diag: list[int] = []
     if a.dtype != object and a.size:
-        units, rows, cols = dense_kernel(a, np.int64(modulus), np.int64(0))
+        units, rows, cols = dense_kernel(a, modulus, 0)
         diag = [1] * int(units)
         a = a[~rows][:, ~cols]
     while a.size:
@@ -502,7 +329,7 @@ def _as_exact(a: np.ndarray) -> np.ndarray:
 
 def _profile(a: np.ndarray, p: int, rows: np.ndarray, cols: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Rank profile of ``a[rows][:, cols]`` mod p, as original row and column indices."""
-    i, j = _rank_profile(np.ascontiguousarray(_residues(a[rows][:, cols], p)), p)
+    i, j = modular_smith.rank_profile(np.ascontiguousarray(_residues(a[rows][:, cols], p)), p)
     return rows[i], cols[j]
 
 
