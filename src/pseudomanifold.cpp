@@ -5,6 +5,7 @@
 #include <nanobind/stl/tuple.h>
 
 #include <algorithm>
+#include <memory>
 #include <tuple>
 
 namespace thesis {
@@ -54,15 +55,15 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t, BoolArray, Bo
         for (std::int64_t r = 0; r < mk; ++r) counts[LO[r] + 1] += 1;
         for (std::int64_t v = 0; v < nv; ++v) counts[v + 1] += counts[v];
         std::vector<std::int64_t> fill(counts.begin(), counts.end() - 1);
-        std::vector<std::int64_t> entries(static_cast<std::size_t>(mk));
+        std::unique_ptr<std::int64_t[]> entries(new std::int64_t[mk > 0 ? mk : 1]);  // every slot written below
         for (std::int64_t r = 0; r < mk; ++r) entries[fill[LO[r]]++] = r;
-        std::vector<std::int64_t> parent(static_cast<std::size_t>(mk));
+        std::unique_ptr<std::int64_t[]> parent(new std::int64_t[mk > 0 ? mk : 1]);
         for (std::int64_t r = 0; r < mk; ++r) parent[r] = r;
         for (std::int64_t v = 0; v < nv && code == 0; ++v) {
             const std::int64_t start = counts[v], end = counts[v + 1];
             const std::int64_t size = end - start;
             if (size == 0) continue;
-            std::int64_t* bucket = entries.data() + start;
+            std::int64_t* bucket = entries.get() + start;
             if (size <= 32) {  // insertion sort by key (buckets hold a vertex's few ridges on meshes)
                 for (std::int64_t x = 1; x < size; ++x) {
                     const std::int64_t cur = bucket[x];
@@ -103,8 +104,8 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t, BoolArray, Bo
                         if (j1 == i1) continue;
                         for (std::int64_t j2 = 0; j2 < k; ++j2) {
                             if (S[t2 * k + j2] == S[t1 * k + j1]) {
-                                const std::int64_t ra = find(parent.data(), t1 * k + j1);
-                                const std::int64_t rb = find(parent.data(), t2 * k + j2);
+                                const std::int64_t ra = find(parent.get(), t1 * k + j1);
+                                const std::int64_t rb = find(parent.get(), t2 * k + j2);
                                 if (ra != rb) parent[ra] = rb;
                             }
                         }
@@ -118,7 +119,7 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, std::int64_t, BoolArray, Bo
             for (std::int64_t t = 0; t < m; ++t) {
                 for (std::int64_t j = 0; j < k; ++j) {
                     const std::int64_t v = S[t * k + j];
-                    const std::int64_t r = find(parent.data(), t * k + j);
+                    const std::int64_t r = find(parent.get(), t * k + j);
                     if (first[v] < 0) {
                         first[v] = r;
                         where[v] = t;

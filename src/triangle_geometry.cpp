@@ -46,17 +46,23 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, double> triangle_kernel(
             const std::int64_t* st = sp + 3 * t;
             if (first_repeated < 0 && (st[0] == st[1] || st[1] == st[2] || st[0] == st[2]))
                 first_repeated = static_cast<std::int64_t>(t);
-            for (std::size_t k = 0; k < 3; ++k) {  // the edge opposite corner k is ridge 3t + k
-                const std::int64_t i = st[(k + 1) % 3], j = st[(k + 2) % 3];
-                L[3 * t + k] = i < j ? i : j;
-                H[3 * t + k] = i > j ? i : j;
+            const std::int64_t i0 = st[0], i1 = st[1], i2 = st[2];
+            // the edge opposite corner k is ridge 3t + k: (1, 2), (2, 0), (0, 1), as (min, max)
+            L[3 * t] = i1 < i2 ? i1 : i2;
+            H[3 * t] = i1 > i2 ? i1 : i2;
+            L[3 * t + 1] = i2 < i0 ? i2 : i0;
+            H[3 * t + 1] = i2 > i0 ? i2 : i0;
+            L[3 * t + 2] = i0 < i1 ? i0 : i1;
+            H[3 * t + 2] = i0 > i1 ? i0 : i1;
+            const double* v0 = V + 3 * i0;
+            const double* v1 = V + 3 * i1;
+            const double* v2 = V + 3 * i2;
+            const double c[3][3] = {{v0[0], v0[1], v0[2]}, {v1[0], v1[1], v1[2]}, {v2[0], v2[1], v2[2]}};
+            for (std::size_t k = 0; k < 3; ++k) {  // pts[k, a, t]
+                P[(3 * k) * m + t] = c[k][0];
+                P[(3 * k + 1) * m + t] = c[k][1];
+                P[(3 * k + 2) * m + t] = c[k][2];
             }
-            double c[3][3];  // c[k][a]: coordinate a of corner k, also stored in pts[k, a, t]
-            for (std::size_t k = 0; k < 3; ++k)
-                for (std::size_t a = 0; a < 3; ++a) {
-                    c[k][a] = V[3 * st[k] + a];
-                    P[(3 * k + a) * m + t] = c[k][a];
-                }
             // edge opposite corner k: e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0
             const double e0x = c[2][0] - c[1][0], e0y = c[2][1] - c[1][1], e0z = c[2][2] - c[1][2];
             const double e1x = c[0][0] - c[2][0], e1y = c[0][1] - c[2][1], e1z = c[0][2] - c[2][2];

@@ -16,29 +16,36 @@ Array<double> triangle_areas(In<std::int64_t, nb::ndim<2>> s, In<double, nb::ndi
         throw std::invalid_argument("triangle_areas: dot and edge_sq must have shape (3, m)");
     if (twice.shape(0) != m) throw std::invalid_argument("triangle_areas: twice must have shape (m,)");
     if (nv < 0) throw std::invalid_argument("triangle_areas: nv must be non-negative");
-    const std::int64_t* sp = s.data();
-    for (std::size_t i = 0; i < 3 * m; ++i)
-        if (sp[i] < 0 || sp[i] >= nv) throw std::invalid_argument("triangle_areas: a vertex index is outside 0..nv-1");
     std::vector<double> out(static_cast<std::size_t>(nv), 0.0);
-    const auto S = s.view();
-    const auto D = dot.view(), E = edge_sq.view();
-    const auto tw2 = twice.view();
+    // raw C-order pointers: s (m, 3); dot, edge_sq (3, m) corner-major
+    const std::int64_t* S = s.data();
+    const double *D = dot.data(), *E = edge_sq.data(), *TW = twice.data();
+    bool bad_index = false;
     {
         nb::gil_scoped_release release;
         for (std::size_t t = 0; t < m; ++t) {
-            const double tw = tw2(t);
-            if (mixed && (D(0, t) < 0 || D(1, t) < 0 || D(2, t) < 0)) {
-                for (std::size_t k = 0; k < 3; ++k) out[S(t, k)] += D(k, t) < 0 ? 0.25 * tw : 0.125 * tw;
+            const std::int64_t i0 = S[3 * t], i1 = S[3 * t + 1], i2 = S[3 * t + 2];
+            if (i0 < 0 || i0 >= nv || i1 < 0 || i1 >= nv || i2 < 0 || i2 >= nv) {  // checked before any write
+                bad_index = true;
+                break;
+            }
+            const double tw = TW[t];
+            const double d0 = D[t], d1 = D[m + t], d2 = D[2 * m + t];
+            if (mixed && (d0 < 0 || d1 < 0 || d2 < 0)) {
+                out[i0] += d0 < 0 ? 0.25 * tw : 0.125 * tw;
+                out[i1] += d1 < 0 ? 0.25 * tw : 0.125 * tw;
+                out[i2] += d2 < 0 ? 0.25 * tw : 0.125 * tw;
                 continue;
             }
-            const double w0 = D(0, t) / tw * E(0, t);
-            const double w1 = D(1, t) / tw * E(1, t);
-            const double w2 = D(2, t) / tw * E(2, t);
-            out[S(t, 0)] += 0.125 * (w1 + w2);
-            out[S(t, 1)] += 0.125 * (w2 + w0);
-            out[S(t, 2)] += 0.125 * (w0 + w1);
+            const double w0 = d0 / tw * E[t];
+            const double w1 = d1 / tw * E[m + t];
+            const double w2 = d2 / tw * E[2 * m + t];
+            out[i0] += 0.125 * (w1 + w2);
+            out[i1] += 0.125 * (w2 + w0);
+            out[i2] += 0.125 * (w0 + w1);
         }
     }
+    if (bad_index) throw std::invalid_argument("triangle_areas: a vertex index is outside 0..nv-1");
     return to_numpy(std::move(out));
 }
 
