@@ -24,27 +24,18 @@ constexpr double kU = 1.0 / 9007199254740992.0;  // 2^-53, the unit roundoff of 
 constexpr double kTiny = 1e-290;
 constexpr std::size_t kMaxOrder = 30;  // the subset programme holds 2^k doubles
 
-int popcount(std::uint64_t x) {
-    int c = 0;
-    while (x) {
-        x &= x - 1;
-        ++c;
-    }
-    return c;
-}
-
 // Determinant and permanent of the k × k row-major matrices mat and mag (|entries|) by the subset
 // dynamic programme: dbuf[mask] is the determinant of the rows in mask and the first popcount(mask)
-// columns, expanded along its last column.  Thesis: §2.1.2 (the filtered predicates).
+// columns, expanded along its last column (rows in ascending order, as the numba original).
+// Thesis: §2.1.2 (the filtered predicates).
 std::pair<double, double> det_perm(const double* mat, const double* mag, std::size_t k, double* dbuf,
                                    double* pbuf) {
     const std::uint64_t end = std::uint64_t{1} << k;
     for (std::uint64_t mask = 1; mask < end; ++mask) {
-        const int c = popcount(mask);
+        const int c = __builtin_popcountll(mask);
         const std::size_t j = static_cast<std::size_t>(c - 1);
         if (c == 1) {
-            std::size_t i = 0;
-            while (!((mask >> i) & 1)) ++i;
+            const std::size_t i = static_cast<std::size_t>(__builtin_ctzll(mask));
             dbuf[mask] = mat[i * k];
             pbuf[mask] = mag[i * k];
             continue;
@@ -52,15 +43,14 @@ std::pair<double, double> det_perm(const double* mat, const double* mag, std::si
         double acc = 0.0;
         double pacc = 0.0;
         std::size_t pos = 0;
-        for (std::size_t i = 0; i < k; ++i) {
-            if ((mask >> i) & 1) {
-                const std::uint64_t sub = mask & ~(std::uint64_t{1} << i);
-                double term = mat[i * k + j] * dbuf[sub];
-                if ((pos + j) % 2) term = -term;
-                acc += term;
-                pacc += mag[i * k + j] * pbuf[sub];
-                ++pos;
-            }
+        for (std::uint64_t rest = mask; rest; rest &= rest - 1) {  // the rows of mask, ascending
+            const std::size_t i = static_cast<std::size_t>(__builtin_ctzll(rest));
+            const std::uint64_t sub = mask & ~(std::uint64_t{1} << i);
+            double term = mat[i * k + j] * dbuf[sub];
+            if ((pos + j) % 2) term = -term;
+            acc += term;
+            pacc += mag[i * k + j] * pbuf[sub];
+            ++pos;
         }
         dbuf[mask] = acc;
         pbuf[mask] = pacc;
