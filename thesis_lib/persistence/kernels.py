@@ -1,4 +1,4 @@
-"""The column reduction, field arithmetic and column heap shared by every persistence reduction.
+"""The column reduction and field arithmetic shared by every persistence reduction.
 
 Two reduction loops exist in the library, and only two:
 
@@ -8,16 +8,18 @@ Two reduction loops exist in the library, and only two:
   (:mod:`.chains`, boundary columns, hence the Morse reduction of :mod:`thesis_lib.morse`) and the
   representative cycles (:mod:`.representatives`, which read R or V off its record).  Compiled
   C++: ``src/reduction.cpp`` (the module ``thesis_lib._core.reduction``); this function is its face.
-* ``_reduce`` in :mod:`.implicit`, **the implicit kernel** of the Rips engine: its coboundaries are
+* the reduction of :mod:`.implicit` (``src/implicit_rips.cpp``), **the implicit kernel** of the Rips
+  engine: its coboundaries are
   enumerated on the fly from the neighbour graph, never stored, so it cannot share a loop over
-  stored columns; it is built from this module's primitives only (heap, pivot popping, chain
-  merging, modular inverse).
+  stored columns; both are built on the same primitives (``src/column_heap.hpp``: the heap, pivot
+  popping, chain merging, the modular inverse).
 
 The thesis's literal Algorithms 1–2 (:mod:`.algorithm`) stay readable Python on dicts and use
-:func:`inverse`, the one modular inverse for Python integers (:func:`mod_inverse` inside compiled
-code).  A working column of a reduction is a binary min-heap of entries ``(value, key, coefficient)``
-ordered by ``(value, key)``: the *pivot* of the column is its least entry whose coefficients
-(entries of the same key are summed lazily, as in Ripser) do not cancel mod p.
+:func:`inverse`, the one modular inverse for Python integers (``mod_inverse`` of
+``src/column_heap.hpp`` inside compiled code).  A working column of a reduction is a binary
+min-heap of entries ``(value, key, coefficient)`` ordered by ``(value, key)``: the *pivot* of the
+column is its least entry whose coefficients (entries of the same key are summed lazily, as in
+Ripser) do not cancel mod p.
 """
 
 from __future__ import annotations
@@ -26,10 +28,8 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import reduction
-from ..jit import njit
 
-__all__ = ["inverse", "mod_inverse", "heap_push", "heap_pop", "heap_replace_top", "pop_pivot", "merge_entries", "grow",
-           "reduce_columns", "KEEP_V", "KEEP_V_ALL", "KEEP_REDUCED"]
+__all__ = ["inverse", "reduce_columns", "KEEP_V", "KEEP_V_ALL", "KEEP_REDUCED"]
 
 
 def inverse(a: int, p: int) -> int:
@@ -51,134 +51,6 @@ def inverse(a: int, p: int) -> int:
         has no inverse: callers never ask for it).
     """
     return pow(int(a) % p, p - 2, p)
-
-
-@njit(cache=True)
-def mod_inverse(a: np.int64, p: np.int64) -> np.int64:
-    """a⁻¹ in Z/p (extended Euclid) inside compiled kernels; ``p < 2**31`` so products fit in int64."""
-    t, newt, r, newr = np.int64(0), np.int64(1), np.int64(p), np.int64(a % p)
-    while newr != 0:
-        q = r // newr
-        t, newt = newt, t - q * newt
-        r, newr = newr, r - q * newr
-    return t % p
-
-
-@njit(cache=True, inline="always")
-def _put(hv, hk, hc, i, v, k, c):
-    """Write the entry ``(v, k, c)`` at position i of the heap (sift-up and sift-down move entries so)."""
-    hv[i] = v
-    hk[i] = k
-    hc[i] = c
-
-
-@njit(cache=True)
-def heap_push(hv, hk, hc, n, v, k, c):
-    """Push ``(value v, key k, coefficient c)`` on the heap of size ``n`` (arrays large enough); returns n + 1."""
-    i = n
-    while i > 0:
-        par = (i - 1) >> 1
-        if v < hv[par] or (v == hv[par] and k < hk[par]):
-            _put(hv, hk, hc, i, hv[par], hk[par], hc[par])
-            i = par
-        else:
-            break
-    _put(hv, hk, hc, i, v, k, c)
-    return n + 1
-
-
-@njit(cache=True)
-def heap_pop(hv, hk, hc, n):
-    """Remove the top of the heap of size ``n`` (read it first); returns n − 1."""
-    n -= 1
-    if n > 0:
-        heap_replace_top(hv, hk, hc, n, hv[n], hk[n], hc[n])
-    return n
-
-
-@njit(cache=True)
-def heap_replace_top(hv, hk, hc, n, v, k, c):
-    """Replace the top of the heap of size ``n`` by ``(v, k, c)`` and restore the order (one sift-down)."""
-    i = 0
-    while True:
-        left = 2 * i + 1
-        if left >= n:
-            break
-        m = left
-        right = left + 1
-        if right < n and (hv[right] < hv[left] or (hv[right] == hv[left] and hk[right] < hk[left])):
-            m = right
-        if hv[m] < v or (hv[m] == v and hk[m] < k):
-            _put(hv, hk, hc, i, hv[m], hk[m], hc[m])
-            i = m
-        else:
-            break
-    _put(hv, hk, hc, i, v, k, c)
-
-
-@njit(cache=True)
-def pop_pivot(hv, hk, hc, n, p):
-    """Pop entries until the least key whose summed coefficient is non-zero mod p.
-
-    Returns ``(new size, value, key, coefficient)``; coefficient 0 (value ``inf``) when the column is zero.
-    The pivot is removed from the heap: a caller that adds a column with the same pivot skips that
-    column's pivot entries, which cancel exactly.
-    """
-    while n > 0:
-        v, k = hv[0], hk[0]
-        c = hc[0]
-        n = heap_pop(hv, hk, hc, n)
-        while n > 0 and hk[0] == k and hv[0] == v:
-            c += hc[0]
-            n = heap_pop(hv, hk, hc, n)
-        c %= p
-        if c != 0:
-            return n, v, k, c
-    return n, np.inf, np.int64(0), np.int64(0)
-
-
-@njit(cache=True)
-def merge_entries(keys, coefs, n, p):
-    """The distinct keys of ``keys[:n]`` with their coefficients summed mod p, zeros dropped.
-
-    Returns ``(positions, sums)``: for each surviving key (increasing) one position in ``keys``
-    holding it (to read parallel arrays) and its summed coefficient.  Used to store a reduction
-    chain V after a column was reduced.
-    """
-    order = np.argsort(keys[:n])
-    pos = np.empty(n, dtype=np.int64)
-    sums = np.empty(n, dtype=np.int64)
-    q = 0
-    i = 0
-    while i < n:
-        first = order[i]
-        c = np.int64(0)
-        while i < n and keys[order[i]] == keys[first]:
-            c += coefs[order[i]]
-            i += 1
-        c %= p
-        if c != 0:
-            pos[q] = first
-            sums[q] = c
-            q += 1
-    return pos[:q], sums[:q]
-
-
-@njit(cache=True)
-def grow(hv, hk, hc, n, need):
-    """The heap arrays with room for ``need`` entries (the first ``n`` kept): doubled when too small."""
-    if need <= hv.shape[0]:
-        return hv, hk, hc
-    cap = hv.shape[0]
-    while cap < need:
-        cap *= 2
-    nv = np.empty(cap, dtype=hv.dtype)
-    nk = np.empty(cap, dtype=hk.dtype)
-    nc = np.empty(cap, dtype=hc.dtype)
-    nv[:n] = hv[:n]
-    nk[:n] = hk[:n]
-    nc[:n] = hc[:n]
-    return nv, nk, nc
 
 
 #: what :func:`reduce_columns` keeps of a reduced column: its chain V (cohomology, as Ripser), V also
