@@ -21,11 +21,21 @@ constexpr std::int64_t kMaxFloatPrime = std::int64_t(1) << 26;
 constexpr std::int64_t kMaxWordPrime = std::int64_t(1) << 31;
 constexpr std::int64_t kBound62 = std::int64_t(1) << 62;
 
+// floor(y) for |y| < 2^62, exactly: truncation toward zero (one conversion each way), one step down for
+// a negative non-integer y.  Plain arithmetic where std::floor is a library call without SSE4.1, and the
+// correction's branch is almost never taken (y < 0 only when x < 0).  Every y here is below 2^28 in
+// magnitude: y = x / p with |x| < 2 p² (residues below p, factors within (-p, 2p)).  -0.0 never occurs
+// (no residue is -0.0, and floor(+0.0) = +0.0 both ways).
+inline double floor_small(double y) {
+    const double t = static_cast<double>(static_cast<std::int64_t>(y));
+    return t > y ? t - 1.0 : t;
+}
+
 // (d - f s) mod p for float64 residues below 2^26: f·s < 2^52 is exact, and x - p·floor(x/p) reduces
 // without an integer division.
 inline double sub_mod(double d, double s, double f, double p, double inv_p) {
     double x = d - f * s;
-    x -= p * std::floor(x * inv_p);
+    x -= p * floor_small(x * inv_p);
     if (x < 0)
         x += p;
     else if (x >= p)
@@ -119,7 +129,7 @@ std::tuple<Array<std::int64_t>, Array<std::int64_t>> rank_profile(Out<double, nb
                 double* ri = a + i * n;
                 if (ri[j] != 0) {
                     double f = ri[j] * inv;
-                    f -= fp * std::floor(f * inv_p);
+                    f -= fp * floor_small(f * inv_p);
                     axpy(ri, rk, f, fp, inv_p, idx.data(), sparse, j, n);
                 }
             }
@@ -177,7 +187,7 @@ std::tuple<std::int64_t, Array<std::int64_t>, bool> det_adjugate(In<double, nb::
                 double* ri = A + i * w;
                 if (ri[k] != 0) {
                     double f = ri[k] * inv;
-                    f -= fp * std::floor(f * inv_p);
+                    f -= fp * floor_small(f * inv_p);
                     axpy(ri, rk, f, fp, inv_p, nullptr, -1, k + 1, w);
                 }
             }

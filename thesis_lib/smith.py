@@ -5,7 +5,7 @@ of nonzero diagonal entries is the rank, entries ``>= 2`` are torsion.  Boundary
 and sparse, and almost all of their elimination can be done with pivots ``±1``, so the engine works
 in two stages, each exact:
 
-1. **sparse elimination** (``thesis_lib._elimination``, numba): Gaussian elimination on unit
+1. **sparse elimination** (``thesis_lib._elimination``, C++): Gaussian elimination on unit
    pivots (``±1`` over Z, any nonzero residue over Z/p) chosen by the Markowitz rule to limit
    fill-in, with every new entry checked to stay within int64.  Each step is unimodular, so
    ``SNF(A) = I ⊕ SNF(core)``; over Z/p the core is empty and the number of pivots is the rank;
