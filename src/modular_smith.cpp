@@ -21,13 +21,13 @@ constexpr std::int64_t kMaxFloatPrime = std::int64_t(1) << 26;
 constexpr std::int64_t kMaxWordPrime = std::int64_t(1) << 31;
 constexpr std::int64_t kBound62 = std::int64_t(1) << 62;
 
-// floor(y) for |y| < 2^62, exactly: truncation toward zero (one conversion each way), one step down for
-// a negative non-integer y.  Plain arithmetic where std::floor is a library call without SSE4.1, and the
-// correction's branch is almost never taken (y < 0 only when x < 0).  Every y here is below 2^28 in
-// magnitude: y = x / p with |x| < 2 p² (residues below p, factors within (-p, 2p)).  -0.0 never occurs
-// (no residue is -0.0, and floor(+0.0) = +0.0 both ways).
+// floor(y) for |y| < 2^31, exactly: truncation toward zero through int32, one step down for a negative
+// non-integer y.  Plain arithmetic where std::floor is a library call without SSE4.1.  Every y here is
+// below 2^28 in magnitude (the checked inputs guarantee it): y = x / p with |x| < 2 p² + p, residues in
+// [0, p) and factors f within [-p, 2p), p <= 2^26.  -0.0 never occurs (no residue is -0.0, and
+// floor(+0.0) = +0.0 both ways).
 inline double floor_small(double y) {
-    const double t = static_cast<double>(static_cast<std::int64_t>(y));
+    const double t = static_cast<double>(static_cast<std::int32_t>(y));
     return t > y ? t - 1.0 : t;
 }
 
@@ -36,10 +36,8 @@ inline double floor_small(double y) {
 inline double sub_mod(double d, double s, double f, double p, double inv_p) {
     double x = d - f * s;
     x -= p * floor_small(x * inv_p);
-    if (x < 0)
-        x += p;
-    else if (x >= p)
-        x -= p;
+    x = x < 0 ? x + p : x;  // = `if x < 0: x += p elif x >= p: x -= p` (x + p < p when x < 0)
+    x = x >= p ? x - p : x;
     return x;
 }
 
