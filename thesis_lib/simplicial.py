@@ -8,11 +8,14 @@ boundaries or orientations goes through this module.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.sparse as sp
 
 from ._validate import vertex_label
+
+if TYPE_CHECKING:  # scipy.sparse loads when a boundary matrix is first built
+    import scipy.sparse as sp
 
 __all__ = [
     "as_simplex_array",
@@ -276,6 +279,8 @@ def boundary_matrix(lower: np.ndarray, upper: np.ndarray, coefficients: int = 0)
     ValueError
         If a facet of ``upper`` is missing from ``lower``.
     """
+    import scipy.sparse as sp
+
     m, width = upper.shape
     if width < 2:
         return sp.csc_matrix((lower.shape[0], m), dtype=np.int64)

@@ -11,8 +11,6 @@ from __future__ import annotations
 
 import numpy as np
 import numpy.typing as npt
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
 
 from .._validate import MAX_SIMPLICES, as_points, check_size
 from ..simplicial import closure
@@ -85,6 +83,8 @@ def delaunay(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> lis
         Invalid points or weights, or a complex estimated above ``MAX_DELAUNAY_SIMPLICES``
         simplices (``check_delaunay_size``).
     """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
     check_delaunay_size(points)
     geo, _ = prepare_geometry(points, weights)
     t = triangulate(geo)

@@ -31,9 +31,6 @@ from math import comb, factorial
 
 import numpy as np
 import numpy.typing as npt
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from .._core import triangulation as triangulation_core
 from .._validate import as_points, check_size, check_weights
@@ -153,6 +150,7 @@ def prepare_geometry(points: npt.ArrayLike, weights: npt.ArrayLike | None = None
 # ------------------------------------------------------------------------------------- qhull
 def _qhull_candidate(geo: Geometry) -> tuple[np.ndarray, np.ndarray] | None:
     """Qhull's lower hull of the lifted points: sorted simplices and their neighbours (unchecked)."""
+    from scipy.spatial import ConvexHull, QhullError  # scipy.spatial loads when first needed
     pts, w = geo.points, geo.weights
     n, d = pts.shape
     centred = pts - pts.mean(axis=0)
@@ -252,6 +250,10 @@ _KEEP = {w: np.array([[j for j in range(w) if j != i] for i in range(w)]) for w 
 
 
 def _certify(geo: Geometry, tri: np.ndarray, hint: np.ndarray | None = None) -> _Certificate:
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    from scipy.spatial import cKDTree
+
     n, d = geo.n, geo.d
     m = len(tri)
     orient = geo.orientation(tri)
@@ -476,6 +478,8 @@ def _replace(geo: Geometry, tri: np.ndarray, cert: _Certificate, inside: np.ndar
     co-spherical (and through flat simplices): each part is then one Delaunay cell of the
     unperturbed points (a unit cube of a grid) that Qhull split another way.
     """
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
     d = geo.d
     nb = cert.neighbours
     idx = np.flatnonzero(inside)
