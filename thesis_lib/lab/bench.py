@@ -28,7 +28,7 @@ __all__ = ["topics", "load", "meta", "markdown", "header", "ratios", "fit_expone
            "scaling_figure", "provenance", "targets"]
 
 #: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
-PEERS = {"ripser": "Ripser", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
+PEERS = {"ripser": "ripser.py", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
          "libigl": "libigl", "pari": "PARI", "sympy": "sympy", "ball_pivoting": "ball pivoting"}
 
 
