@@ -89,7 +89,8 @@ def test_hint_pairs_and_facet_ids():
     bad = np.array([[1, -1, -1], [0, -1, -1]], dtype=np.int64)  # the facets do not match
     assert triangulation.hint_pairs(tri, bad)[4].tolist() == [False]
     ids, rep_s, rep_i = alpha_complex.facet_ids(nb)
-    assert ids.tolist() == [[0, 1, 2], [3, 4, 0]] and rep_s.tolist() == [0, 0, 0, 1, 1] and rep_i.tolist() == [0, 1, 2, 0, 1]
+    assert ids.tolist() == [[0, 1, 2], [3, 4, 0]]
+    assert rep_s.tolist() == [0, 0, 0, 1, 1] and rep_i.tolist() == [0, 1, 2, 0, 1]
     out = alpha_complex.coface_min(ids, np.array([0.5, 0.25]), 6)
     assert out.tolist() == [0.25, 0.5, 0.5, 0.25, 0.25, np.inf]
 

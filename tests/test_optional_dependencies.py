@@ -96,21 +96,6 @@ def eager_imports(path: Path, text: str | None = None, allowed: set[str] = LIBRA
     return found
 
 
-def _still_imports_numba() -> list[str]:
-    """``file:line`` of every import of numba left in thesis_lib (the C++ port of issue 22 removes them)."""
-    out = []
-    for path in SOURCES:
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if any(m.partition(".")[0] == "numba" for m in _imported(node)):
-                out.append(f"{path.relative_to(PACKAGE)}:{node.lineno}")
-    return out
-
-
-#: while the port of issue 22 is under way, modules that still import numba may: numba is allowed
-#: exactly as long as some module of thesis_lib imports it (see test_no_module_imports_numba)
-TRANSITIONAL = {"numba", "llvmlite"} if _still_imports_numba() else set()
-
-
 # ---------------------------------------------------------------------------------------------------
 # require
 
@@ -196,7 +181,7 @@ sys.meta_path.insert(0, _OnlyNumpyAndScipy())
 def run_bare(code: str) -> subprocess.CompletedProcess:
     """Run ``code`` in a new interpreter in which only the standard library, numpy and scipy import."""
     optional = sorted({m for modules in EXTRAS.values() for m in modules} | {"IPython", "yaml", "gudhi"})
-    prelude = BLOCKER.format(allowed=sorted(LIBRARY | TRANSITIONAL), optional=optional)
+    prelude = BLOCKER.format(allowed=sorted(LIBRARY), optional=optional)
     return subprocess.run([sys.executable, "-c", prelude + textwrap.dedent(code)], cwd=ROOT, capture_output=True,
                           text=True, timeout=900)
 
@@ -326,12 +311,25 @@ def test_a_python_that_has_only_numpy_and_scipy(tmp_path):
     import numpy
     import scipy
 
-    for module in [numpy, scipy] + [pytest.importorskip(m) for m in sorted(TRANSITIONAL)]:
+    for module in [numpy, scipy]:
         folder = Path(module.__file__).parent
         for entry in [folder, folder.with_name(folder.name + ".libs")]:  # wheels keep shared libraries beside
             if entry.exists():
                 (tmp_path / entry.name).symlink_to(entry)
-    (tmp_path / "thesis_lib").symlink_to(PACKAGE)
+    # the package's sources, and its compiled core wherever the install put it (an editable install
+    # keeps the extension modules in site-packages, beside no source)
+    import thesis_lib._core as core
+
+    (tmp_path / "thesis_lib").mkdir()
+    for entry in PACKAGE.iterdir():
+        if entry.name not in ("_core", "__pycache__"):
+            (tmp_path / "thesis_lib" / entry.name).symlink_to(entry)
+    (tmp_path / "thesis_lib" / "_core").mkdir()
+    for folder in map(Path, core.__path__):
+        for entry in folder.iterdir():
+            target = tmp_path / "thesis_lib" / "_core" / entry.name
+            if entry.suffix in (".py", ".so", ".pyd") and not target.exists():
+                target.symlink_to(entry)
     code = textwrap.dedent("""
         import importlib, json, pkgutil, sys
         import numpy as np
@@ -363,7 +361,7 @@ def test_a_python_that_has_only_numpy_and_scipy(tmp_path):
     assert out["failed"] == dict.fromkeys(sorted(LAB_CORE), lab)
     assert out["h0"] == [[0.0, 2.5], [0.0, "inf"]]
     assert out["plot"] == 'matplotlib is needed for plotting barcodes; install it with: pip install "thesis-lab[plot]"'
-    assert set(out["packages"]) <= LIBRARY | TRANSITIONAL | {"cython_runtime"}
+    assert set(out["packages"]) <= LIBRARY | {"cython_runtime"}
     assert {"numpy", "scipy", "thesis_lib"} <= set(out["packages"])
 
 
@@ -392,7 +390,7 @@ def test_the_walk_sees_the_package():
 
 @pytest.mark.parametrize("path", SOURCES, ids=[str(p.relative_to(PACKAGE)) for p in SOURCES])
 def test_no_optional_package_is_imported_with_the_module(path):
-    assert eager_imports(path, allowed=LIBRARY | TRANSITIONAL) == []
+    assert eager_imports(path, allowed=LIBRARY) == []
 
 
 def test_the_check_catches_a_planted_top_level_import():
@@ -445,8 +443,3 @@ def test_every_require_names_a_package_of_its_extra():
             assert module.partition(".")[0] in EXTRAS[keywords["extra"]], f"{path}:{call.lineno}"
             calls += 1
     assert calls >= 20
-
-
-@pytest.mark.xfail(bool(TRANSITIONAL), reason="issue 22: the numba kernels are being ported to C++", strict=False)
-def test_no_module_imports_numba():
-    assert _still_imports_numba() == []
