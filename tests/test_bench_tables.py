@@ -9,8 +9,8 @@ from thesis_lib.lab import bench
 
 def test_headers_say_the_tool_and_the_unit():
     assert bench.header("ours_s") == "ours (s)"
-    assert bench.header("ripser_s") == "Ripser (s)"
-    assert bench.header("ratio_ripser") == "ours ÷ Ripser"
+    assert bench.header("ripser_s") == "ripser.py (s)"
+    assert bench.header("ratio_ripser") == "ours ÷ ripser.py"
     assert bench.header("ratio_gph") == "ours ÷ giotto-ph"
     assert bench.header("gph_mb") == "giotto-ph peak (MB)"
     assert bench.header("ours_baseline_mb") == "ours baseline (MB)"
@@ -27,7 +27,7 @@ def test_markdown_headers_are_opt_in(tmp_path, monkeypatch):
     columns = ["case", "ours_s", "ripser_s", "ratio_ripser", "ours_mb"]
     assert bench.markdown("x", columns).splitlines()[0] == "| case | ours_s | ripser_s | ratio_ripser | ours_mb |"
     assert bench.markdown("x", columns, headers=True).splitlines()[0] == (
-        "| case | ours (s) | Ripser (s) | ours ÷ Ripser | ours peak (MB) |")
+        "| case | ours (s) | ripser.py (s) | ours ÷ ripser.py | ours peak (MB) |")
     assert bench.markdown("x", columns, headers={"ours_mb": "memory (MB)"}).splitlines()[0].endswith(
         "| memory (MB) |")
     assert bench.markdown("x", columns, headers=True).splitlines()[2] == "| a | 0.5 | 1 | 0.5 | 3 |"
