@@ -32,7 +32,9 @@ $(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*.cpp src/*.hpp)
 	    echo "error: thesis_lib's compiled core needs a C++17 compiler and none was found (Debian/Ubuntu: apt-get install g++)"; exit 1; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet "scikit-build-core>=0.10" "nanobind>=2.4"
+	@# without build isolation every sdist among the dependencies (pykeops, via multipers) builds with
+	@# this venv's own setuptools, which must have bdist_wheel
+	$(BIN)/python -m pip install --quiet "scikit-build-core>=0.10" "nanobind>=2.4" "setuptools>=70.1" "wheel>=0.43"
 	$(BIN)/python -m pip install --quiet --no-build-isolation -e ".[dev]"
 	touch $(STAMP)
 
