@@ -2,9 +2,9 @@
 // simplices (Ripser's reduction, Bauer 2021, on the cohomology side with clearing, apparent and
 // emergent pairs; the port of thesis_lib/persistence/implicit.py's kernels).
 //
-// H0 by union–find over the edges in filtration order; in each dimension k >= 1 the candidates (the
-// k-simplices not cleared) are tested for zero apparent pairs in parallel, the others reduced as
-// coboundary columns, latest first, with a lazy working column: a heap of coboundary enumerators, one
+// H0 by union–find over the edges in filtration order; in each dimension k >= 1 the k-simplices are
+// met as cofaces of the (k−1)-simplices (in parallel), those not cleared and not in a zero apparent
+// pair become coboundary columns, reduced latest first, with a lazy working column: a heap of coboundary enumerators, one
 // per added coboundary f · δs, each yielding the cofaces of s in filtration order (diameter up,
 // index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp.
 #include <algorithm>
@@ -173,62 +173,153 @@ void h0(i64 n, const std::vector<double>& ed, const std::vector<i64>& ei, std::v
         if (parent[v] == v) ++comps;
 }
 
-// ---------------------------------------------------------------------------- apparent pairs
-// For the candidates lo .. hi − 1 (each independent of the others): the earliest coface if it has the
-// same diameter (else −1), its sign, and whether the two form a zero apparent pair.
-// Thesis: Definitions 4.30–4.33 (apparent pairs: a discrete gradient), Theorem 4.42's idea.
-void apparent_block(const Graph& g, i64 lo, i64 hi, i64 k, const i64* cand_i, const double* cand_d, i64* tau,
-                    i64* sign, char* apparent) {
-    std::vector<i64> verts(static_cast<std::size_t>(k + 2)), cur(static_cast<std::size_t>(k + 2)),
-        w(static_cast<std::size_t>(k + 2));
+// ---------------------------------------------------------------------------- zero apparent pairs
+// A pair s < tau of equal diameter is a zero apparent pair when tau is the earliest coface of s and s
+// the latest facet of tau.  Both tests are local, so they are made where a simplex is met (as Ripser
+// 1.2 does), and no table of the pairs is kept.
+
+// Scratch space for the tests on simplices of dimension up to k + 2.
+struct Scratch {
+    std::vector<i64> verts, cur, w;
+    std::vector<double> pd;
+    explicit Scratch(i64 k)
+        : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)),
+          w(static_cast<std::size_t>(k + 3)), pd(static_cast<std::size_t>((k + 3) * (k + 3))) {}
+};
+
+// The earliest coface of the k-simplex s (vertices verts, diameter d) when it has s's diameter
+// (index −1 otherwise), and whether the two form a zero apparent pair.
+// Thesis: Definition 4.30 (a pair of the discrete gradient), Theorem 4.42's idea.
+Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent) {
     double od[1];
     i64 oi[1], om[1];
-    std::vector<double> pd(static_cast<std::size_t>((k + 2) * (k + 2)), 0.0);
-    for (i64 c = lo; c < hi; ++c) {
-        vertices(g, cand_i[c], k, verts.data());
-        const Coface t = zero_pivot_cofacet(g, verts.data(), k, cand_i[c], cand_d[c], cur.data(), od, oi, om);
-        if (t.index != -1) {
-            tau[c] = t.index;
-            sign[c] = 1 - 2 * (t.m & 1);
-            if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
-                for (i64 r = 0; r < k + 2; ++r) w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
-            const i64 f = zero_pivot_facet(g, t.index, k + 1, cand_d[c], w.data(), pd.data(), t.j >= 0);
-            apparent[c] = f == cand_i[c];
-        }
+    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, om);
+    apparent = false;
+    if (t.index != -1) {
+        if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
+            for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
+        apparent = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), x.pd.data(), t.j >= 0) == s;
     }
+    return t;
 }
 
-// apparent_block over every candidate: above parallel_min candidates in 8 · threads blocks shared by
-// the threads (the output does not depend on how the blocks are shared).
-void apparent(const Graph& g, i64 k, const std::vector<i64>& cand_i, const std::vector<double>& cand_d,
-              std::vector<i64>& tau, std::vector<i64>& sign, std::vector<char>& app, int threads, i64 parallel_min) {
-    const i64 m = static_cast<i64>(cand_i.size());
-    tau.assign(static_cast<std::size_t>(m), -1);
-    sign.assign(static_cast<std::size_t>(m), 0);
-    app.assign(static_cast<std::size_t>(m), 0);
-    if (m < parallel_min || threads <= 1) {
-        apparent_block(g, 0, m, k, cand_i.data(), cand_d.data(), tau.data(), sign.data(), app.data());
-        return;
+// The k-simplex e with (e, tau) a zero apparent pair, for the (k + 1)-simplex tau of diameter d; −1
+// when tau is the upper simplex of none.
+// Thesis: Definition 4.30 (a pair of the discrete gradient).
+i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
+    const i64 e = zero_pivot_facet(g, tau, k + 1, d, x.w.data(), x.pd.data(), false);
+    if (e == -1) return -1;
+    vertices(g, e, k, x.verts.data());
+    double od[1];
+    i64 oi[1], om[1];
+    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, om).index == tau ? e : -1;
+}
+
+// ---------------------------------------------------------------------------- the columns of a dimension
+// A simplex: its diameter and index.  A column to reduce: its simplex, the earliest coface when that
+// has the simplex's diameter (else −1) and the sign of that coface in the coboundary.
+struct Simplex {
+    double d;
+    i64 idx;
+};
+struct Column {
+    double d;
+    i64 idx, tau, sign;
+};
+
+// One block's share of a dimension: its columns, its k-simplices (when the next dimension is built
+// from them), the candidates met (k-simplices not cleared) and the zero apparent pairs among them.
+struct Assembled {
+    std::vector<Column> columns;
+    std::vector<Simplex> all;
+    i64 candidates = 0, apparent = 0;
+};
+
+// Simplices kept in blocks (one per thread's share), read as one sequence.
+struct Blocks {
+    std::vector<std::vector<Simplex>> parts;
+    i64 size() const {
+        i64 s = 0;
+        for (const auto& p : parts) s += static_cast<i64>(p.size());
+        return s;
     }
-    const i64 nblocks = 8 * static_cast<i64>(threads);
+    // f(simplex) for the simplices lo .. hi − 1 of the sequence, in order.
+    template <class F>
+    void visit(i64 lo, i64 hi, F f) const {
+        i64 start = 0;
+        for (const auto& p : parts) {
+            const i64 end = start + static_cast<i64>(p.size());
+            for (i64 q = std::max(lo, start); q < std::min(hi, end); ++q) f(p[static_cast<std::size_t>(q - start)]);
+            start = end;
+        }
+    }
+};
+
+// The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`: with
+// generate, `from` holds every (k − 1)-simplex and its cofaces whose new vertex is the largest are
+// met (each k-simplex once); otherwise `from` holds the k-simplices themselves.  A simplex met is
+// kept in all when keep_all; it is a candidate unless it is a pivot of dimension k − 1 (cleared) or the
+// upper simplex of a zero apparent pair, and a column unless it is the lower simplex of one.
+// Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
+// flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
+void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, bool generate, bool keep_all,
+                    const Table& cleared, i64 maxdeg, Assembled& out) {
+    Scratch x(k);
+    std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
+        cur(static_cast<std::size_t>(k)), oi(static_cast<std::size_t>(maxdeg + 1)), om(static_cast<std::size_t>(maxdeg + 1));
+    std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
+    auto meet = [&](double d, i64 s) {
+        if (keep_all) out.all.push_back({d, s});
+        if (cleared.contains(s) || (k >= 2 && zero_apparent_facet(g, s, k - 1, d, x) != -1)) return;
+        ++out.candidates;
+        vertices(g, s, k, sv.data());
+        bool app;
+        const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app);
+        if (app)
+            ++out.apparent;
+        else
+            out.columns.push_back({d, s, t.index, 1 - 2 * (t.m & 1)});
+    };
+    from.visit(lo, hi, [&](const Simplex& f) {
+        if (!generate) return meet(f.d, f.idx);
+        vertices(g, f.idx, k - 1, fv.data());
+        const i64 c = cofaces(g, fv.data(), k - 1, f.idx, f.d, cur.data(), od.data(), oi.data(), om.data(), false, true);
+        for (i64 t = 0; t < c; ++t) meet(od[t], oi[t]);
+    });
+}
+
+// assemble_block over all of `from`: on one thread when fewer than parallel_min k-simplices are to be
+// met (with generate, estimated as |from| times the mean degree over k + 1), else in 8 · threads
+// blocks shared by the threads; the blocks' shares are kept in block order, so nothing depends on
+// how the blocks were shared.
+std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool generate, bool keep_all,
+                                const Table& cleared, i64 maxdeg, int threads, i64 parallel_min) {
+    const i64 m = from.size();
+    const double met = generate ? static_cast<double>(m) * static_cast<double>(g.indptr[g.n]) /
+                                      static_cast<double>(g.n * (k + 1))
+                                : static_cast<double>(m);
+    const i64 nblocks = (met < static_cast<double>(parallel_min) || threads <= 1) ? 1 : 8 * static_cast<i64>(threads);
     const i64 size = (m + nblocks - 1) / nblocks;
+    std::vector<Assembled> out(static_cast<std::size_t>(nblocks));
     std::atomic<i64> next{0};
-    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+    const int workers = static_cast<int>(std::min<i64>(threads, nblocks));
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
     auto work = [&](int t) {
         try {
             for (i64 b = next++; b < nblocks; b = next++)
-                apparent_block(g, std::min(m, b * size), std::min(m, (b + 1) * size), k, cand_i.data(),
-                               cand_d.data(), tau.data(), sign.data(), app.data());
+                assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), generate, keep_all,
+                               cleared, maxdeg, out[static_cast<std::size_t>(b)]);
         } catch (...) {
-            errors[t] = std::current_exception();
+            errors[static_cast<std::size_t>(t)] = std::current_exception();
         }
     };
     std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
+    for (int t = 1; t < workers; ++t) pool.emplace_back(work, t);
     work(0);
     for (auto& th : pool) th.join();
     for (auto& err : errors)
         if (err) std::rethrow_exception(err);
+    return out;
 }
 
 // ---------------------------------------------------------------------------- the reduction
@@ -472,9 +563,8 @@ struct Reduced {
 // is the table tau → s of the zero apparent pairs (s, tau) of this dimension.
 // Thesis: Algorithm 1 (Reduce) inside Algorithm 2, §2.3.5, on the cohomology side (Theorem 2.39),
 // with emergent and apparent pairs (Definitions 4.30–4.33).
-Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::vector<double>& col_d,
-               const std::vector<i64>& col_tau, const std::vector<i64>& col_sign, const Table& app, i64 p) {
-    const i64 ncol = static_cast<i64>(col_i.size());
+Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
+    const i64 ncol = static_cast<i64>(cols.size());
     Reduced out;
     out.pivots = Table(ncol);
     Table& piv_t = out.pivots;
@@ -486,16 +576,17 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::
     std::vector<i64> wk, wc, pos, sums;
     std::vector<double> wd;
     Reducer col(g, k, p);
+    Scratch x(k);
     for (i64 c = 0; c < ncol; ++c) {
-        const i64 s = col_i[c];
-        const double ds = col_d[c];
-        const i64 t = col_tau[c];
+        const i64 s = cols[c].idx;
+        const double ds = cols[c].d;
+        const i64 t = cols[c].tau;
         if (t != -1) {  // emergent pair: the earliest coface has s's diameter and nobody owns it
             const i64 h = piv_t.slot(t);
-            if (piv_t.keys[h] == -1 && !app.contains(t)) {
+            if (piv_t.keys[h] == -1 && zero_apparent_facet(g, t, k, ds, x) == -1) {
                 piv_t.keys[h] = t;
                 piv_t.vals[h] = c;
-                pcoef[c] = floor_mod(col_sign[c], p);
+                pcoef[c] = floor_mod(cols[c].sign, p);
                 ++out.emergent;
                 continue;
             }
@@ -522,9 +613,9 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::
                     i64 so, co;
                     double dso;
                     if (q == 0) {
-                        so = col_i[o];
+                        so = cols[o].idx;
                         co = 1;
-                        dso = col_d[o];
+                        dso = cols[o].d;
                     } else {
                         so = pool_s[vstart[o] + q - 1];
                         co = pool_c[vstart[o] + q - 1];
@@ -539,9 +630,8 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::
                 ++out.additions;
                 continue;
             }
-            const i64 ha = app.slot(piv);
-            if (app.keys[ha] != -1) {  // pivot of a zero apparent pair (e, tau): add δe, the column of e
-                const i64 e = app.vals[ha];
+            const i64 e = zero_apparent_facet(g, piv, k, pv.value, x);
+            if (e != -1) {  // pivot of a zero apparent pair (e, tau): add δe, the column of e
                 const double de = pv.value;  // the pair has equal diameters
                 vertices(g, piv, k + 1, w.data());
                 vertices(g, e, k, verts.data());
@@ -585,28 +675,6 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<i64>& col_i, const std::
         }
     }
     return out;
-}
-
-// ---------------------------------------------------------------------------- candidates of dimension k >= 2
-// All k-simplices as cofaces of the (k−1)-simplices whose new vertex is the largest, in that order.
-// Thesis: Definition 2.11 (the flag complex, dimension by dimension).
-void next_simplices(const Graph& g, i64 k, std::vector<i64>& all_i, std::vector<double>& all_d, i64 maxdeg) {
-    std::vector<i64> out_i;
-    std::vector<double> out_d;
-    out_i.reserve(all_i.size());
-    out_d.reserve(all_i.size());
-    std::vector<i64> verts(static_cast<std::size_t>(k + 1)), cur(static_cast<std::size_t>(k + 1));
-    std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
-    std::vector<i64> oi(static_cast<std::size_t>(maxdeg + 1)), om(static_cast<std::size_t>(maxdeg + 1));
-    for (std::size_t s = 0; s < all_i.size(); ++s) {
-        vertices(g, all_i[s], k - 1, verts.data());
-        const i64 c = cofaces(g, verts.data(), k - 1, all_i[s], all_d[s], cur.data(), od.data(), oi.data(), om.data(),
-                              false, true);
-        out_i.insert(out_i.end(), oi.begin(), oi.begin() + c);
-        out_d.insert(out_d.end(), od.begin(), od.begin() + c);
-    }
-    all_i.swap(out_i);
-    all_d.swap(out_d);
 }
 
 // One dimension's output: births, deaths, essential births and the statistics (simplices, apparent,
@@ -689,63 +757,50 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         h0(n, ed, ei, dims[0].deaths, comps, positive);
         dims[0].ess.assign(static_cast<std::size_t>(comps), 0.0);
         // ---- dimensions 1 .. max_dim − 1: cohomology with clearing, apparent and emergent pairs
-        std::vector<i64> all_i = ei, cand_i;  // every (k−1)-simplex, to generate the k-simplices
-        std::vector<double> all_d = ed, cand_d;
+        Blocks from, all;  // the candidates of H1 (the positive edges); every (k − 1)-simplex, to build the k-simplices
+        from.parts.emplace_back();
+        if (max_dim > 2) all.parts.emplace_back();
         for (std::size_t e = 0; e < ei.size(); ++e) {
-            if (positive[e]) {
-                cand_i.push_back(ei[e]);
-                cand_d.push_back(ed[e]);
-            }
+            if (positive[e]) from.parts[0].push_back({ed[e], ei[e]});
+            if (max_dim > 2) all.parts[0].push_back({ed[e], ei[e]});
         }
-        std::vector<i64> tau, sign;
-        std::vector<char> app;
+        std::vector<double>().swap(ed);
+        std::vector<i64>().swap(ei);
+        Table cleared(0);
         for (i64 k = 1; k < max_dim; ++k) {
-            apparent(g, k, cand_i, cand_d, tau, sign, app, threads, parallel_min);
-            i64 napp = 0;
-            for (char a : app) napp += a;
-            Table app_t(napp);
-            std::vector<i64> cols;
-            for (std::size_t c = 0; c < cand_i.size(); ++c) {
-                if (app[c]) {
-                    const i64 h = app_t.slot(tau[c]);
-                    app_t.keys[h] = tau[c];
-                    app_t.vals[h] = cand_i[c];
-                } else {
-                    cols.push_back(static_cast<i64>(c));
-                }
+            const bool keep = k + 1 < max_dim;  // the k-simplices build dimension k + 1
+            std::vector<Assembled> parts = k == 1
+                ? assemble(g, 1, from, false, false, cleared, maxdeg, threads, parallel_min)
+                : assemble(g, k, all, true, keep, cleared, maxdeg, threads, parallel_min);
+            if (k >= 2) {
+                all.parts.clear();
+                if (keep)
+                    for (Assembled& a : parts) all.parts.push_back(std::move(a.all));
+            }
+            i64 ncand = 0, napp = 0;
+            std::size_t ncol = 0;
+            for (const Assembled& a : parts) {
+                ncand += a.candidates;
+                napp += a.apparent;
+                ncol += a.columns.size();
+            }
+            std::vector<Column> cols;
+            cols.reserve(ncol);
+            for (Assembled& a : parts) {
+                cols.insert(cols.end(), a.columns.begin(), a.columns.end());
+                std::vector<Column>().swap(a.columns);
             }
             // latest first: diameter down, index up
-            std::sort(cols.begin(), cols.end(), [&](i64 a, i64 b) {
-                return cand_d[a] > cand_d[b] || (cand_d[a] == cand_d[b] && cand_i[a] < cand_i[b]);
-            });
-            std::vector<i64> col_i(cols.size()), col_tau(cols.size()), col_sign(cols.size());
-            std::vector<double> col_d(cols.size());
-            for (std::size_t c = 0; c < cols.size(); ++c) {
-                col_i[c] = cand_i[cols[c]];
-                col_d[c] = cand_d[cols[c]];
-                col_tau[c] = tau[cols[c]];
-                col_sign[c] = sign[cols[c]];
-            }
-            Reduced red = reduce(g, k, col_i, col_d, col_tau, col_sign, app_t, p);
+            std::sort(cols.begin(), cols.end(),
+                      [](const Column& a, const Column& b) { return a.d > b.d || (a.d == b.d && a.idx < b.idx); });
+            Reduced red = reduce(g, k, cols, p);
             DimOut& out = dims[static_cast<std::size_t>(k)];
             out.births = std::move(red.births);
             out.deaths = std::move(red.deaths);
             out.ess = std::move(red.ess);
-            out.stats = {static_cast<i64>(cand_i.size()), napp, static_cast<i64>(col_i.size()), red.emergent,
-                         red.worked, red.additions, red.read, red.most};
-            if (k + 1 < max_dim) {
-                next_simplices(g, k + 1, all_i, all_d, maxdeg);
-                cand_i.clear();
-                cand_d.clear();
-                cand_i.reserve(all_i.size());
-                cand_d.reserve(all_i.size());
-                for (std::size_t c = 0; c < all_i.size(); ++c) {
-                    if (!red.pivots.contains(all_i[c]) && !app_t.contains(all_i[c])) {
-                        cand_i.push_back(all_i[c]);
-                        cand_d.push_back(all_d[c]);
-                    }
-                }
-            }
+            out.stats = {ncand, napp, static_cast<i64>(cols.size()), red.emergent, red.worked, red.additions, red.read,
+                         red.most};
+            cleared = std::move(red.pivots);
         }
     }
     std::vector<DimResult> result;

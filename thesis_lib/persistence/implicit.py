@@ -22,10 +22,11 @@ The reduction is Ripser's (Bauer 2021), on the cohomology side with clearing:
   thesis's Definitions 4.30–4.33 — whose critical cells are the only ones the reduction has to look
   at (the barcode is the Morse complex's, Theorem 4.42's idea).  Pairs of equal diameter
   ("zero apparent pairs") have zero persistence: σ is never made a column, and τ is known as the
-  pivot of δσ when another column meets it.  Deciding whether σ is in such a pair is local (one
-  early-exit coboundary scan and one facet scan), so it runs in parallel over the candidate columns
-  (threads over blocks of candidates, on every core unless ``n_threads`` says otherwise; the
-  candidates are independent, so the barcode does not depend on the number of threads).
+  pivot of δσ when another column meets it (τ's latest facet is looked up then).  Deciding whether
+  σ is in such a pair is local (one early-exit coboundary scan and one facet scan), so it runs in
+  parallel while the columns are assembled (threads over blocks of the (k − 1)-simplices, on every
+  core unless ``n_threads`` says otherwise; the blocks are independent and kept in order, so the
+  barcode does not depend on the number of threads).
 * **Emergent pairs**: a column whose earliest coface has σ's diameter and is not yet a pivot is
   paired at once, without enumerating the rest of its coboundary.
 * **The rest is reduced lazily**: the working coboundary is a heap of *coboundary enumerators*,
@@ -41,8 +42,11 @@ The reduction is Ripser's (Bauer 2021), on the cohomology side with clearing:
   shared (``src/column_heap.hpp``), the coboundary enumeration cannot be.
 
 The columns of each dimension are only the candidates that survive clearing and the apparent
-pairs, so memory holds the graph, one (diameter, index) pair per column, the pivot and apparent
-tables, the reduction chains of the columns that needed work and, while a column is reduced, its
+pairs, and they are assembled in one pass over the cofaces of the (k − 1)-simplices (Ripser 1.2's
+``assemble_columns_to_reduce``): whether a simplex is in a zero apparent pair is decided where it is
+met, and no table of those pairs is kept.  So memory holds the graph, the (k − 1)-simplices while
+dimension k is assembled (not in the top dimension), one column record per column, the pivot
+table, the reduction chains of the columns that needed work and, while a column is reduced, its
 enumerators.
 
 Everything after the graph is compiled C++ (``src/implicit_rips.cpp``, with the graph and the
@@ -176,8 +180,9 @@ def _csr(n: int, edges: np.ndarray, lengths: np.ndarray):
                                          np.ascontiguousarray(lengths, dtype=np.float64))
 
 
-#: below this many candidate columns the apparent pairs are found on one thread (starting the
-#: threads costs more than it saves, and much more on a loaded machine)
+#: below this many k-simplices to be met (the positive edges for H₁; above, the (k − 1)-simplices
+#: times the mean degree over k + 1) the columns of a dimension are assembled on one thread
+#: (starting the threads costs more than it saves, and much more on a loaded machine)
 PARALLEL_MIN = 50_000
 
 
@@ -214,8 +219,8 @@ def rips_persistence(
         (paired without enumerating their coboundary), ``reduced`` (columns that needed an addition)
         and ``additions``.
     n_threads : int, optional
-        Threads for the search of apparent pairs (used from ``PARALLEL_MIN`` candidates of a
-        dimension on); None: ``OMP_NUM_THREADS`` when set, else every core.  The barcode does not
+        Threads for assembling the columns and finding the apparent pairs (used from about
+        ``PARALLEL_MIN`` simplices of a dimension on); None: ``OMP_NUM_THREADS`` when set, else every core.  The barcode does not
         depend on it.
 
     Returns
