@@ -108,7 +108,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         harness.print_table(COLUMNS, rows)
         print(f"kernel start ~{kernel_s:.1f} s per run; Dask cluster start {cluster_s[1]:.1f} s (1 worker), "
               f"{cluster_s[2]:.1f} s (2 workers); 1-minute load average {os.getloadavg()[0]:.1f}")
-        harness.write_rows("sweep", rows, args.quick)
+        harness.write_results("sweep", rows, args.quick)
         return rows
     finally:
         os.environ.pop("THESIS_LAB_PROJECT", None)

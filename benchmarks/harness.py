@@ -488,8 +488,3 @@ def run_cases(topic: str, doc: str, argv: list[str] | None, *, cases: Sequence[s
 
     stream_table(columns, names, row)
     return rows
-
-
-def write_rows(topic: str, rows: list[dict], quick: bool, output: str | None = None, indent: int = 1) -> Path:
-    """Older name of :func:`write_results` (the rows are stored with the run's :func:`environment`)."""
-    return write_results(topic, rows, quick, output)

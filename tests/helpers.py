@@ -60,7 +60,7 @@ def pari_invariants(a) -> list[int]:
     return sorted(abs(int(x)) for x in pari.matsnf(pari(text)) if x != 0)
 
 
-# ---------------------------------------------------------------------------- fuzz tests (issue 11.3)
+# ---------------------------------------------------------------------------- fuzz tests
 
 #: outcomes of fuzzed calls per module, printed at the end of the run (conftest.py)
 FUZZ_TALLY: dict = _collections.defaultdict(_collections.Counter)
@@ -135,9 +135,9 @@ def claims_of(name: str) -> list[dict]:
     """The ``[[claim]]`` tables of ``experiments/claims/<name>.toml``."""
     import tomllib
 
-    from thesis_lib.lab.paths import repo_root
+    from thesis_lib.lab.paths import project_root
 
-    with open(repo_root() / "experiments" / "claims" / f"{name}.toml", "rb") as fh:
+    with open(project_root() / "experiments" / "claims" / f"{name}.toml", "rb") as fh:
         return tomllib.load(fh)["claim"]
 
 
@@ -147,9 +147,9 @@ def page_labels(page: str) -> set[str]:
 
     import nbformat
 
-    from thesis_lib.lab.paths import repo_root
+    from thesis_lib.lab.paths import project_root
 
-    nb = nbformat.read(repo_root() / "book" / f"{page}.ipynb", as_version=4)
+    nb = nbformat.read(project_root() / "book" / f"{page}.ipynb", as_version=4)
     text = "\n".join(c.source for c in nb.cells if c.cell_type == "markdown")
     return set(re.findall(r"^\(([\w-]+)\)=\s*$", text, re.M)) | set(re.findall(r"^:name:\s*([\w-]+)\s*$", text, re.M))
 

@@ -1,4 +1,4 @@
-"""Every public function and method of ``thesis_lib`` documents itself the numpy way (issue 13.7).
+"""Every public function and method of ``thesis_lib`` documents itself the numpy way.
 
 Public: a name without a leading underscore, in a module whose dotted path has none, defined in that
 module (re-exports are checked where they are defined).  Each must have

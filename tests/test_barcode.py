@@ -185,9 +185,9 @@ def test_diagrams_round_trip_with_ripser():
 
 
 def test_hostile_tolerances_dimensions_and_fields_are_refused_by_name():
-    """Issue 21: atol=NaN said two different barcodes were close, atol=-1 that a barcode differs
-    from itself; fractional or string dimensions and a non-prime field were accepted; a dimension
-    of 10¹² made to_diagrams build 10¹² arrays."""
+    """atol=NaN and atol=-1 are refused (they would call two different barcodes close, or a barcode
+    different from itself), as are fractional or string dimensions and a non-prime field; a
+    dimension of 10¹² is refused before to_diagrams would build 10¹² arrays."""
     a, b = Barcode({0: [[0, 1]]}), Barcode({0: [[0, 5]]})
     assert not a.allclose(b, atol=1.0) and a.allclose(b, atol=np.inf) and a.allclose(a, atol=0)
     with pytest.raises(ValueError, match="atol is NaN"):

@@ -10,7 +10,7 @@ from thesis_lib.lab import bench
 
 
 def test_tables_from_rows(tmp_path, monkeypatch):
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     (tmp_path / "benchmarks" / "results").mkdir(parents=True)
     rows = [{"case": "a", "ours_s": 0.5, "ref_s": 1.0, "ratio": 0.5}, {"case": "b", "ours_s": 2.0, "extra": 3}]
     (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))
@@ -30,7 +30,7 @@ def test_tables_from_rows(tmp_path, monkeypatch):
 
 
 def test_targets_report_the_worst_case_and_what_is_missing(tmp_path, monkeypatch):
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     (tmp_path / "benchmarks" / "results").mkdir(parents=True)
     rows = [{"case": "a", "ratio_x": 0.5, "rounds": 5, "mb": 10.0, "base": 100.0},
             {"case": "b", "ratio_x": 1.2, "rounds": 15, "mb": 20.0, "base": 100.0}]
@@ -59,9 +59,9 @@ def _harness():
     import importlib
     import sys
 
-    from thesis_lib.lab.paths import repo_root
+    from thesis_lib.lab.paths import project_root
 
-    sys.path.insert(0, str(repo_root() / "benchmarks"))
+    sys.path.insert(0, str(project_root() / "benchmarks"))
     try:
         return importlib.import_module("harness")
     finally:
@@ -128,7 +128,7 @@ def test_update_replaces_one_row_and_keeps_both_provenances(tmp_path, monkeypatc
     results = tmp_path / "benchmarks" / "results"
     results.mkdir(parents=True)
     monkeypatch.setattr(h, "RESULTS", results)
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     first = {"commit": "aaa", "date": "2026-01-01T00:00:00Z", "load_average": [0.1, 0.1, 0.1]}
     h.write_results("t", [{"case": "a", "ratio": 1.0}, {"case": "c", "ratio": 3.0}], meta=first)
     later = {"commit": "bbb", "date": "2026-02-01T00:00:00Z", "load_average": [0.2, 0.2, 0.2]}
@@ -153,11 +153,11 @@ def test_memory_worker_subtracts_the_baseline():
     import subprocess
     import sys
 
-    from thesis_lib.lab.paths import repo_root
+    from thesis_lib.lab.paths import project_root
 
     code = ("import sys; sys.path.insert(0, 'benchmarks'); import numpy as np, harness; "
             "harness.memory_worker(lambda: None, lambda _: np.ones(40 * 2**20 // 8).sum())")
-    proc = subprocess.run([sys.executable, "-c", code], cwd=repo_root(), capture_output=True, text=True, check=True)
+    proc = subprocess.run([sys.executable, "-c", code], cwd=project_root(), capture_output=True, text=True, check=True)
     res = json.loads(proc.stdout.strip().splitlines()[-1])
     assert res["peak_mb"] >= res["baseline_mb"] > 0
     if res["hwm_reset"]:
@@ -168,7 +168,7 @@ def test_ratios_figures_and_exponents(tmp_path, monkeypatch):
     import matplotlib
 
     matplotlib.use("Agg")
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     (tmp_path / "benchmarks" / "results").mkdir(parents=True)
     rows = [{"case": f"scaling-{n}", "n_per_circle": n, "rounds": 5, "ours_s": 0.001 * n**2, "ripser_s": 0.002 * n**3,
              "ours_mb": float(n), "ripser_mb": 2.0 * n, "ratio_ripser": 0.5 * n**-1} for n in (10, 20, 40)]

@@ -20,7 +20,7 @@ def test_headers_say_the_tool_and_the_unit():
 
 
 def test_markdown_headers_are_opt_in(tmp_path, monkeypatch):
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     (tmp_path / "benchmarks" / "results").mkdir(parents=True)
     rows = [{"case": "a", "ours_s": 0.5, "ripser_s": 1.0, "ratio_ripser": 0.5, "ours_mb": 3.0}]
     (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))

@@ -30,11 +30,11 @@ import pytest
 import yaml
 
 from thesis_lib.lab import bench
-from thesis_lib.lab.paths import repo_root, shared_dir
+from thesis_lib.lab.paths import project_root, shared_dir
 from thesis_lib.lab.report import report
 from thesis_lib.lab.results import DEFAULT_RUN_ENV
 
-ROOT = repo_root()
+ROOT = project_root()
 BOOK = ROOT / "book"
 ARCHIVE = "thesis-lab-book.zip"
 

@@ -1,4 +1,4 @@
-"""Atomicity and cancellation (issue 11.5): `store`, `run` and a sweep killed at random moments with
+"""Atomicity and cancellation: `store`, `run` and a sweep killed at random moments with
 SIGINT, SIGTERM and SIGKILL.  After each kill: the committed results are byte-identical to before (or
 to a whole new run, if the command had finished), no run folder is complete without its results, no
 process of ours survives; then a re-run finishes the work."""

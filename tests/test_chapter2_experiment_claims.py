@@ -14,7 +14,7 @@ import pytest
 from helpers import claims_of
 
 from thesis_lib.lab import report
-from thesis_lib.lab.paths import repo_root, shared_dir
+from thesis_lib.lab.paths import project_root, shared_dir
 
 #: experiment -> the provenance of its input (the thesis's description rebuilt, its data, a stand-in)
 INPUT = {
@@ -38,11 +38,11 @@ def thesis_text() -> str:
 
 
 def stored(name: str) -> dict:
-    return json.loads((repo_root() / "experiments" / "results" / name / "results.json").read_text())
+    return json.loads((project_root() / "experiments" / "results" / name / "results.json").read_text())
 
 
 def notebook(path: str):
-    return nbformat.read(repo_root() / path, as_version=4)
+    return nbformat.read(project_root() / path, as_version=4)
 
 
 @pytest.mark.parametrize("name", INPUT)
@@ -158,7 +158,7 @@ def test_figures_on_the_page_have_legible_text():
     paths = re.findall(r"^```\{figure\} (\S+)$", text, re.M)
     assert len(paths) >= 12
     for path in paths:
-        png = (repo_root() / "book" / path).read_bytes()
+        png = (project_root() / "book" / path).read_bytes()
         width = struct.unpack(">I", png[16:20])[0]
         assert ":width:" not in text.split(path, 1)[1].split("```", 1)[0], f"{path}: shown at a fixed width"
         px = png_text(png)[TEXT_PX_KEY]

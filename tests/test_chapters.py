@@ -165,7 +165,7 @@ def test_the_thesis_text():
 
 @pytest.mark.skipif(not THESIS.is_file(), reason="the thesis text is not in the shared folder")
 def test_the_stored_numbers_are_the_texts():
-    """The summary page's stored run (what the report's errata read) matches the thesis text now."""
+    """The summary page's stored run (what the report's errata read) matches the thesis text."""
     from thesis_lib.lab.report import report
     from thesis_lib.lab.results import load
 

@@ -468,7 +468,7 @@ def test_covering_radius_checks_indices():
     from thesis_lib.complexes import covering_radius
 
     pts = np.random.default_rng(0).random((10, 2))
-    # a negative index was accepted (numpy wraps it), an index too large raised IndexError
+    # a negative index is refused (numpy would wrap it), an index too large too (not an IndexError)
     with pytest.raises(ValueError, match="indices in 0..9"):
         covering_radius(pts, [0, -1])
     with pytest.raises(ValueError, match="indices in 0..9"):
@@ -485,11 +485,11 @@ def test_nerve_refuses_explosions_and_deep_chains(monkeypatch):
 
     nerve_module = importlib.import_module("thesis_lib.complexes.nerve")
 
-    # 64 sets sharing an element: C(64, 6) = 75 million simplices up to dimension 5 (it hung)
+    # 64 sets sharing an element: C(64, 6) = 75 million simplices up to dimension 5, refused by the cap
     monkeypatch.setattr(nerve_module, "MAX_NERVE_SIMPLICES", 10_000)
     with pytest.raises(ValueError, match="more than 10,000 simplices"):
         nerve([{0, i} for i in range(64)], max_dim=5)
-    # a chain of 3000 consecutive overlaps goes 2 deep only, but the search used to recurse per set
+    # a chain of 3000 consecutive overlaps goes 2 deep only; the search must not recurse per set
     chain = [{i, i + 1} for i in range(3000)]
     out = nerve(chain)
     assert len(out) == 3000 + 2999 and max(len(s) for s in out) == 2

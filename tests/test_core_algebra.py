@@ -206,8 +206,8 @@ def test_modular_outputs_are_never_copies():
 
 
 def test_markowitz_terminates_when_a_row_only_reaches_a_column_set_aside():
-    # the pivot 1 at (0, 0) would overflow (2^31 + 2^31 > lim) and the 2-block keeps the matrix sparse: the
-    # numba kernel chose that pivot through row 0 forever; now the row is set aside as well
+    # the pivot 1 at (0, 0) would overflow (2^31 + 2^31 > lim) and the 2-block keeps the matrix sparse: a
+    # search that only set the column aside would choose that pivot through row 0 forever; the row is set aside too
     a = np.zeros((52, 52), dtype=I64)
     a[0, 0], a[0, 1], a[1, 0], a[1, 1] = 1, LIMIT, -1, LIMIT
     a[np.arange(2, 52), np.arange(2, 52)] = 2

@@ -132,7 +132,7 @@ def test_crust_torus_random_seeds(seed):
 def test_crust_of_chosen_points_is_closed(n):
     """The thesis's chosen points (§3.4.1): every grid quad is an isosceles trapezoid, four
     co-circular samples, which Qhull separates by a flat tetrahedron.  The Crust must still pick
-    one diagonal per quad and leave no boundary (it left hundreds of boundary vertices before)."""
+    one diagonal per quad and leave no boundary."""
     from scipy.spatial import Delaunay
 
     from thesis_lib.meshes.crust_geometry import circumcentres

@@ -480,7 +480,7 @@ def test_boundary_vertices_and_ridge_keys_for_large_n():
     np.testing.assert_array_equal(boundary_vertices(F, len(P)), boundary)
     x, f = tetrahedron()
     assert not boundary_vertices(f, 4).any()
-    # n = 4 with 50,000 vertices: ridge keys no longer fit in int64 (nv^4 > 2^62), byte keys are used
+    # n = 4 with 50,000 vertices: ridge keys do not fit in int64 (nv^4 > 2^62), byte keys are used
     x4, s4 = sphere_hull(25, dim=5, seed=14)
     big = np.vstack([x4, np.random.default_rng(0).normal(size=(50_000, 5)) + 10])  # isolated extras
     np.testing.assert_allclose(mean_curvature_vector(big, s4)[: len(x4)], mean_curvature_vector(x4, s4))
@@ -513,24 +513,20 @@ def test_curves_n1_polygon_curvature():
     assert np.isnan(h[[0, k - 1]]).all() and np.isfinite(h[1:-1]).all()
 
 
-# ------------------------------------------------------------------------- one vocabulary (issue 13)
-def test_deprecated_aliases_warn_and_agree():
+# ------------------------------------------------------------------------- one vocabulary
+def test_the_vertex_region_is_area_and_the_edge_weighting_edge_weights():
+    """``area=`` names the vertex region and ``edge_weights=`` the shape operator's edge weights;
+    ``kind=`` and ``weights=`` (the points' weights elsewhere) are refused there."""
     x, f = tetrahedron()
-    with pytest.warns(FutureWarning, match="kind= is deprecated"):
-        old = vertex_areas(x, f, kind="barycentric")
-    np.testing.assert_array_equal(old, vertex_areas(x, f, area="barycentric"))
+    with pytest.raises(TypeError, match="kind"):
+        vertex_areas(x, f, kind="barycentric")
     P, F = torus_grid(12, 12)[:2]
-    with pytest.warns(FutureWarning, match="weights= is deprecated"):
-        old = shape_operator(P, F, weights="uniform")
-    np.testing.assert_array_equal(old.tensor, shape_operator(P, F, edge_weights="uniform").tensor)
-    with pytest.warns(FutureWarning):
-        pc = principal_curvatures(P, F, weights="uniform")
-    np.testing.assert_array_equal(pc.k1, principal_curvatures(P, F, "uniform").k1)
-    with pytest.raises(ValueError, match="not both"):
-        vertex_areas(x, f, "mixed", kind="mixed")
+    for fn in (shape_operator, principal_curvatures):
+        with pytest.raises(TypeError, match="weights"):
+            fn(P, F, weights="uniform")
 
 
-# ------------------------------------------------------------------------- pseudo-manifolds (issue 11)
+# ------------------------------------------------------------------------- pseudo-manifolds
 def _pinched():
     """Two tetrahedron boundaries glued at vertex 3 (the second reflected through it): every edge
     lies in two faces, but the link of vertex 3 is two triangles."""

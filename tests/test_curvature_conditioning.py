@@ -237,7 +237,7 @@ def test_bad_simplices_against_60_digit_reference(space, family):
 
 
 def test_spike_vertex_of_aspect_5e9():
-    """The issue's spike: |H| at the apex of needles of aspect 5·10⁹ against the 60-digit value."""
+    """A spike: |H| at the apex of needles of aspect 5·10⁹ against the 60-digit value."""
     ring = np.array([[1.2, 0.1, 0.0], [-0.1, 1.1, 0.05], [-1.3, 0.0, -0.02], [0.05, -1.2, 0.0]])
     v = np.concatenate([ring, [[0.1, -0.2, 5e9], [0.0, 0.1, -1.0]]])  # the spike's apex at height 5·10⁹
     s = np.array([[i, (i + 1) % 4, 4] for i in range(4)] + [[(i + 1) % 4, i, 5] for i in range(4)])
@@ -325,7 +325,7 @@ def test_well_conditioned_meshes_bit_identical_to_the_float_formulas(tmp_path):
             tar.extractall(tmp_path / "extract", filter="data")
         old_src.mkdir(parents=True, exist_ok=True)
         if not (old_src / "thesis_lib").exists():
-            # numba is no longer a dependency: the old kernels run as the plain Python they were written in
+            # numba is not installed: that commit's kernels run as the plain Python they are written in
             (tmp_path / "extract" / "thesis_lib" / "jit.py").write_text(_PLAIN_JIT, encoding="utf-8")
             (tmp_path / "extract" / "thesis_lib").rename(old_src / "thesis_lib")
     data = _well_conditioned_meshes()

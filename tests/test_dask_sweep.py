@@ -1,4 +1,4 @@
-"""Sweeps on a real Dask cluster (issue 15.6): a LocalCluster of 2 worker processes, no shared file
+"""Sweeps on a real Dask cluster: a LocalCluster of 2 worker processes, no shared file
 system assumed (runs are self-contained), a worker killed mid-run, cancellation, bad clusters."""
 
 from __future__ import annotations

@@ -41,7 +41,7 @@ def tiny(tmp_path, monkeypatch):
         f'[[file]]\nname = "toy"\nfile = "x/toy.pdb"\nsha256 = "{digest}"\nsize = {len(payload)}\n'
         f'url = "{source.as_uri()}"\norigin = "test"\nlicence = "CC0"\n'
     )
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(root))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(root))
     monkeypatch.setenv("THESIS_LAB_SHARED", str(shared))
     return root, shared, payload
 
@@ -102,7 +102,7 @@ def _manifest(root, file="x/toy.pdb", **kw):
 @pytest.mark.parametrize("file", ["../../x", "../outside.pdb", "/etc/passwd", "x/../../y", "./x", "x//y", "",
                                   "x\\..\\y", "a/./b", ".."])
 def test_manifest_entries_outside_data_are_refused(tiny, file):
-    """Regression (issue 11): a `file` of ../../x made `data fetch` write outside data/ and `path` read outside it."""
+    """A manifest `file` leading outside data/ (../../x, /etc/passwd, ...) is refused by `path` and `data fetch`."""
     root, shared, payload = tiny
     _manifest(root, file=file)
     with pytest.raises(DataError, match="must be a relative path below data/"):
@@ -139,7 +139,7 @@ def test_symlinks_out_of_data_are_refused(tiny, tmp_path):
     ],
 )
 def test_malformed_manifests_give_clear_errors(tiny, text, message):
-    """Regression (issue 11): a malformed manifest raised a raw TOMLDecodeError."""
+    """A malformed manifest gives a DataError naming the problem, not a raw TOMLDecodeError."""
     root, _, _ = tiny
     if text is not None:
         (root / "data" / "manifest.toml").write_text(text)

@@ -1,8 +1,8 @@
-"""Near-degenerate geometry (issue 11.4): alpha, weighted alpha and Delaunay equal GUDHI's exact
-construction on jittered grids, co-circular / co-spherical sets and thin simplices, in 2-D and 3-D.
+"""Near-degenerate geometry: alpha, weighted alpha and Delaunay equal GUDHI's exact construction on
+jittered grids, co-circular / co-spherical sets and thin simplices, in 2-D and 3-D.
 
 GUDHI (CGAL with exact predicates and symbolic perturbation) is the reference: same simplices,
-values to 1e-12 relative.  Each regression of the issue is pinned by its own test.
+values to 1e-12 relative.  Each hard case has its own test.
 """
 
 import itertools
@@ -61,16 +61,16 @@ def lattice_sphere(radius: int, dim: int) -> np.ndarray:
     return np.array([p for p in itertools.product(r, repeat=dim) if sum(x * x for x in p) == radius**2], float)
 
 
-# ----------------------------------------------------------------------------- the issue's cases
+# ----------------------------------------------------------------------------- hard cases
 def test_nearly_collinear_quadrilateral():
-    # LinAlgError "Singular matrix" before: a point 1e-9 off the line through two others
+    # a point 1e-9 off the line through two others: a nearly singular circumcentre system
     pts = np.array([[0, 0], [0, -1], [1, 1e-9], [-1, 0]], float)
     assert_alpha_equals_gudhi(pts)
 
 
 @pytest.mark.parametrize("seed", range(3))
 def test_noisy_grids(seed):
-    # 6 x 6 at noise 1e-9 crashed every time, 4 x 4 x 4 at 1e-7 most times
+    # 6 x 6 at noise 1e-9 and 4 x 4 x 4 at 1e-7: nearly co-circular (co-spherical) cells everywhere
     rng = np.random.default_rng(seed)
     for side, dim, noise in [(6, 2, 1e-9), (4, 3, 1e-7)]:
         pts = grid(side, dim) + rng.normal(scale=noise, size=(side**dim, dim))
@@ -80,14 +80,14 @@ def test_noisy_grids(seed):
 
 @pytest.mark.parametrize("height", [1e-5, 1e-7, 1e-9, 1e-12])
 def test_thin_simplices_values(height):
-    # values were 0.2 % off at height 1e-7 and raised LinAlgError at 1e-9
+    # thin simplices down to height 1e-12: nearly singular circumcentre systems, values still to 1e-12
     assert_alpha_equals_gudhi([[0, 0], [1, 0], [0.5, height], [0.3, 2.0]])
     assert_alpha_equals_gudhi([[0, 0, 0], [1, 0, 0], [0.5, height, 0], [0.2, 0.3, 1.0]])
     assert_alpha_equals_gudhi([[0, 0, 0], [1, 0, 0], [0.5, height, 0], [0.5, 0, height], [0.3, 0.3, 1]])
 
 
 def test_delaunay_keeps_thin_triangle():
-    # a point 5e-14 above an edge: the thin triangle (0, 1, 2) was dropped
+    # a point 5e-14 above an edge: the thin triangle (0, 1, 2) is kept
     pts = np.array([[0, 0], [1, 0], [0.5, 5e-14], [0.5, 1]], float)
     assert set(delaunay(pts)) == gudhi_delaunay(pts)
     assert (0, 1, 2) in delaunay(pts)

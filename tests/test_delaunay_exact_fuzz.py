@@ -1,4 +1,4 @@
-"""Exact Delaunay and alpha on near-degenerate input (issue 21.1), checked in rational arithmetic.
+"""Exact Delaunay and alpha on near-degenerate input, checked in rational arithmetic.
 
 Random near-degenerate sets in R² and R³ — near-duplicates (1e-13 … 1e-9 apart), points 1 to 4
 ulps apart, jittered grids and (near-)co-spherical families — are triangulated and the result is
@@ -209,7 +209,7 @@ def near_duplicates(rng, d: int) -> np.ndarray:
     src = p[rng.integers(0, n, k)]
     eps = 10.0 ** rng.uniform(-13, -9, (k, 1)) * rng.choice([-1.0, 1.0], (k, d))
     if rng.random() < 0.5:
-        eps = np.abs(eps[:, :1]) * np.ones((1, d))  # displaced along the diagonal (the reproducer's way)
+        eps = np.abs(eps[:, :1]) * np.ones((1, d))  # displaced along the diagonal (as NEAR_DUPLICATE_2D)
     return _distinct(np.vstack([p, src + eps]))
 
 
@@ -261,12 +261,12 @@ def family_input(name: str, d: int, seed: int) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- tests
-REPRODUCER_2D = [[0.04, 0.24], [0.04, 0.38], [0.01, 0.16], [0.03, 0.23], [0.5, 0.9], [0.04 + 1e-13, 0.24 + 1e-13]]
+NEAR_DUPLICATE_2D = [[0.04, 0.24], [0.04, 0.38], [0.01, 0.16], [0.03, 0.23], [0.5, 0.9], [0.04 + 1e-13, 0.24 + 1e-13]]
 
 
-def test_reproducer_2d_near_duplicate():
-    """Issue 21.1: two points 1e-13 apart; the triangles must cover the hull (2n − 2 − h = 7)."""
-    p = np.array(REPRODUCER_2D)
+def test_near_duplicate_2d_triangles_cover_the_hull():
+    """Two points 1e-13 apart: the triangles cover the hull (2n − 2 − h = 7)."""
+    p = np.array(NEAR_DUPLICATE_2D)
     tri, _ = regular_triangulation(p)
     rows = {tuple(r) for r in tri.tolist()}
     hull = len(ConvexHull(p).vertices)  # no point on a hull edge here
@@ -276,24 +276,24 @@ def test_reproducer_2d_near_duplicate():
     check(p)
 
 
-def test_reproducer_2d_certificate_rejects_the_overlap():
-    """The triangulation returned before the fix (two triangles overlapping (2, 3, 5) by a sliver of
+def test_certificate_rejects_an_overlapping_triangulation():
+    """A wrong triangulation of these points (two triangles overlapping (2, 3, 5) by a sliver of
     area 1e-32, with a locally convex boundary of its own) fails the certificate."""
     from thesis_lib.complexes.triangulation import _certify, prepare_geometry
 
-    geo, _ = prepare_geometry(REPRODUCER_2D)
+    geo, _ = prepare_geometry(NEAR_DUPLICATE_2D)
     wrong = np.array([[2, 4, 5], [1, 4, 5], [1, 2, 3], [2, 3, 5], [0, 1, 3], [0, 1, 5]])
     cert = _certify(geo, wrong)
     assert not cert.ok
     assert set(cert.bad.tolist()) == {3, 4, 5}
     with pytest.raises(AssertionError, match="lies in 2 simplices|inside the circumsphere"):
-        check_exact_delaunay(np.array(REPRODUCER_2D), wrong)
+        check_exact_delaunay(np.array(NEAR_DUPLICATE_2D), wrong)
 
 
 def test_alpha_attachment_of_an_edge_a_few_ulps_long():
     """Three points a few ulps apart near (911, 943): the third lies inside the diametral circle
     of the edge (12, 13), so the edge is attached and enters with the triangle (1.2142e-25), not
-    at its own squared half-length (1.1955e-25, the value before the fix)."""
+    at its own squared half-length (1.1955e-25)."""
     p = family_input("ulp_apart", 2, 10)
     assert np.abs(p[[12, 13]] - p[10]).max() < 1e-12
     a = dict(alpha(p))
@@ -303,15 +303,15 @@ def test_alpha_attachment_of_an_edge_a_few_ulps_long():
     check(p)
 
 
-#: near-duplicate seeds whose triangulation was not Delaunay before the fix (a point strictly
-#: inside a circumsphere), found by running the families on the code before it
-REGRESSION = {3: [223], 2: [171, 235, 279, 296, 423, 427]}
+#: the near-duplicate seeds hardest to triangulate among those tried: a triangulation that is off there
+#: has a point strictly inside a circumsphere
+HARD_SEEDS = {3: [223], 2: [171, 235, 279, 296, 423, 427]}
 
 
 @pytest.mark.parametrize("d", [2, 3])
-def test_reproducer_near_duplicates(d):
-    """Issue 21.1 (in R² and R³): near-duplicates 1e-13 to 1e-9 apart; seeds that failed before the fix."""
-    for seed in REGRESSION[d]:
+def test_hard_near_duplicate_seeds(d):
+    """Near-duplicates 1e-13 to 1e-9 apart, in R² and R³, on the hardest seeds found."""
+    for seed in HARD_SEEDS[d]:
         check(family_input("near_duplicates", d, seed))
 
 

@@ -1,4 +1,4 @@
-"""Fuzzing homology and discrete Morse theory (issue 11.3): hostile complexes, matrices, coefficients,
+"""Fuzzing homology and discrete Morse theory: hostile complexes, matrices, coefficients,
 pairs and Morse functions get a correct value or a ValueError/TypeError with a message — never
 another exception, never a hang (the shared fuzz harness counts them under "homology" and "morse")."""
 

@@ -1,4 +1,4 @@
-"""Fuzz tests for complexes, curvature and meshes (issue 11.3).
+"""Fuzz tests for complexes, curvature and meshes.
 
 Hostile inputs (NaN and inf, duplicates, wrong shapes and types, empty input, huge and tiny
 coordinates, degenerate sets, non-manifold and mutated meshes) go to every public function; each
@@ -272,8 +272,8 @@ def test_ball_pivoting_hostile_input_in_subprocess():
 
 
 def test_qhull_never_sees_huge_coordinates():
-    # Qhull crashed the interpreter (SIGSEGV) on samples near 3e150; the Crust and the hull now
-    # run on points scaled by a power of two.  In a subprocess: a regression must not kill pytest.
+    # Qhull can crash the interpreter (SIGSEGV) on samples near 3e150; the Crust and the hull run on
+    # points scaled by a power of two.  In a subprocess, so that a crash cannot kill pytest.
     code = textwrap.dedent("""
         import numpy as np
         from thesis_lib.meshes import convex_hull_surface, crust, poles, sample_sphere
@@ -292,8 +292,8 @@ def test_qhull_never_sees_huge_coordinates():
 
 
 def test_absurd_grid_dimensions_and_complex_corners_are_refused():
-    """Regression (--fuzz-long): n = 2**70 overflowed a tuple before the size check; complex corner
-    coordinates were cast to real with a warning."""
+    """n = 2**70 is refused by the size check before it could overflow a shape; complex corner
+    coordinates are refused, not cast to real."""
     import numpy as np
 
     from thesis_lib.curvature import circumcentric_fractions
@@ -308,8 +308,8 @@ def test_absurd_grid_dimensions_and_complex_corners_are_refused():
 
 
 def test_dense_expansions_to_a_huge_dimension_are_refused_up_front():
-    """Regression (--fuzz-long): Čech of a 4 × 4 × 4 grid at ε = 2 with max_dim = 2**70 expanded for
-    minutes before any level grew too large; the clique bound Σ C(deg⁺, d) refuses it at once."""
+    """Čech and Rips of a 4 × 4 × 4 grid at ε = 2 with max_dim = 2**70: the clique bound Σ C(deg⁺, d)
+    refuses them at once, before any expansion."""
     import numpy as np
 
     from thesis_lib.complexes import cech, rips

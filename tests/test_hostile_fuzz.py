@@ -1,4 +1,4 @@
-"""Fuzz tests of the second hostile-input round (issue 21): the families of its reproducers.
+"""Fuzz tests of hostile input: the families of tests/test_hostile_inputs.py.
 
 Tolerances, dimensions, fields and seeds of every kind; weights and radii near and beyond the
 float range; sizes that cannot fit (refused quickly, never allocated); complexes whose closure

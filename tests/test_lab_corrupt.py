@@ -1,4 +1,4 @@
-"""The laboratory on hostile state (issue 21): a folder that is not a project, path parameters that
+"""The laboratory on hostile state: a folder that is not a project, path parameters that
 lead out of the project, corrupt run folders and stored results, a full disk.
 
 Runs here execute no kernel: ``execute`` is replaced by a stub that returns the toy's outputs, so
@@ -18,7 +18,7 @@ from lab_helpers import PAYLOAD, TOY_RESULTS, root  # noqa: F401 (the project fi
 from thesis_lib.lab import atomic, execute, runner, sweep
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab.data import DataError
-from thesis_lib.lab.paths import PROJECT_ENV, repo_root
+from thesis_lib.lab.paths import PROJECT_ENV, project_root
 from thesis_lib.lab.results import ResultsError, load
 
 CALLS: list[dict] = []
@@ -42,7 +42,7 @@ def stub(monkeypatch):
 # ----------------------------------------------------------------------------- --project
 @pytest.mark.parametrize("kind", ["missing", "empty", "file", "half"])
 def test_project_that_is_not_a_project_is_an_error(tmp_path, capsys, kind):
-    """Regression (issue 21): `--project` on a folder that is no project exited 0 with an empty report."""
+    """`--project` on a folder that is no project is an error (exit 2) saying why, never an empty report."""
     folder = tmp_path / "not-a-project"
     if kind == "empty":
         folder.mkdir()
@@ -77,8 +77,8 @@ def test_project_is_named_for_the_command_only(root, tmp_path, monkeypatch, caps
 
 # ----------------------------------------------------------------------------- path parameters
 def test_path_parameters_outside_the_project_are_refused(root, tmp_path, stub, capsys):
-    """Regression (issue 21): `run proteins -p rings_structure ../../../../outside/evil.pdb` read a file
-    outside the project, with no manifest entry and no sha256, and stored the run as complete."""
+    """A path parameter that leads outside the project (`run proteins -p rings_structure
+    ../../../../outside/evil.pdb`), with no manifest entry and no sha256, is refused before any run."""
     outside = tmp_path / "outside"
     outside.mkdir()
     (outside / "evil.pdb").write_bytes(b"ATOM evil\n")
@@ -92,7 +92,7 @@ def test_path_parameters_outside_the_project_are_refused(root, tmp_path, stub, c
         assert lab_cli.main(["run", "toy", "-p", "label", value]) == 2
         assert "outside the project" in capsys.readouterr().err
         with pytest.raises(DataError, match="outside the project"):
-            runner.sweep("toy", {"label": ["a", value]}, progress=False)
+            sweep.sweep("toy", {"label": ["a", value]}, progress=False)
     assert stub == [] and not (root / "runs" / "toy").exists()
     with pytest.raises(DataError, match="NUL"):
         runner.run("toy", {"label": "a\x00b"})
@@ -109,11 +109,11 @@ def test_path_parameters_inside_the_project_or_listed_by_sha256_are_kept(root, t
 
 
 def test_the_proteins_experiment_refuses_a_structure_outside_the_project(tmp_path, monkeypatch, capsys):
-    """The issue's reproducer on the real project: refused before any kernel starts."""
+    """On the real project: a structure outside it is refused before any kernel starts."""
     evil = tmp_path / "evil.pdb"
     evil.write_text("ATOM      1  N   GLY A   1      0.0 0.0 0.0\n")
     monkeypatch.setattr(runner, "execute", lambda *a, **k: pytest.fail("a kernel started"))
-    project = repo_root()
+    project = project_root()
     for value in (str(evil), "../" * 12 + str(evil).lstrip("/")):
         assert lab_cli.main(["--project", str(project), "run", "proteins", "-p", "rings_structure", value]) == 2
         err = capsys.readouterr().err
@@ -153,7 +153,7 @@ def _spoil(path, file, text):
 
 @pytest.mark.parametrize("case", sorted(CORRUPT))
 def test_corrupt_run_folders_are_reported_and_run_again(root, stub, capsys, case):
-    """Regression (issue 21): run and sweep printed a traceback on such a run folder."""
+    """run and sweep name what is wrong with such a run folder (no traceback) and run it again."""
     file, text, message = CORRUPT[case]
     first = runner.run("toy")
     _spoil(first.path, file, text)
@@ -187,8 +187,8 @@ def test_a_notebook_writing_unusable_results_is_a_failed_run(root, monkeypatch):
 # ----------------------------------------------------------------------------- stored results (report)
 @pytest.mark.parametrize("case", [c for c in sorted(CORRUPT) if c.startswith("results")])
 def test_corrupt_stored_results_are_named_by_load_and_the_report(root, capsys, case):
-    """Regression (issue 21): `report` printed a traceback when results.json was a folder, nested 10⁵
-    deep or held a 5,000-digit integer."""
+    """`load` and `report` name a results.json that is a folder, nested 10⁵ deep or holds a 5,000-digit
+    integer (no traceback)."""
     _, text, message = CORRUPT[case]
     folder = root / "experiments" / "results" / "toy"
     folder.mkdir(parents=True)
@@ -225,7 +225,8 @@ def _full_disk(monkeypatch):
 
 
 def test_a_full_disk_says_nothing_was_written_or_marked_complete(root, stub, monkeypatch, capsys):
-    """Regression (issue 21): a full disk gave `OSError: [Errno 28]` tracebacks from run and sweep."""
+    """On a full disk run and sweep say that nothing was written or marked complete (no `OSError: [Errno 28]`
+    traceback)."""
     kept = runner.run("toy", {"n": 5})
     _full_disk(monkeypatch)
     for argv in (["run", "toy"], ["sweep", "toy", "-p", "n", "5", "6", "-q"]):

@@ -1,4 +1,4 @@
-"""Fuzzing the laboratory's edge (issue 11.3): hostile experiment names, parameter values, grids,
+"""Fuzzing the laboratory's edge: hostile experiment names, parameter values, grids,
 shards, command lines, manifests and stored results.  Every call returns a correct value or raises
 ValueError/TypeError with a message; never another exception, never a hang (a per-example deadline),
 never a write outside the project.  `pytest --fuzz-long` runs 100 times more examples."""

@@ -28,10 +28,10 @@ from pathlib import Path
 
 import pytest
 
-from thesis_lib.lab.paths import repo_root
+from thesis_lib.lab.paths import project_root
 from thesis_lib.lab.results import DEFAULT_RUN_ENV, RESULTS_FILE
 
-ROOT = repo_root()
+ROOT = project_root()
 NOTEBOOKS = sorted((ROOT / "book").glob("*.ipynb")) + sorted((ROOT / "experiments").glob("*.ipynb"))
 COMMITTED = ROOT / "experiments" / "results"
 SANITIZE = ROOT / "tests" / "nbval_sanitize.cfg"

@@ -257,7 +257,7 @@ def test_plotting_bad_input():
         render_mesh(np.zeros((4, 2)), np.array([[0, 1, 2]]))
 
 
-# ------------------------------------------------------------------------- mesh files and pyvista (issue 13)
+# ------------------------------------------------------------------------- mesh files and pyvista
 @pytest.mark.parametrize("suffix, exact", [(".vtk", True), (".vtp", True), (".ply", False), (".stl", False),
                                            (".obj", False)])
 def test_mesh_files_round_trip(tmp_path, suffix, exact):

@@ -97,7 +97,7 @@ def test_properties(seed, n, dim):
     np.testing.assert_allclose(shifted[0], c + 3.0, rtol=1e-7, atol=1e-7 * max(r, 1))
 
 
-# ----------------------------------------------------------------------------- extreme scales (issue 21)
+# ----------------------------------------------------------------------------- extreme scales
 def _exact_radius(pts, digits=60):
     """The smallest enclosing radius of ``pts`` by subset search in mpmath (``digits`` digits)."""
     import itertools
@@ -131,8 +131,8 @@ def _exact_radius(pts, digits=60):
 @pytest.mark.parametrize("k", [1000, 600, 0, -600, -1000, -1040, -1060, -1068])
 @pytest.mark.parametrize("dim", [2, 3])
 def test_extreme_scales_contain_every_point_and_give_the_scaled_radius(dim, k):
-    """Regression (issue 21): at 1e300 the ball did not contain every point (the search's tolerance
-    let points 1e-12 outside); at tiny scales the radius is the exact one scaled by 2^k, up to the
+    """At 1e300 the ball contains every point (no tolerance of the search lets a point 1e-12 outside);
+    at tiny scales the radius is the exact one scaled by 2^k, up to the
     rounding of the centre among the subnormal numbers.  Checked exactly (fractions) and against a
     60-digit reference."""
     from fractions import Fraction

@@ -115,7 +115,7 @@ def test_integer_reduction_and_torus_lower_star():
     tri = torus()
     filt = lower_star_filtration(tri, np.arange(7, dtype=float))
     red = morse_reduce(filt, 0)
-    assert red.p == 0 and red.boundaries[1].dtype == np.int64
+    assert red.coefficients == 0 and red.boundaries[1].dtype == np.int64
     for p in (2, 3):
         assert reduced_persistence(red, p) == persistence(filt, p)
     b = reduced_persistence(red, 2)

@@ -11,9 +11,9 @@ import pytest
 import yaml
 
 from thesis_lib.lab import runner
-from thesis_lib.lab.paths import repo_root
+from thesis_lib.lab.paths import project_root
 
-ROOT = repo_root()
+ROOT = project_root()
 NOTEBOOKS = sorted((ROOT / "book").glob("*.ipynb")) + sorted((ROOT / "experiments").glob("*.ipynb"))
 
 

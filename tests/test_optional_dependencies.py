@@ -1,4 +1,4 @@
-"""The library needs numpy and scipy only; each use adds its extra (issue 22.3).
+"""The library needs numpy and scipy only; each use adds its extra.
 
 Three checks:
 

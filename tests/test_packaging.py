@@ -13,9 +13,9 @@ from pathlib import Path
 import pytest
 import yaml
 
-from thesis_lib.lab.paths import repo_root
+from thesis_lib.lab.paths import project_root
 
-ROOT = repo_root()
+ROOT = project_root()
 
 
 def _readme_commands() -> list[str]:
@@ -125,7 +125,7 @@ def test_environment_yml_has_the_same_packages_and_floors_as_pyproject():
 
 
 def test_numba_is_no_dependency():
-    # the kernels are compiled C++ (issue 22): numba is neither required nor offered, nor in the conda route
+    # the kernels are compiled C++: numba is neither required nor offered, nor in the conda route
     pyproject = tomllib.loads((ROOT / "pyproject.toml").read_text())
     project = pyproject["project"]
     specs = project["dependencies"] + pyproject["build-system"]["requires"] + [

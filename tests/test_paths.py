@@ -1,4 +1,4 @@
-"""Finding the project from any folder (issue 13): --project, THESIS_LAB_PROJECT, upward search, the
+"""Finding the project from any folder: --project, THESIS_LAB_PROJECT, upward search, the
 package's own location; atomic writes and folder swaps; the one Markdown table writer."""
 
 from __future__ import annotations
@@ -15,16 +15,12 @@ from thesis_lib.lab.tables import markdown_table
 
 @pytest.fixture
 def clean_env(monkeypatch):
-    for var in ("THESIS_LAB_PROJECT", "THESIS_LAB_ROOT"):
-        monkeypatch.delenv(var, raising=False)
+    monkeypatch.delenv("THESIS_LAB_PROJECT", raising=False)
     return monkeypatch
 
 
 def test_environment_names_the_project(clean_env, tmp_path):
     clean_env.setenv("THESIS_LAB_PROJECT", str(tmp_path))
-    assert project_root() == tmp_path.resolve()
-    clean_env.delenv("THESIS_LAB_PROJECT")
-    clean_env.setenv("THESIS_LAB_ROOT", str(tmp_path))  # the older name
     assert project_root() == tmp_path.resolve()
     (tmp_path / "file").write_text("x")
     clean_env.setenv("THESIS_LAB_PROJECT", str(tmp_path / "file"))

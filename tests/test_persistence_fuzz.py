@@ -1,4 +1,4 @@
-"""Fuzzing the persistence layer (issue 11.3): hostile filtrations, coefficients and dimensions get a
+"""Fuzzing the persistence layer: hostile filtrations, coefficients and dimensions get a
 correct value or a ValueError/TypeError with a message — never another exception."""
 
 from __future__ import annotations

@@ -80,15 +80,12 @@ def test_bad_input():
         knn_curvature(pts, neighbour_weights=["gaussian"])
 
 
-def test_knn_weights_alias_is_deprecated_and_equal():
+def test_neighbour_weights_change_the_fit_and_other_refusals():
     # `weights` means the points' weights everywhere else; the neighbour weighting has its own name
     pts = sample_sphere(100, 3, seed=1)
-    with pytest.warns(FutureWarning, match="neighbour_weights"):
-        old = knn_curvature(pts, weights="gaussian")
-    np.testing.assert_array_equal(old, knn_curvature(pts, neighbour_weights="gaussian"))
-    assert not np.array_equal(old, knn_curvature(pts))  # the weighting matters
-    with pytest.raises(ValueError, match="not both"):
-        knn_shape_operator(pts, weights="gaussian", neighbour_weights="uniform")
+    assert not np.array_equal(knn_curvature(pts, neighbour_weights="gaussian"), knn_curvature(pts))
+    with pytest.raises(TypeError, match="weights"):
+        knn_shape_operator(pts, weights="gaussian")
     with pytest.raises(ValueError, match="n = 2"):
         knn_curvature(sample_sphere(100, 4, seed=0), kind="gaussian")
     with pytest.raises(ValueError, match="estimator"):

@@ -1,4 +1,4 @@
-"""No module of thesis_lib reaches into another module's private names (issue 13.3).
+"""No module of thesis_lib reaches into another module's private names.
 
 What two modules share is promoted to a public name (of an internal module, ``_kernels``,
 ``_validate``, ... if it is not for users): ``from .x import _name`` and ``x._name`` on another

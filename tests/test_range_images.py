@@ -220,21 +220,12 @@ def test_density_filter_keeps_densest_in_brute_force_order():
         density_filter(X, 0, 30)
     with pytest.raises(ValueError, match="NaN"):
         density_filter(np.full((5, 2), np.nan), 1, 30)
-    with pytest.raises(ValueError, match="percent is required"):
+    with pytest.raises(TypeError, match="percent"):
         density_filter(X, 5)
+    with pytest.raises(TypeError, match="'p'"):  # p is not the percentage's name
+        density_filter(X, 5, 30, p=30)
     with pytest.raises(ValueError, match="percentage"):
         density_filter(X, 5, True)
-
-
-def test_percent_replaces_p_which_warns():
-    rng = np.random.default_rng(4)
-    X = rng.normal(size=(50, 3))
-    kept = density_filter(X, 3, percent=20)
-    with pytest.warns(FutureWarning, match="percent="):
-        old = density_filter(X, 3, p=20)
-    np.testing.assert_array_equal(old, kept)
-    with pytest.raises(ValueError, match="not both"):
-        density_filter(X, 3, 20, p=20)
 
 
 # ----------------------------------------------------------------------------- DCT
@@ -268,9 +259,6 @@ def test_gradient_projection_of_pure_gradients_and_steps():
 def test_pipeline_on_small_synthetic_images():
     imgs = [synthetic_range_image(s, size=(48, 64)) for s in range(4)]
     out = range_patch_space(imgs, 2000, k=10, percent=30, seed=0)
-    with pytest.warns(FutureWarning, match="percent="):
-        old = range_patch_space(imgs, 2000, k=10, p=30, seed=0)
-    np.testing.assert_array_equal(old["dense"], out["dense"])
     np.testing.assert_array_equal(range_patch_space(imgs, 2000, k=10, seed=0)["dense"], out["dense"])  # default 30
     assert out["patches"].shape == (2000, 25)
     assert out["high"].shape == (400, 25)

@@ -55,7 +55,7 @@ def test_cli_prints_the_summary_first_then_the_table(capsys):
 @pytest.fixture
 def registry(tmp_path, monkeypatch):
     monkeypatch.setenv("THESIS_LAB_SHARED", str(shared_dir()))  # the thesis text orders the report
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     (tmp_path / "experiments" / "claims").mkdir(parents=True)
     res = tmp_path / "experiments" / "results" / "exp"
     res.mkdir(parents=True)
@@ -224,7 +224,7 @@ def test_summary_counts_by_status_chapter_and_provenance(registry):
 
 
 def test_corrupt_results_and_claims_give_clear_errors(registry, tmp_path, capsys):
-    """Regression (issue 11): a truncated results.json raised a raw JSONDecodeError in `report`."""
+    """A truncated results.json gives `report` a ResultsError naming the file, not a raw JSONDecodeError."""
     (tmp_path / "experiments" / "results" / "exp" / "results.json").write_text('{"count": 2881')
     from thesis_lib.lab.results import ResultsError
 

@@ -60,7 +60,7 @@ def test_figures_are_byte_identical_on_rerun(tmp_path):
 def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
     from thesis_lib.lab.results import figure
 
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
     monkeypatch.delenv(DEFAULT_RUN_ENV, raising=False)
     rec = Recorder("demo", "")
     fig, ax = plt.subplots()
@@ -72,7 +72,7 @@ def test_stored_figures_are_found_or_explained(tmp_path, monkeypatch):
 
 
 def test_default_run_redirect_leaves_stored_results_alone(tmp_path, monkeypatch):
-    monkeypatch.setenv("THESIS_LAB_ROOT", str(tmp_path / "root"))
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path / "root"))
     monkeypatch.delenv(DEFAULT_RUN_ENV, raising=False)
     Recorder("demo", "").record(stored=1)
     monkeypatch.setenv(DEFAULT_RUN_ENV, str(tmp_path / "scratch"))
@@ -119,7 +119,7 @@ def test_results_are_written_atomically(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("text", ['{"a": 1, "b":', "", "[1, 2]", '{"a": "x"}', '{"a": {"b": 1}}', "\udcff"])
 def test_corrupt_results_give_a_clear_error(tmp_path, text):
-    """Regression (issue 11): a truncated results.json raised a raw JSONDecodeError."""
+    """A truncated or malformed results.json gives a ResultsError naming the file, not a raw JSONDecodeError."""
     (tmp_path / "results.json").write_text(text, errors="surrogateescape")
     with pytest.raises(ResultsError, match="results.json (is not valid JSON|must hold a flat JSON object).*restore it"):
         load("demo", tmp_path)

@@ -31,6 +31,7 @@ from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import execute, runner
 from thesis_lib.lab.results import DEFAULT_RUN_ENV
 from thesis_lib.lab.runner import ParameterError
+from thesis_lib.lab.sweep import sweep
 
 TOY_DEFAULTS = {"n": 3, "x": 0.5, "label": "a", "flag": False, "sizes": [60, 100], "fail": False,
                 "sleep": 0.0, "data_name": "", "output_mb": 0.0, "work": 0}
@@ -91,13 +92,13 @@ HOSTILE_NAMES = ["../outside/evil", "/abs/toy", "toy/../toy", "experiments/toy",
 
 @pytest.mark.parametrize("name", HOSTILE_NAMES)
 def test_only_listed_experiment_names_are_accepted(root, name):
-    """Regression (issue 11): `run ../x/y` executed a notebook outside experiments/ and wrote outside runs/."""
+    """Only listed names run: `run ../x/y` never executes a notebook outside experiments/ nor writes outside runs/."""
     (root / "outside").mkdir()
     shutil.copy(root / "experiments" / "toy.ipynb", root / "outside" / "evil.ipynb")
     with pytest.raises(ParameterError, match="unknown experiment"):
         runner.run(name)
     with pytest.raises(ParameterError, match="unknown experiment"):
-        runner.sweep(name, {"n": [1]}, progress=False)
+        sweep(name, {"n": [1]}, progress=False)
     if name.endswith(".ipynb") or not name:
         return
     with pytest.raises(ParameterError, match="unknown experiment"):
@@ -119,7 +120,7 @@ def test_bad_parameters_never_start_a_kernel(root, monkeypatch):
     with pytest.raises(ParameterError):
         runner.run("toy", {"n": "x"})
     with pytest.raises(ParameterError):
-        runner.sweep("toy", {"n": ["1", "oops"]}, progress=False)
+        sweep("toy", {"n": ["1", "oops"]}, progress=False)
 
 
 @pytest.mark.parametrize(
@@ -137,7 +138,7 @@ def test_bad_parameters_never_start_a_kernel(root, monkeypatch):
     ],
 )
 def test_cli_reports_bad_input_with_exit_code_2(root, capsys, argv, message):
-    """Regression (issue 11): `-p seed 1 -p seed 2` exited 1 while other parameter errors exit 2."""
+    """Every parameter error, `-p seed 1 -p seed 2` among them, exits 2 with an error naming it."""
     assert lab_cli.main(argv) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: ") and message in err
@@ -147,7 +148,7 @@ def test_cli_reports_bad_input_with_exit_code_2(root, capsys, argv, message):
                                   ["sweep", "toy", "-p", "n", "1", "-j", "x"],
                                   ["sweep", "toy", "-p", "n", "1", "--retries", "-1"]])
 def test_cli_refuses_bad_counts(root, argv, capsys):
-    """Regression (issue 11): `-j 0` was accepted."""
+    """`-j 0`, `-j x` and `--retries -1` are refused (exit 2)."""
     assert lab_cli.main(argv) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: ") and "expected an integer" in err
@@ -155,12 +156,12 @@ def test_cli_refuses_bad_counts(root, argv, capsys):
 
 @pytest.mark.parametrize("argv", [["run", "toy", "-p", "n", "-:"], ["run"], ["bogus"], ["sweep", "toy", "--shard"]])
 def test_cli_usage_errors_are_one_clear_line(root, argv, capsys):
-    """Regression (fuzz): a value read as an option (`-p n -:`) made argparse exit from inside main()."""
+    """A value that reads as an option (`-p n -:`) is one clear error line from main(), not an argparse exit."""
     assert lab_cli.main(argv) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: ") and "--help" in err and "usage:" not in err
     with pytest.raises(ParameterError, match="jobs must be a positive integer"):
-        runner.sweep("toy", {"n": [1]}, jobs=0, progress=False)
+        sweep("toy", {"n": [1]}, jobs=0, progress=False)
 
 
 def test_run_writes_results_into_a_folder_named_by_the_parameters(root):
@@ -221,7 +222,7 @@ def test_store_executes_in_place_and_replaces_results_keeping_sweeps(root, monke
 
 
 def test_a_failing_store_leaves_committed_results_byte_identical(root):
-    """Regression (issue 11): store cleared results.json when the notebook started, then failed."""
+    """A store whose notebook fails leaves results.json and the rest of the committed folder unchanged."""
     folder = commit_fake_results(root)
     before, notebook = tree_bytes(folder), (root / "experiments" / "toy.ipynb").read_bytes()
     set_default(root, "toy", "fail", "True")
@@ -240,7 +241,7 @@ def test_store_takes_book_notebooks_by_path(root):
 
 
 def test_cli_run_is_quiet_when_piped_and_starts_kernels_without_the_tcp_warning(root):
-    """Issue 10: no `[IPKernelApp] WARNING | Kernel is running over TCP without encryption`, nothing
+    """No `[IPKernelApp] WARNING | Kernel is running over TCP without encryption`, nothing
     extra on a pipe: the result lines only."""
     proc = cli(root, "run", "toy", "-p", "n", "2")
     assert proc.returncode == 0, proc.stderr
@@ -250,7 +251,7 @@ def test_cli_run_is_quiet_when_piped_and_starts_kernels_without_the_tcp_warning(
 
 
 def test_cli_run_shows_progress_on_a_terminal(root):
-    """Issue 10: `thesis-lab run` shows which cell runs (n of m) and the elapsed time on a terminal."""
+    """`thesis-lab run` shows which cell runs (n of m) and the elapsed time on a terminal."""
     controller, terminal = pty.openpty()
     fcntl.ioctl(terminal, termios.TIOCSWINSZ, struct.pack("HHHH", 24, 100, 0, 0))  # a terminal 100 wide
     proc = subprocess.Popen(popen_args(root, "run", "toy"), env=cli_env(root), stdout=subprocess.PIPE, stderr=terminal)
@@ -299,7 +300,7 @@ def test_cli_works_from_any_folder_with_project(root, tmp_path):
 
 
 def test_kernels_start_with_transport_encryption_so_ipykernel_does_not_warn(tmp_path):
-    """Issue 10: the cause of `Kernel is running over TCP without encryption` is a manager that gives
+    """The cause of `Kernel is running over TCP without encryption` is a manager that gives
     the kernel no CurveZMQ keys; LabKernelManager provisions them (the kernelspec declares support)."""
     import asyncio
 

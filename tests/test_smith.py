@@ -133,7 +133,7 @@ def test_bad_matrices(bad, message):
 
 
 def test_uint64_entries_beyond_int64_are_exact():
-    # issue 11: uint64 entries >= 2**63 used to wrap around to negative int64 values
+    # uint64 entries >= 2**63 do not fit in int64: they must not wrap around to negative values
     big = 2**63 + 1  # divisible by 3
     a = np.array([[big, 0], [0, 3]], dtype=np.uint64)
     assert [int(x) for x in smith_normal_form(a)] == [3, big] == sympy_invariants(a.astype(object))
@@ -160,8 +160,8 @@ def test_huge_entries_match_sympy(m, n, seed, bits):
 @pytest.mark.parametrize("primes", [1, 2, 3])
 @pytest.mark.parametrize("shape", [(1, 1), (2, 3), (4, 4)])
 def test_entries_divisible_by_the_first_crt_primes(primes, shape):
-    """Regression (CI, hypothesis seed 1031066): the 1 × 1 matrix [[2²⁶ − 5]] is zero modulo the first
-    CRT prime, whose rank profile was then empty and crashed the exact solver."""
+    """Matrices whose entries are all divisible by the first CRT primes (zero modulo each, an empty rank
+    profile there; e.g. [[2²⁶ − 5]] modulo the first) get sympy's invariants."""
     from thesis_lib._modular import crt_primes
 
     q = int(np.prod([int(x) for x in crt_primes(primes)], dtype=object))

@@ -64,7 +64,7 @@ def test_a_result_named_like_a_parameter_gets_its_own_column(root):
 
 
 def test_duplicate_values_run_once(root):
-    """Regression (issue 11): two identical values ran concurrently in the same folder."""
+    """Values that are equal after parsing run once (never two runs in the same folder at once)."""
     assert [p["n"] for p in expand_grid("toy", {"n": [1, "1", " 1", 2, 1]})] == [1, 2]
     runs, table = sweep("toy", {"n": ["1", "1", "01"]}, jobs=2, progress=False)
     assert len(runs) == 1 and len(table_rows(table)) == 1

@@ -1,4 +1,4 @@
-"""RipsDiagrams: the scikit-learn-style transformer of point clouds into persistence diagrams (issue 13.6)."""
+"""RipsDiagrams: the scikit-learn-style transformer of point clouds into persistence diagrams."""
 
 from __future__ import annotations
 

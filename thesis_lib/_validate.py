@@ -15,7 +15,6 @@ from __future__ import annotations
 import math
 import numbers
 import operator
-import warnings
 
 import numpy as np
 
@@ -45,7 +44,6 @@ __all__ = [
     "check_real",
     "check_indices",
     "check_simplices",
-    "resolve_alias",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -346,22 +344,13 @@ def check_coefficients(coefficients, *, field: bool = False, max_prime: int = MA
     return c
 
 
-def resolve_coefficients(coefficients, p, *, default: int, field: bool = False, max_prime: int = MAX_PRIME,
-                         stacklevel: int = 3) -> int:
-    """The ``coefficients`` argument, honouring the deprecated alias ``p=`` with a ``FutureWarning``.
+def resolve_coefficients(coefficients, *, default: int, field: bool = False, max_prime: int = MAX_PRIME) -> int:
+    """The ``coefficients`` argument checked by :func:`check_coefficients`; ``default`` when it is None.
 
-    Call as ``resolve_coefficients(coefficients, p, default=2)`` from a public function whose
-    signature is ``(..., coefficients=None, *, p=None)``.
+    Call as ``resolve_coefficients(coefficients, default=2)`` from a public function whose
+    signature is ``(..., coefficients=None, ...)``.
     """
-    if p is not None:
-        if coefficients is not None:
-            raise InvalidTypeError("give coefficients= only (p= is its deprecated alias), not both")
-        warnings.warn("p= is deprecated; use coefficients= (0 = Z, a prime p = Z/p)", FutureWarning,
-                      stacklevel=stacklevel)
-        coefficients = p
-    if coefficients is None:
-        coefficients = default
-    return check_coefficients(coefficients, field=field, max_prime=max_prime)
+    return check_coefficients(default if coefficients is None else coefficients, field=field, max_prime=max_prime)
 
 
 # ---------------------------------------------------------------------------------------- geometry
@@ -440,17 +429,3 @@ def check_simplices(simplices, n_vertices: int | None = None, name: str = "simpl
             row = int(np.argmax(rep))
             raise ValueError(f"{name}: row {row} {arr[row].tolist()} repeats a vertex")
     return arr
-
-
-def resolve_alias(value, alias, *, name: str, alias_name: str, default, hint: str = "", stacklevel: int = 3):
-    """``value``, or the deprecated keyword ``alias`` (with a ``FutureWarning``) when only that is given.
-
-    Call as ``resolve_alias(area, kind, name="area", alias_name="kind", default="mixed")`` from a
-    public function whose signature keeps ``kind=None`` one release for old callers.
-    """
-    if alias is not None:
-        if value is not None:
-            raise InvalidTypeError(f"give {name}= only ({alias_name}= is its deprecated alias), not both")
-        warnings.warn(f"{alias_name}= is deprecated{hint}; use {name}=", FutureWarning, stacklevel=stacklevel)
-        value = alias
-    return default if value is None else value

@@ -31,7 +31,6 @@ The pipeline then follows Adams–Carlsson (after Lee–Pedersen–Mumford 2003)
 
 from __future__ import annotations
 
-import warnings
 from collections.abc import Sequence
 
 import numpy as np
@@ -538,17 +537,8 @@ def kth_neighbour_distance(X: npt.ArrayLike, k: int) -> np.ndarray:
     return out
 
 
-def _resolve_percent(percent, p, default: float | None) -> float:
-    """The ``percent`` argument, honouring its deprecated alias ``p=`` with a ``FutureWarning``."""
-    if p is not None:
-        if percent is not None:
-            raise ValueError("give percent= only (p= is its deprecated alias), not both")
-        warnings.warn("p= is deprecated here; use percent= (a percentage in (0, 100])", FutureWarning, stacklevel=3)
-        percent = p
-    if percent is None:
-        if default is None:
-            raise ValueError("percent is required: the percentage of densest points to keep")
-        percent = default
+def _check_percent(percent) -> float:
+    """``percent`` as a float, a percentage in (0, 100]."""
     if isinstance(percent, bool) or not isinstance(percent, (int, float, np.integer, np.floating)) \
             or not (0 < percent <= 100):
         raise ValueError(f"percent is a percentage in (0, 100], got {percent!r}")
@@ -556,7 +546,7 @@ def _resolve_percent(percent, p, default: float | None) -> float:
 
 
 def density_filter(
-    X: npt.ArrayLike, k: int, percent: float | None = None, return_index: bool = False, *, p: float | None = None
+    X: npt.ArrayLike, k: int, percent: float, return_index: bool = False
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """X(k, percent): the ``percent`` % of points with the smallest distance to their k-th nearest neighbour.
 
@@ -570,11 +560,9 @@ def density_filter(
     k : int
         The neighbour whose distance measures density (the point itself is not counted), ``k < n``.
     percent : float
-        The percentage of points kept, in (0, 100]; required.
+        The percentage of points kept, in (0, 100].
     return_index : bool
         Also return the indices of the kept points.
-    p : float, optional
-        Deprecated alias of ``percent`` (one release; warns with a ``FutureWarning``).
 
     Returns
     -------
@@ -586,9 +574,9 @@ def density_filter(
     Raises
     ------
     ValueError
-        A missing or bad ``percent``, both ``percent`` and ``p``, or as :func:`kth_neighbour_distance`.
+        A ``percent`` outside (0, 100], or as :func:`kth_neighbour_distance`.
     """
-    percent = _resolve_percent(percent, p, None)
+    percent = _check_percent(percent)
     rho = kth_neighbour_distance(X, k)
     m = max(1, int(round(percent / 100 * rho.shape[0])))
     idx = np.sort(np.argsort(rho, kind="stable")[:m])
@@ -667,12 +655,10 @@ def range_patch_space(
     images: Sequence[npt.ArrayLike],
     n_patches: int,
     k: int = 300,
-    percent: float | None = None,
+    percent: float = 30.0,
     size: int = 5,
     top: float = 0.2,
     seed: int = 0,
-    *,
-    p: float | None = None,
 ) -> dict[str, np.ndarray]:
     """The whole pipeline of Adams–Carlsson: sample, log range, keep high contrast, normalise, X(k, percent).
 
@@ -686,16 +672,14 @@ def range_patch_space(
         The number of patches sampled (:func:`sample_patches`).
     k : int
         The density neighbour (:func:`density_filter`).
-    percent : float, optional
-        The percentage of densest patches kept; None: 30 (the thesis's X⁵(300, 30)).
+    percent : float
+        The percentage of densest patches kept (30: the thesis's X⁵(300, 30)).
     size : int
         The patch side.
     top : float
         The fraction of highest-contrast patches kept (:func:`high_contrast`).
     seed : int
         Seed of the patch sample.
-    p : float, optional
-        Deprecated alias of ``percent`` (warns).
 
     Returns
     -------
@@ -708,7 +692,7 @@ def range_patch_space(
     ValueError
         As the steps above.
     """
-    percent = _resolve_percent(percent, p, 30.0)
+    percent = _check_percent(percent)
     raw = sample_patches(images, n_patches, size=size, seed=seed)
     high = normalise(high_contrast(raw, top=top))
     dense = density_filter(high, k, percent)

@@ -27,7 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import vertex_areas as _vertex_areas_core
-from .._validate import InvalidTypeError, resolve_alias
+from .._validate import InvalidTypeError
 from .manifold import checked_mesh
 from .validate import ASPECT_BOUND, Mesh
 
@@ -207,36 +207,7 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
     return np.bincount(s.ravel(), weights=share.ravel(), minlength=nv)
 
 
-def resolve_area(area: str | None, kind: str | None, *, stacklevel: int = 3) -> str:
-    """The ``area`` argument, honouring the deprecated alias ``kind=`` with a ``FutureWarning``.
-
-    Thesis: §3.3.2 (Voronoi and barycentric regions).
-
-    Parameters
-    ----------
-    area : {"mixed", "voronoi", "barycentric"} or None
-        The vertex region asked for; None when not given.
-    kind : str or None
-        Deprecated alias of ``area``; giving it warns with a ``FutureWarning``.
-    stacklevel : int, default 3
-        Stack level of the warning, counted from the caller of this function.
-
-    Returns
-    -------
-    str
-        The checked area name; ``"mixed"`` when neither ``area`` nor ``kind`` is given.
-
-    Raises
-    ------
-    ValueError
-        If both ``area`` and ``kind`` are given, or the name is not one of :data:`AREA_KINDS`.
-    """
-    return check_area(resolve_alias(area, kind, name="area", alias_name="kind", default="mixed",
-                                    stacklevel=stacklevel + 1))
-
-
-def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | None = None, *,
-                 kind: str | None = None) -> np.ndarray:
+def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str = "mixed") -> np.ndarray:
     """Area (hyperarea) of each vertex's region: mixed, Voronoi (circumcentric) or barycentric.
 
     Thesis: §3.3.2 (Voronoi and barycentric regions, the formula for A_vor).
@@ -248,8 +219,6 @@ def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | 
         Top simplices of a simplicial pseudo-manifold (checked).
     area : {"mixed", "voronoi", "barycentric"}, default "mixed"
         See the module docstring; ``"mixed"`` needs n = 2.
-    kind : str or None, default None
-        Deprecated alias of ``area`` (FutureWarning; removed in the next release).
 
     Returns
     -------
@@ -263,5 +232,5 @@ def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str | 
         On an invalid mesh (not a pseudo-manifold, degenerate simplices, ...), an unknown area, or
         ``"mixed"`` with n ≠ 2.
     """
-    area = resolve_area(area, kind)
+    area = check_area(area)
     return vertex_areas_of_mesh(checked_mesh(vertices, simplices), area)

@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy.spatial import cKDTree
 
-from .._validate import as_points, check_int, resolve_alias
+from .._validate import as_points, check_int
 from .shape import ShapeOperator
 
 __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS"]
@@ -30,8 +30,7 @@ __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS
 KNN_WEIGHTS = ("uniform", "gaussian")
 
 
-def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights: str | None = None,
-                       weights: str | None = None) -> ShapeOperator:
+def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights: str = "uniform") -> ShapeOperator:
     """Least-squares shape operator at every point from its ``k`` nearest neighbours.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (normal curvatures (3.24) fitted by least
@@ -47,9 +46,6 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights:
     neighbour_weights : {"uniform", "gaussian"}, default "uniform"
         Weights w_ij of the neighbours in the least-squares fit: ``"gaussian"`` is
         exp(−‖x_j − x_i‖² / h²), h the distance to the k-th neighbour.
-    weights : str, optional
-        Deprecated alias of ``neighbour_weights`` (FutureWarning; ``weights`` are the points'
-        weights everywhere else).
 
     Returns
     -------
@@ -63,8 +59,6 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights:
         On invalid or duplicate points, points in R^1, a ``k`` out of range or unknown
         ``neighbour_weights``.
     """
-    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
-                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
     pts = as_points(points, min_points=3, allow_duplicates=False)
     npts, d = pts.shape
     n = d - 1
@@ -105,8 +99,8 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights:
     return ShapeOperator(tensor, basis, normal)
 
 
-def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, neighbour_weights: str | None = None,
-                  weights: str | None = None) -> np.ndarray:
+def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16,
+                  neighbour_weights: str = "uniform") -> np.ndarray:
     """|H| = |tr S| / n (``kind="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
     :func:`knn_shape_operator`.
 
@@ -122,8 +116,6 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, nei
         Number of neighbours, as in :func:`knn_shape_operator`.
     neighbour_weights : {"uniform", "gaussian"}, default "uniform"
         Weights of the neighbours in the fit, as in :func:`knn_shape_operator`.
-    weights : str, optional
-        Deprecated alias of ``neighbour_weights`` (FutureWarning).
 
     Returns
     -------
@@ -135,8 +127,6 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16, nei
     ValueError
         As :func:`knn_shape_operator`; also on an unknown ``kind`` or ``"gaussian"`` with n ≠ 2.
     """
-    neighbour_weights = resolve_alias(neighbour_weights, weights, name="neighbour_weights", alias_name="weights",
-                                      default="uniform", hint=" here (weights are the points' weights everywhere else)")
     so = knn_shape_operator(points, k=k, neighbour_weights=neighbour_weights)
     n = so.tensor.shape[1]
     if kind == "mean":

@@ -18,7 +18,6 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import resolve_alias
 from .manifold import checked_mesh
 from .validate import Mesh, check_orientation
 
@@ -85,11 +84,7 @@ def _check_normals(normals) -> str:
     return normals
 
 
-def _edge_weights(edge_weights, weights) -> str:
-    """``edge_weights``, honouring the deprecated alias ``weights=`` (FutureWarning)."""
-    edge_weights = resolve_alias(edge_weights, weights, name="edge_weights", alias_name="weights",
-                                 default="voronoi", stacklevel=4,
-                                 hint=" here (weights are the points' weights everywhere else)")
+def _check_edge_weights(edge_weights) -> str:
     if not isinstance(edge_weights, str) or edge_weights not in EDGE_WEIGHTS:
         raise ValueError(f"unknown edge_weights {edge_weights!r}: use 'voronoi' or 'uniform'")
     return edge_weights
@@ -180,8 +175,8 @@ def _tangent_basis(nrm: np.ndarray) -> np.ndarray:
     return np.stack([t1, t2], axis=1)
 
 
-def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str | None = None,
-                   normals: str = "max", *, weights: str | None = None) -> ShapeOperator:
+def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str = "voronoi",
+                   normals: str = "max") -> ShapeOperator:
     """Weighted least-squares shape operator at every vertex of a triangle mesh.
 
     Thesis: §3.3.4 "Estimating the Shape Operator" (minimise Σ_j w_ij (d_ijᵀ S d_ij − κ_ij)²).
@@ -202,8 +197,6 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
         The thesis's Voronoi weights w_ij, or all w_ij = 1.
     normals : {"max", "area"}
         Vertex normals, see :func:`vertex_normals`.
-    weights : deprecated alias of ``edge_weights`` (FutureWarning): ``weights`` means the points'
-        weights everywhere else in the library.
 
     Returns
     -------
@@ -216,7 +209,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     ValueError
         On an invalid mesh, n ≠ 2, incoherent orientation or unknown ``edge_weights``/``normals``.
     """
-    edge_weights = _edge_weights(edge_weights, weights)
+    edge_weights = _check_edge_weights(edge_weights)
     normals = _check_normals(normals)
     mesh = _oriented_mesh(vertices, faces)
     v = mesh.vertices
@@ -252,15 +245,15 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     return ShapeOperator(tensor, basis, nrm)
 
 
-def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str | None = None,
-                         normals: str = "max", *, weights: str | None = None) -> PrincipalCurvatures:
+def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str = "voronoi",
+                         normals: str = "max") -> PrincipalCurvatures:
     """Principal curvatures κ1 ≤ κ2 and directions: eigenpairs of the least-squares shape operator.
 
     Thesis: Definition 3.3 and §3.3.4 (the principal curvatures are the eigenvalues of S).
 
     Parameters
     ----------
-    vertices, faces, edge_weights, normals, weights
+    vertices, faces, edge_weights, normals
         As in :func:`shape_operator`.
 
     Returns
@@ -269,7 +262,7 @@ def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_wei
         ``k1``, ``k2`` (nv,) and unit directions ``d1``, ``d2`` (nv, 3) in the tangent plane; NaN where
         :func:`shape_operator` is NaN.  Signs as in the module docstring.
     """
-    so = shape_operator(vertices, faces, _edge_weights(edge_weights, weights), normals)
+    so = shape_operator(vertices, faces, edge_weights, normals)
     nv = len(so.tensor)
     k = np.full((nv, 2), np.nan)
     vec = np.full((nv, 2, 2), np.nan)

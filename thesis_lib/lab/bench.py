@@ -3,7 +3,7 @@
 The files are written by the harness (``benchmarks/harness.py``): ``{"meta": ..., "rows": [...]}``
 with the commit, date, load average and cores of the run; every time ratio is a row key starting
 with ``ratio_`` (the median over interleaved rounds of ours / peer, below 1 = we are faster) and the
-number of rounds is ``rounds``.  Older files are a bare list of rows (no provenance).
+number of rounds is ``rounds``.  A file that is a bare list of rows has no provenance.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
-from .paths import repo_root
+from .paths import project_root
 from .tables import markdown_table
 
 if TYPE_CHECKING:  # matplotlib is imported only when a figure is drawn
@@ -82,7 +82,7 @@ def header(column: str) -> str:
 
 
 def _dir() -> Path:
-    return repo_root() / "benchmarks" / "results"
+    return project_root() / "benchmarks" / "results"
 
 
 def topics() -> list[str]:
@@ -142,7 +142,7 @@ def meta(topic: str) -> dict:
     Returns
     -------
     dict
-        The file's ``meta`` table; ``{}`` for an older file (a bare list of rows).
+        The file's ``meta`` table; ``{}`` for a file that is a bare list of rows.
 
     Raises
     ------
@@ -165,12 +165,12 @@ def provenance(topic: str) -> str:
     -------
     str
         Commit, date, cores and the load average at the start and end of the run, in Markdown (and
-        the same for each row re-run later, which carries its own run); for an older file without
+        the same for each row re-run later, which carries its own run); for a file without
         provenance, a sentence saying so.
     """
     m = meta(topic)
     if not m:
-        return f"`{topic}`: stored without provenance (an older harness): re-run `make bench`."
+        return f"`{topic}`: stored without provenance: re-run `make bench`."
     load_avg = m.get("load_average", [None])[0]
     end = m.get("load_average_end", [None])[0]
     text = (f"`{topic}`: commit `{str(m.get('commit'))[:10]}`, {m.get('date')}, {m.get('cores')} cores, "

@@ -4,7 +4,7 @@ The project is any folder that holds ``experiments/`` and ``data/manifest.toml``
 unpacked archive, a copy on a cluster node).  It is found, in this order, from
 
 1. ``--project DIR`` on the command line (which sets ``THESIS_LAB_PROJECT``),
-2. the environment variable ``THESIS_LAB_PROJECT`` (``THESIS_LAB_ROOT`` is an older alias),
+2. the environment variable ``THESIS_LAB_PROJECT``,
 3. the current folder or the nearest folder above it that is a project,
 4. the folder the package itself was installed from (an editable install inside a checkout).
 """
@@ -18,7 +18,6 @@ __all__ = ["PROJECT_ENV", "ProjectError", "is_project", "project_root", "repo_ro
 
 #: environment variable naming the project folder (``thesis-lab --project DIR`` sets it)
 PROJECT_ENV = "THESIS_LAB_PROJECT"
-_LEGACY_ENV = "THESIS_LAB_ROOT"
 
 
 class ProjectError(ValueError):
@@ -48,21 +47,20 @@ def project_root() -> Path:
     Returns
     -------
     pathlib.Path
-        The project folder, resolved.  A folder named by ``THESIS_LAB_PROJECT`` (or
-        ``THESIS_LAB_ROOT``) is returned as named, without checking that it holds a project.
+        The project folder, resolved.  A folder named by ``THESIS_LAB_PROJECT`` is returned as
+        named, without checking that it holds a project.
 
     Raises
     ------
     ProjectError
         If the environment names a file, or no project is found.
     """
-    for var in (PROJECT_ENV, _LEGACY_ENV):
-        named = os.environ.get(var)
-        if named:
-            folder = Path(named).expanduser().resolve()
-            if folder.exists() and not folder.is_dir():
-                raise ProjectError(f"{var}={named!r} is a file, not a project folder")
-            return folder
+    named = os.environ.get(PROJECT_ENV)
+    if named:
+        folder = Path(named).expanduser().resolve()
+        if folder.exists() and not folder.is_dir():
+            raise ProjectError(f"{PROJECT_ENV}={named!r} is a file, not a project folder")
+        return folder
     here = Path.cwd().resolve()
     for folder in (here, *here.parents):
         if is_project(folder):

@@ -21,7 +21,6 @@ import sys
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from .._optional import require
 from . import atomic
@@ -39,9 +38,6 @@ from .experiments import (
 from .paths import PROJECT_ENV, project_root
 from .results import DEFAULT_RUN_ENV, RESULTS_FILE, ResultsError, check_table, parse_json, read_json, results_dir
 
-if TYPE_CHECKING:  # at run time the module __getattr__ below (.sweep imports this module)
-    from .sweep import collect, stored_sweeps, sweep
-
 __all__ = [
     "ParameterError",
     "OUTPUT_PARAMETER",
@@ -57,9 +53,6 @@ __all__ = [
     "write_run",
     "store",
     "RunResult",
-    "sweep",
-    "collect",
-    "stored_sweeps",
 ]
 
 COMPLETE_FILE = "complete.json"
@@ -447,13 +440,3 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
     finally:
         shutil.rmtree(staging_root, ignore_errors=True)
     return nb_path
-
-
-def __getattr__(attr: str):
-    """``runner.sweep``, ``runner.collect`` and ``runner.stored_sweeps`` live in :mod:`.sweep`."""
-    if attr in ("sweep", "collect", "stored_sweeps"):
-        from . import sweep as _sweep
-
-        return getattr(_sweep, attr)
-    raise AttributeError(f"module {__name__!r} has no attribute {attr!r}")
-

@@ -116,11 +116,6 @@ class MorseReduction:
     coefficients: int
 
     @property
-    def p(self) -> int:
-        """Deprecated name of :attr:`coefficients`."""
-        return self.coefficients
-
-    @property
     def n_critical(self) -> int:
         """Number of critical simplices (cells of the Morse complex)."""
         return int(sum(c.shape[0] for c in self.critical))
@@ -131,8 +126,8 @@ class MorseReduction:
         return self.n_critical / self.n_cells
 
 
-def morse_reduce(filtration: ComplexLike, coefficients: int | None = None, pairs: Pairs | None = None, *,
-                 p: int | None = None) -> MorseReduction:
+def morse_reduce(filtration: ComplexLike, coefficients: int | None = None,
+                 pairs: Pairs | None = None) -> MorseReduction:
     """Reduce a filtration to its filtered Morse complex (critical simplices + Morse boundary).
 
     Thesis: Theorems 4.41–4.42 (Morse complex on critical cells, boundary by gradient paths).
@@ -147,8 +142,6 @@ def morse_reduce(filtration: ComplexLike, coefficients: int | None = None, pairs
     pairs : iterable of (sigma, tau), optional
         An acyclic matching to use instead of :func:`filtration_matching`, e.g. the
         ``"lower-star"`` matching of a lower-star filtration; every pair must have equal values.
-    p : int, optional
-        Deprecated alias of ``coefficients`` (warns).
 
     Returns
     -------
@@ -161,7 +154,7 @@ def morse_reduce(filtration: ComplexLike, coefficients: int | None = None, pairs
         A pair joining different filtration values (the first one named), an invalid or cyclic
         matching, or coefficients neither 0 nor a prime.
     """
-    p = resolve_coefficients(coefficients, p, default=2)
+    p = resolve_coefficients(coefficients, default=2)
     filt = as_complex(filtration)
     cx, vals = _cells_and_values(filt)
     if pairs is None:
@@ -182,8 +175,7 @@ def morse_reduce(filtration: ComplexLike, coefficients: int | None = None, pairs
     return MorseReduction(critical, values, mats, cx.n, p)
 
 
-def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None, *,
-                        p: int | None = None) -> Barcode:
+def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None) -> Barcode:
     """Barcode of the reduced (Morse) filtered complex; equals the filtration's barcode.
 
     Thesis: Theorems 4.39 and 4.41 applied to every sublevel complex; Algorithm 2 for the reduction.
@@ -195,8 +187,6 @@ def reduced_persistence(reduction: MorseReduction, coefficients: int | None = No
     coefficients : int, optional
         The prime field of the persistence (default: the reduction's own, or 2 for a reduction over
         Z); a reduction mod p allows only p.
-    p : int, optional
-        Deprecated alias of ``coefficients`` (warns).
 
     Returns
     -------
@@ -214,7 +204,7 @@ def reduced_persistence(reduction: MorseReduction, coefficients: int | None = No
     if not isinstance(reduction, MorseReduction):
         raise InvalidTypeError(f"expected a MorseReduction (from morse_reduce), got {type(reduction).__name__}")
     default = reduction.coefficients or 2
-    p = resolve_coefficients(coefficients, p, default=default, field=True)
+    p = resolve_coefficients(coefficients, default=default, field=True)
     if reduction.coefficients not in (0, p):
         raise ValueError(f"the reduction was computed mod {reduction.coefficients}, cannot take persistence mod {p}")
     return chain_persistence(reduction.values, reduction.boundaries, p)

@@ -124,7 +124,7 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
     """
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
     dims = _dims(bifiltration, dims)
-    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     _check_memory(len(dims) * eps.size * kappa.size, "Hilbert-function")
     out = np.zeros((len(dims), eps.size, kappa.size), dtype=np.int64)
     eps_grades = [g[:, 0] for g in bifiltration.grades]
@@ -180,7 +180,7 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
     """
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
     dim = _dims(bifiltration, [dim])[0]
-    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     ne, nk = eps.size, kappa.size
     _check_memory(ne * nk * ne * nk, "rank-invariant")
     out = np.zeros((ne, nk, ne, nk), dtype=np.int64)
@@ -272,5 +272,5 @@ def fibered_barcode(bifiltration: Bifiltration, base: npt.ArrayLike, direction: 
     ValueError
         A bad line (see :func:`line_filtration`) or coefficients that are not a prime.
     """
-    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     return persistence(line_filtration(bifiltration, base, direction), p)

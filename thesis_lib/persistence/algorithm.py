@@ -34,7 +34,7 @@ __all__ = ["compute_intervals", "trace_matrices"]
 
 
 def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
-                      trace: list[dict[str, Any]] | None = None, p: int | None = None) -> Barcode:
+                      trace: list[dict[str, Any]] | None = None) -> Barcode:
     """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
 
     Thesis: Algorithms 1–2, §2.3.5 (after Zomorodian and Carlsson), O(m³) in the number of simplices m.
@@ -55,8 +55,6 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
         ``result`` (the reduced ``d``), ``marked`` and ``pivot``.
         Indices ``i`` refer to the algorithm's order σ^0 < ... < σ^{m−1}; the first entry also holds
         ``order``, the list of all simplices in that order.
-    p : int, optional
-        Deprecated alias of ``coefficients`` (warns).
 
     Returns
     -------
@@ -71,7 +69,7 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
         A complex :func:`~thesis_lib.filtration.as_complex` refuses, or ``coefficients`` not a prime.
     """
     K = as_complex(filtration)
-    p = resolve_coefficients(coefficients, p, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
 
     # "First, sort the simplices by dimension and then by degree.  The ordering between simplices
     #  with the same dimension and degree will be irrelevant."  We keep the filtration's own order

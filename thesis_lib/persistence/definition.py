@@ -59,7 +59,7 @@ def persistent_betti_by_definition(filtration: Filtration | Iterable[Any], l: fl
         ``k`` negative or NaN, ``dim`` negative, or ``coefficients`` not a prime.
     """
     K = as_complex(filtration)
-    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     l, k = float(l), float(k)
     if np.isnan(l) or np.isnan(k) or k < 0:
         raise ValueError(f"l must be a number and k a non-negative number, got l = {l}, k = {k}")

@@ -59,7 +59,7 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
 
 # ---------------------------------------------------------------------------- driver
 def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
-                stats: dict[int, dict[str, int]] | None = None, p: int | None = None) -> Barcode:
+                stats: dict[int, dict[str, int]] | None = None) -> Barcode:
     """Barcode of a filtration over Z/p by the fast engine (same result as :func:`compute_intervals`).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
@@ -74,8 +74,6 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     stats : dict, optional
         Filled per dimension d < dim K with ``{"columns": ..., "additions": ...}`` (columns of the
         reduction after clearing, column additions).
-    p : int, optional
-        Deprecated alias of ``coefficients`` (warns).
 
     Returns
     -------
@@ -100,7 +98,7 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
     """
     K = as_complex(filtration)
-    p = resolve_coefficients(coefficients, p, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     D = K.dimension
     # the order within each dimension (value, then index); the top dimension is never a column
     orders = [np.argsort(K.values[d], kind="stable") for d in range(D)]

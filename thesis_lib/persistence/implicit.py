@@ -220,8 +220,8 @@ def rips_persistence(
         and ``additions``.
     n_threads : int, optional
         Threads for assembling the columns and finding the apparent pairs (used from about
-        ``PARALLEL_MIN`` simplices of a dimension on); None: ``OMP_NUM_THREADS`` when set, else every core.  The barcode does not
-        depend on it.
+        ``PARALLEL_MIN`` simplices of a dimension on); None: ``OMP_NUM_THREADS`` when set, else
+        every core.  The barcode does not depend on it.
 
     Returns
     -------
@@ -239,7 +239,7 @@ def rips_persistence(
     max_dim = check_max_dim(max_dim, maximum=MAX_DIM)
     if max_dim < 1:
         raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
-    p = resolve_coefficients(coefficients, None, default=2, field=True)
+    p = resolve_coefficients(coefficients, default=2, field=True)
     threads = 0 if n_threads is None else check_int(n_threads, "n_threads", minimum=1)
     n, indptr, nbr, length = rips_graph(points, max_radius=max_radius, distance_matrix=distance_matrix)
     asked, max_dim = max_dim, min(max_dim, n + 1)  # no simplex has more than n vertices: H_k = 0 for k >= n

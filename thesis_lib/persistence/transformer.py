@@ -1,4 +1,4 @@
-"""Persistence diagrams of many point clouds, in scikit-learn's estimator style (issue 13.6).
+"""Persistence diagrams of many point clouds, in scikit-learn's estimator style.
 
 :class:`RipsDiagrams` is a stateless transformer: ``fit`` checks the parameters, ``transform`` maps
 a list of point clouds to their Vietoris–Rips persistence diagrams (the implicit engine,
