@@ -161,6 +161,18 @@ def test_n2_equals_cotangent_formula_and_libigl():
     np.testing.assert_allclose(mean_curvature_vector(x, f, method="cot"), -(L @ x), atol=1e-12)
 
 
+def test_mean_curvature_vector_points_outwards_on_a_convex_surface():
+    """The area gradient grows the area: on a convex sphere mesh it has a positive component along
+    the outward normal at every vertex (and a finite step along it does grow the area)."""
+    x, f = sphere_hull(300, seed=3)
+    vec = mean_curvature_vector(x, f)
+    assert np.all(np.einsum("ij,ij->i", vec, x) > 0)
+    step = 1e-4 * np.abs(vec).max()
+    grown = x.copy()
+    grown[0] += step * vec[0] / np.linalg.norm(vec[0])
+    assert total_hyperarea(grown, f) > total_hyperarea(x, f)
+
+
 @settings(deadline=None, max_examples=15)
 @given(seed=st.integers(0, 10_000), n=st.sampled_from([2, 3, 4]), scale=st.floats(0.1, 10.0))
 def test_vector_translation_and_scaling_invariants(seed, n, scale):

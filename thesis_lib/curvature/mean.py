@@ -190,8 +190,10 @@ def mean_curvature_vector(vertices: npt.ArrayLike, simplices: npt.ArrayLike, met
     Returns
     -------
     ndarray, shape (nv, n + 1)
-        ∇_p area M; it points inwards on convex parts (≈ −n H N · area).  Defined at boundary
-        vertices too (it is still the area gradient) and zero at isolated vertices.
+        ∇_p area M, the direction in which moving p grows the area fastest: it points outwards on
+        convex parts (≈ n H N · area(p) with N the outward unit normal; for n = 2 it equals libigl's
+        −L V, L the cotangent Laplacian).  Defined at boundary vertices too (it is still the area
+        gradient) and zero at isolated vertices.
 
     Raises
     ------
