@@ -5,6 +5,12 @@ raises ``ValueError`` (a value that cannot be used) or :class:`InvalidTypeError`
 kind; both a ``ValueError`` and a ``TypeError``), with a message that names the argument and the
 problem.  Internal kernels trust what comes out.
 
+Some inputs are parsed into small frozen records that the internal functions take instead of raw
+values, so nothing is checked twice: :class:`Points` (the array and its exact power-of-two scaling,
+shared by every Rips path), :class:`Edges` (a sparse distance matrix as an edge list) and
+:class:`Field` (0 = Z or a prime p).  A public function parses each argument once, in one line, and
+passes the records inward.
+
 The names follow the project's vocabulary (DESIGN.md, ``book/api.md``): ``points``,
 ``max_radius`` (ε, diameter ≤ 2ε), ``max_dim``, ``weights`` (the points' squared radii),
 ``coefficients`` (0 = Z, a prime p = Z/p), ``seed``.
@@ -15,6 +21,7 @@ from __future__ import annotations
 import math
 import numbers
 import operator
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -22,6 +29,15 @@ __all__ = [
     "as_distance_matrix",
     "InvalidTypeError",
     "as_points",
+    "Points",
+    "parse_points",
+    "power_of_two_scale",
+    "scale_points",
+    "Edges",
+    "parse_sparse_distances",
+    "parse_rips_input",
+    "Field",
+    "parse_field",
     "check_radius",
     "check_max_dim",
     "check_weights",
@@ -268,6 +284,116 @@ def as_distance_matrix(distance_matrix) -> np.ndarray:
     return np.ascontiguousarray(dm)
 
 
+# ---------------------------------------------------------------------------------------- parsed points
+def power_of_two_scale(points: np.ndarray) -> int:
+    """The exponent e such that ``points * 2**e`` has its largest |coordinate| in [0.5, 1).
+
+    Thesis: §2.1.2 (the complexes depend on the points only up to similarity).  0 when every
+    coordinate is 0 or there are none.
+    """
+    top = float(np.max(np.abs(points))) if points.size else 0.0
+    if top == 0.0:
+        return 0
+    return -math.frexp(top)[1]
+
+
+def scale_points(points: np.ndarray, exponent: int, name: str = "points") -> np.ndarray:
+    """``points * 2**exponent`` (exact), refusing when that loses digits (coordinates spanning
+    more than about 10³⁰⁰) or overflows; ``name`` is the argument named in the message."""
+    with np.errstate(over="ignore", under="ignore"):
+        out = np.ldexp(points, exponent)
+    if exponent > 0 and not np.all(np.isfinite(out)):
+        raise ValueError(f"{name} span too many orders of magnitude for float64 (rescaling overflows)")
+    if exponent < 0 and not np.array_equal(np.ldexp(out, -exponent), points):
+        raise ValueError(f"{name} span too many orders of magnitude for float64: the smallest nonzero "
+                         "coordinates would lose digits when the largest are brought near 1")
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class Points:
+    """A point cloud parsed once (:func:`parse_points`); what the constructions on points take.
+
+    ``array`` is the ``(n, d)`` float64 array (C-contiguous, finite), ``exponent`` the power of two
+    e of :func:`power_of_two_scale` and ``scaled`` the exact copy ``array * 2**e``, whose largest
+    |coordinate| is in [0.5, 1): squared distances on it neither overflow nor underflow, and
+    lengths computed on it scale back by 2^(−e) exactly.  Every Rips path computes its distances on
+    ``scaled``, so they all see the same numbers.
+    """
+
+    array: np.ndarray
+    exponent: int
+    scaled: np.ndarray
+
+    @property
+    def n(self) -> int:
+        """The number of points."""
+        return int(self.array.shape[0])
+
+
+def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> Points:
+    """``points`` checked by :func:`as_points` and scaled by a power of two, as a :class:`Points`.
+
+    Thesis: §2.1.2 (a point set X in R^d, up to similarity).
+    """
+    arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
+    e = power_of_two_scale(arr)
+    return Points(arr, e, arr if e == 0 else np.ascontiguousarray(scale_points(arr, e, name)))
+
+
+@dataclass(frozen=True, eq=False)
+class Edges:
+    """A weighted graph on ``n`` vertices parsed once (a sparse distance matrix, :func:`parse_sparse_distances`):
+    ``edges`` the ``(m, 2)`` int64 pairs i < j in lexicographic order, ``lengths`` their distances."""
+
+    n: int
+    edges: np.ndarray
+    lengths: np.ndarray
+
+
+def parse_sparse_distances(matrix) -> Edges:
+    """A scipy.sparse distance matrix as :class:`Edges`: its stored off-diagonal entries are the
+    edges (the diagonal is ignored); a non-square shape, NaN, a negative entry, or (i, j) and
+    (j, i) stored with different values are refused."""
+    coo = matrix.tocoo()
+    shape = coo.shape
+    if len(shape) != 2 or shape[0] != shape[1] or shape[0] == 0:
+        raise ValueError(f"distance_matrix must be a non-empty square (n, n) matrix, got shape {shape}")
+    n = int(shape[0])
+    r, c, v = np.asarray(coo.row, np.int64), np.asarray(coo.col, np.int64), np.asarray(coo.data, np.float64)
+    if np.isnan(v).any():
+        raise ValueError("distance_matrix contains NaN")
+    if (v < 0).any():
+        raise ValueError("distance_matrix has a negative distance")
+    off = r != c
+    r, c, v = r[off], c[off], v[off]
+    key = np.minimum(r, c) * n + np.maximum(r, c)
+    order = np.lexsort((v, key))
+    key, v = key[order], v[order]
+    first = np.ones(key.shape[0], dtype=bool)
+    first[1:] = key[1:] != key[:-1]
+    dup = np.flatnonzero(~first)
+    if dup.size and not np.allclose(v[dup], v[dup - 1], rtol=1e-12, atol=0):
+        raise ValueError("distance_matrix is not symmetric: an entry (i, j) differs from (j, i)")
+    key, v = key[first], v[first]
+    return Edges(n, np.column_stack([key // n, key % n]).astype(np.int64).reshape(-1, 2), np.ascontiguousarray(v))
+
+
+def parse_rips_input(points, distance_matrix, *, sparse: bool = False) -> Points | np.ndarray | Edges:
+    """Exactly one of a point cloud (:func:`parse_points`) and a distance matrix: dense
+    (:func:`as_distance_matrix`) or, with ``sparse``, a scipy.sparse one (:func:`parse_sparse_distances`).
+
+    Thesis: Definition 2.11 (the Rips complex of a finite metric space).
+    """
+    if (points is None) == (distance_matrix is None):
+        raise ValueError("give exactly one of points and distance_matrix")
+    if distance_matrix is None:
+        return parse_points(points)
+    if sparse and hasattr(distance_matrix, "tocoo"):
+        return parse_sparse_distances(distance_matrix)
+    return as_distance_matrix(distance_matrix)
+
+
 def check_weights(weights, n: int) -> np.ndarray:
     """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
     w = _float_array(weights, "weights", "weights must be an array of numbers")
@@ -351,6 +477,28 @@ def resolve_coefficients(coefficients, *, default: int, field: bool = False, max
     signature is ``(..., coefficients=None, ...)``.
     """
     return check_coefficients(default if coefficients is None else coefficients, field=field, max_prime=max_prime)
+
+
+@dataclass(frozen=True)
+class Field:
+    """Coefficients parsed once (:func:`parse_field`): ``p`` is 0 for the integers Z or a prime for Z/p.
+
+    Thesis: §2.2.1 (homology with coefficients in Z and Z_p).
+    """
+
+    p: int
+
+    @property
+    def is_field(self) -> bool:
+        """Whether the coefficients form a field (Z/p), as persistence needs."""
+        return self.p != 0
+
+
+def parse_field(coefficients, *, default: int | None = None, field: bool = False, max_prime: int = MAX_PRIME) -> Field:
+    """The ``coefficients`` argument (``default`` when it is None and a default is given) checked by
+    :func:`check_coefficients`, as a :class:`Field`; ``field=True`` refuses Z."""
+    value = default if coefficients is None and default is not None else coefficients
+    return Field(check_coefficients(value, field=field, max_prime=max_prime))
 
 
 # ---------------------------------------------------------------------------------------- geometry

@@ -18,10 +18,18 @@ from collections.abc import Iterable, Sequence
 import numpy as np
 import scipy.sparse as sp
 
-from ._validate import MAX_EXACT_PRIME, MAX_LABEL, check_coefficients, check_complex_size, vertex_label
+from ._validate import (
+    MAX_EXACT_PRIME,
+    MAX_LABEL,
+    Field,
+    check_coefficients,
+    check_complex_size,
+    parse_field,
+    vertex_label,
+)
 from .filtration import Filtration, as_complex
 from .simplicial import boundary_matrix
-from .smith import reduce_matrix, smith_normal_form
+from .smith import reduce_checked, smith_normal_form
 
 __all__ = [
     "homology",
@@ -145,14 +153,15 @@ def euler_characteristic(simplices: Filtration | Iterable[Sequence[int]] | np.nd
     return int(sum((-1) ** k * m for k, m in enumerate(simplex_counts(simplices))))
 
 
-def _homology_of_arrays(cx: list[np.ndarray], p: int) -> list[tuple[int, list[int]]]:
+def _homology_of_arrays(cx: list[np.ndarray], field: Field) -> list[tuple[int, list[int]]]:
+    p = field.p
     top = len(cx) - 1
     ranks = [0] * (top + 2)
     invariants: list[list[int]] = [[] for _ in range(top + 2)]
     cleared = None
     for k in range(top, 0, -1):
         d = boundary_matrix(cx[k - 1], cx[k], p)
-        red = reduce_matrix(d, p, skip_columns=cleared)
+        red = reduce_checked(d, field, cleared)
         ranks[k] = red.rank
         invariants[k] = red.invariants
         cleared = red.unit_pivot_rows
@@ -196,8 +205,8 @@ def homology(simplices: Filtration | Iterable[Sequence[int]] | np.ndarray,
     >>> homology(rp2())
     [(1, []), (0, [2]), (0, [])]
     """
-    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
-    return _homology_of_arrays(_complex(simplices), p)
+    field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
+    return _homology_of_arrays(_complex(simplices), field)
 
 
 def betti_numbers(simplices: Filtration | Iterable[Sequence[int]] | np.ndarray, coefficients: int = 0) -> list[int]:

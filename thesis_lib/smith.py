@@ -27,9 +27,9 @@ import scipy.sparse as sp
 
 from ._elimination import LIMIT, markowitz_eliminate
 from ._modular import dense_invariants
-from ._validate import MAX_EXACT_PRIME, MAX_PRIME, check_coefficients
+from ._validate import MAX_EXACT_PRIME, MAX_PRIME, Field, parse_field
 
-__all__ = ["smith_normal_form", "rank_mod_p", "reduce_matrix", "Reduction", "dense_smith_diagonal"]
+__all__ = ["smith_normal_form", "rank_mod_p", "reduce_matrix", "reduce_checked", "Reduction", "dense_smith_diagonal"]
 
 #: largest dense matrix (entries) the modular stage accepts for a matrix with entries beyond 2³¹
 MAX_DENSE_ENTRIES = 5 * 10**7
@@ -183,22 +183,47 @@ def reduce_matrix(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, coefficients
         A matrix that is not 2-D or has non-integer entries, coefficients neither 0 nor a prime, or a
         ``skip_columns`` mask of the wrong length.
     """
-    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
+    field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
     mat = _as_matrix(matrix)
-    n_cols = mat.shape[1]
     if skip_columns is None:
-        skip = np.zeros(n_cols, dtype=np.bool_)
-    else:
-        skip = np.asarray(skip_columns, dtype=np.bool_)
-        if skip.shape != (n_cols,):
-            raise ValueError(f"skip_columns must be a boolean mask of length {n_cols}, got shape {skip.shape}")
-    if isinstance(mat, np.ndarray):  # entries beyond int64
-        dense = mat[:, ~skip]
+        return reduce_checked(mat, field)
+    skip = np.asarray(skip_columns, dtype=np.bool_)
+    if skip.shape != (mat.shape[1],):
+        raise ValueError(f"skip_columns must be a boolean mask of length {mat.shape[1]}, got shape {skip.shape}")
+    return reduce_checked(mat, field, skip)
+
+
+def reduce_checked(matrix: sp.csc_matrix | np.ndarray, field: Field,
+                   skip_columns: np.ndarray | None = None) -> Reduction:
+    """:func:`reduce_matrix` on checked input (a boundary matrix the library built, or one parsed by it).
+
+    Thesis: §2.2.1 (Smith normal form of boundary matrices, torsion from diagonal entries ≥ 2).
+
+    Parameters
+    ----------
+    matrix : scipy.sparse.csc_matrix of int64, or numpy.ndarray of Python ints
+        Canonical CSC (sorted indices, no explicit zeros, no duplicates), or a dense object array
+        when an entry exceeds int64.
+    field : Field
+        The parsed coefficients (0 for Z, a prime p < ``MAX_EXACT_PRIME`` for Z/p).
+    skip_columns : numpy.ndarray of bool, shape (n,), optional
+        Columns to ignore (clearing); None keeps every column.
+
+    Returns
+    -------
+    Reduction
+        As :func:`reduce_matrix`.
+    """
+    p = field.p
+    skip = np.zeros(matrix.shape[1], dtype=np.bool_) if skip_columns is None else skip_columns
+    if isinstance(matrix, np.ndarray):  # entries beyond int64
+        dense = matrix[:, ~skip]
         if p:  # over Z/p the residues are small: back to the sparse kernels
             mat = sp.csc_matrix((dense % p).astype(np.int64))
             mat.sort_indices()
-            return reduce_matrix(mat, p)
+            return reduce_checked(mat, field)
         return _dense_reduction(dense, p)
+    mat = matrix
     if p > MAX_PRIME:
         mat, kernel_p = _symmetric(mat, p), 0
     else:
@@ -236,7 +261,7 @@ def smith_normal_form(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray) -> np.nd
     ValueError
         If the matrix is not 2-D or has non-integer, NaN or infinite entries.
     """
-    red = reduce_matrix(matrix, 0)
+    red = reduce_checked(_as_matrix(matrix), Field(0))
     values = [1] * (red.rank - len(red.invariants)) + list(red.invariants)
     if any(v >= 2**63 for v in values):
         return np.array(values, dtype=object)
@@ -294,6 +319,7 @@ def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, p: int) -> int:
     ValueError
         If ``p`` is not a prime, or the matrix is not a 2-D integer matrix.
     """
-    if check_coefficients(p, max_prime=MAX_EXACT_PRIME) == 0:
+    field = parse_field(p, max_prime=MAX_EXACT_PRIME)
+    if not field.is_field:
         raise ValueError("rank_mod_p needs a prime p, got 0")
-    return reduce_matrix(matrix, p).rank
+    return reduce_checked(_as_matrix(matrix), field).rank

@@ -5,12 +5,12 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import MAX_SIMPLICES, as_distance_matrix, as_points, check_max_dim, check_radius, check_size
+from .._validate import MAX_SIMPLICES, Edges, Points, check_max_dim, check_radius, check_size, parse_rips_input
 from ..filtration import Filtration
 from ._flag import edges_within, flag_levels, matrix_edges
-from .scaling import scaled, unscale_values
+from .scaling import unscale_values
 
-__all__ = ["rips", "check_edges"]
+__all__ = ["rips", "check_edges", "rips_edges", "rips_filtration"]
 
 
 def check_edges(n: int, threshold: float, *, points: np.ndarray | None = None,
@@ -59,6 +59,82 @@ def check_edges(n: int, threshold: float, *, points: np.ndarray | None = None,
     check_size(count, f"edges ({n:,} points at this radius, about {24 * count / 2**30:,.3g} GiB)")
 
 
+def rips_edges(source: Points | np.ndarray | Edges, max_radius: float) -> tuple[int, np.ndarray, np.ndarray]:
+    """The edges of R(X, ε), pairs at distance ≤ 2ε, with their lengths, from parsed input.
+
+    Thesis: Definition 2.11 (an edge when the distance is at most 2ε).
+
+    The one edge search behind :func:`rips` and the implicit engine's
+    :func:`~thesis_lib.persistence.implicit.rips_graph`.  For points the distances are computed on
+    ``source.scaled`` (the threshold scaled by the same power of two) and scaled back exactly, so
+    coordinates near 1e160 or 1e-170 neither overflow nor underflow.
+
+    Parameters
+    ----------
+    source : Points, numpy.ndarray or Edges
+        A parsed point cloud, a checked dense distance matrix (``as_distance_matrix``) or a parsed
+        sparse one (``parse_sparse_distances``).
+    max_radius : float
+        The checked scale ε (``check_radius``).
+
+    Returns
+    -------
+    n : int
+        The number of vertices.
+    edges : numpy.ndarray of int64, shape (m, 2)
+        Pairs i < j in lexicographic order.
+    lengths : numpy.ndarray of float64, shape (m,)
+        Their distances, in the units of the input.
+
+    Raises
+    ------
+    ValueError
+        More than ``MAX_SIMPLICES`` edges (:func:`check_edges`), or lengths beyond float64's range
+        once scaled back.
+    """
+    threshold = 2.0 * max_radius
+    if isinstance(source, Points):
+        with np.errstate(over="ignore"):
+            scaled_threshold = float(np.ldexp(threshold, source.exponent))
+        check_edges(source.n, scaled_threshold, points=source.scaled)
+        edges, lengths = edges_within(source.scaled, scaled_threshold)
+        return source.n, edges, unscale_values(lengths, -source.exponent, "edge lengths")
+    if isinstance(source, Edges):
+        keep = source.lengths <= threshold
+        return source.n, source.edges[keep], source.lengths[keep]
+    n = int(source.shape[0])
+    check_edges(n, threshold, matrix=source)
+    return (n, *matrix_edges(source, threshold))
+
+
+def rips_filtration(source: Points | np.ndarray, max_radius: float, max_dim: int) -> Filtration:
+    """:func:`rips` on parsed input: the Vietoris–Rips filtration, values ε = diameter / 2.
+
+    Thesis: Definition 2.11, R(X, ε) = {σ ⊆ X : diam σ ≤ 2ε}; a flag complex (§2.1.2).
+
+    Parameters
+    ----------
+    source : Points or numpy.ndarray
+        A parsed point cloud or a checked distance matrix (``parse_rips_input``).
+    max_radius : float
+        The checked scale ε.
+    max_dim : int
+        The checked largest simplex dimension (>= 0).
+
+    Returns
+    -------
+    Filtration
+        As :func:`rips`.
+    """
+    if max_dim >= 1:
+        n, edges, lengths = rips_edges(source, max_radius)
+    else:
+        n = source.n if isinstance(source, Points) else int(source.shape[0])
+        edges, lengths = np.empty((0, 2), np.int64), np.empty(0)
+    simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
+    return Filtration(simplices, values, validate=False, truncated_at=max_dim)
+
+
 def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
          distance_matrix: npt.ArrayLike | None = None) -> Filtration:
     """Vietoris–Rips filtration: σ enters at ε = (largest distance between its vertices) / 2.
@@ -78,29 +154,15 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
         Values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε; ripser's
         ``thresh`` is 2ε).  Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
         Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
-        1e160 or 1e-170 give correct values.
+        1e160 or 1e-170 give correct values; the edges are those of :func:`rips_edges`, the same
+        as the implicit engine's (:func:`~thesis_lib.persistence.rips_persistence`).
+
+    Examples
+    --------
+    >>> K = rips([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], max_radius=1.0)
+    >>> [len(s) for s in K.simplices]
+    [3, 3, 1]
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    if (points is None) == (distance_matrix is None):
-        raise ValueError("give exactly one of points and distance_matrix")
-    none = (np.empty((0, 2), np.int64), np.empty(0))
-    if distance_matrix is not None:
-        dm = as_distance_matrix(distance_matrix)
-        n = dm.shape[0]
-        if max_dim >= 1:
-            check_edges(n, 2.0 * eps, matrix=dm)
-        edges, lengths = matrix_edges(dm, 2.0 * eps) if max_dim >= 1 else none
-    else:
-        # work on points scaled by a power of two (no overflow of squared distances near 1e160,
-        # no underflow near 1e-170); lengths scale back exactly
-        pts, e = scaled(as_points(points))
-        n = pts.shape[0]
-        with np.errstate(over="ignore"):
-            threshold = float(np.ldexp(2.0 * eps, e))
-        if max_dim >= 1:
-            check_edges(n, threshold, points=pts)
-        edges, lengths = edges_within(pts, threshold) if max_dim >= 1 else none
-        lengths = unscale_values(lengths, -e, "edge lengths")
-    simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
-    return Filtration(simplices, values, validate=False, truncated_at=max_dim)
+    return rips_filtration(parse_rips_input(points, distance_matrix), eps, max_dim)

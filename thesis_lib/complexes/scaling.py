@@ -5,60 +5,19 @@ witness values by s and alpha values (squared radii) by s².  Multiplying floats
 is exact (barring underflow), so the constructions run on points of magnitude about 1, where
 squared distances neither overflow nor underflow, and the values are scaled back at the end; a
 value that does not fit in float64 after scaling back is refused with a clear message.
+
+The exponent and the exact scaling are part of parsing a point cloud (``_validate.parse_points``,
+whose :class:`~thesis_lib._validate.Points` record carries both); this module scales back.
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import numpy.typing as npt
 
-__all__ = ["power_of_two_scale", "scale_points", "scaled", "unscale_values"]
+from .._validate import power_of_two_scale, scale_points
 
-
-def power_of_two_scale(points: npt.NDArray[np.float64]) -> int:
-    """The exponent e such that ``points * 2**e`` has its largest |coordinate| in [0.5, 1).
-
-    Thesis: §2.1.2 (the complexes depend on the points only up to similarity).
-
-    Parameters
-    ----------
-    points : numpy.ndarray of float64
-        Finite coordinates, any shape.
-
-    Returns
-    -------
-    int
-        The exponent ``e`` (0 when every coordinate is 0 or there are none).
-    """
-    top = float(np.max(np.abs(points))) if points.size else 0.0
-    if top == 0.0:
-        return 0
-    return -math.frexp(top)[1]
-
-
-def scale_points(points: npt.NDArray[np.float64], exponent: int, name: str = "points") -> np.ndarray:
-    """``points * 2**exponent``, refusing when that loses digits (coordinates spanning > 10³⁰⁰).
-
-    Parameters
-    ----------
-    points : float64 array.
-    exponent : power of two to multiply by.
-    name : argument name for the error message.
-
-    Returns
-    -------
-    The scaled copy (exact).
-    """
-    with np.errstate(over="ignore", under="ignore"):
-        out = np.ldexp(points, exponent)
-    if exponent > 0 and not np.all(np.isfinite(out)):
-        raise ValueError(f"{name} span too many orders of magnitude for float64 (rescaling overflows)")
-    if exponent < 0 and not np.array_equal(np.ldexp(out, -exponent), points):
-        raise ValueError(f"{name} span too many orders of magnitude for float64: the smallest nonzero "
-                         "coordinates would lose digits when the largest are brought near 1")
-    return out
+__all__ = ["scaled", "unscale_values"]
 
 
 def scaled(points: npt.NDArray[np.float64], name: str = "points") -> tuple[np.ndarray, int]:

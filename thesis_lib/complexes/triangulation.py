@@ -33,12 +33,11 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import triangulation as triangulation_core
-from .._validate import as_points, check_size, check_weights
+from .._validate import as_points, check_size, check_weights, power_of_two_scale, scale_points
 from ..simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
 from .predicates import Geometry, expand_det, signs_of
-from .scaling import power_of_two_scale, scale_points
 
 __all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic",
            "lexicographic_order"]

@@ -173,7 +173,8 @@ def _exact_circumcentric_fractions(p: np.ndarray) -> np.ndarray:
 
 
 def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
-    """:func:`vertex_areas` on an already validated :class:`~.validate.Mesh`.
+    """:func:`vertex_areas` on checked input: a validated :class:`~.validate.Mesh` and an area name
+    already checked by :func:`check_area` (the public functions check both once, then call this).
 
     Thesis: §3.3.2 (Voronoi and barycentric regions).
 
@@ -182,14 +183,18 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
     mesh : Mesh
         A validated mesh (from ``checked_mesh``).
     area : {"mixed", "voronoi", "barycentric"}, default "mixed"
-        The vertex region; ``"mixed"`` needs n = 2.
+        The vertex region, checked (:func:`check_area`); ``"mixed"`` needs n = 2.
 
     Returns
     -------
     ndarray, shape (nv,)
         The area of each vertex's region; zero at isolated vertices.
+
+    Raises
+    ------
+    ValueError
+        ``"mixed"`` on a mesh with n ≠ 2.
     """
-    area = check_area(area)
     v, s, areas = mesh.vertices, mesh.simplices, mesh.areas
     nv, n = len(v), mesh.n
     if area == "barycentric":

@@ -6,8 +6,8 @@ import numpy as np
 import numpy.typing as npt
 from scipy.spatial import ConvexHull, QhullError
 
-from .._validate import as_points, check_int, check_simplices
-from ..complexes.scaling import power_of_two_scale, scaled
+from .._validate import as_points, check_int, check_simplices, power_of_two_scale
+from ..complexes.scaling import scaled
 from .sampling import sample_sphere
 
 __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]

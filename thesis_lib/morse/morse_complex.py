@@ -8,8 +8,8 @@ import numpy as np
 import numpy.typing as npt
 import scipy.sparse as sp
 
-from .._validate import MAX_EXACT_PRIME, check_coefficients
-from ..smith import rank_mod_p, smith_normal_form
+from .._validate import MAX_EXACT_PRIME, Field, parse_field
+from ..smith import reduce_checked
 from ._cells import ComplexLike, Pairs, Simplex, cell_complex, partner_array
 from ._gradient import morse_boundary_ids
 
@@ -48,10 +48,15 @@ def morse_boundary(simplices: ComplexLike, pairs: Pairs,
     Orientations are those of Definition 2.18 (vertices ascending).  Integer entries are exact in
     int64 (sums of ±1 over gradient paths).
     """
-    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
+    return _morse_boundary(simplices, pairs, parse_field(coefficients, max_prime=MAX_EXACT_PRIME))
+
+
+def _morse_boundary(simplices: ComplexLike, pairs: Pairs,
+                    field: Field) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
+    """:func:`morse_boundary` with the coefficients parsed."""
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
-    crit, mats = morse_boundary_ids(cx, partner, p)
+    crit, mats = morse_boundary_ids(cx, partner, field.p)
     return [[cx.simplex(int(g)) for g in ids] for ids in crit], mats
 
 
@@ -116,7 +121,8 @@ def chain_complex_homology(boundaries: Sequence[npt.ArrayLike | sp.spmatrix],
         Not a sequence of 2-D integer matrices, mismatched shapes, ∂∂ ≠ 0 (an entry named), an
         empty complex, or coefficients neither 0 nor a prime.
     """
-    p = check_coefficients(coefficients, max_prime=MAX_EXACT_PRIME)
+    field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
+    p = field.p
     if isinstance(boundaries, (str, bytes)) or not isinstance(boundaries, Sequence):
         raise ValueError("boundaries must be a sequence of matrices, boundaries[k]: C_k -> C_{k-1}")
     mats = []
@@ -141,23 +147,23 @@ def chain_complex_homology(boundaries: Sequence[npt.ArrayLike | sp.spmatrix],
             i, j = hit
             raise ValueError(f"not a chain complex: ∂_{k - 1} ∂_{k} != 0 (entry ({i}, {j})); "
                              "homology needs ∂∂ = 0 (§2.2.1)")
-    ranks, divisors = [0], [[]]
-    for k in range(1, len(mats)):
-        if p:
-            ranks.append(rank_mod_p(mats[k], p) if mats[k].nnz else 0)
-            divisors.append([])
-        else:
-            d = [int(x) for x in smith_normal_form(mats[k])] if mats[k].nnz else []
-            ranks.append(len(d))
-            divisors.append(d)
+    return _chain_homology(mats, field)
+
+
+def _chain_homology(mats: list[sp.csc_matrix], field: Field) -> list[tuple[int, list[int]]]:
+    """:func:`chain_complex_homology` of checked int64 CSC boundaries (a chain complex), ``field`` parsed."""
+    sizes = [m.shape[1] for m in mats]
+    ranks, torsion = [0], [[]]
+    for m in mats[1:]:
+        m.sum_duplicates()
+        m.eliminate_zeros()
+        m.sort_indices()
+        red = reduce_checked(m, field) if m.nnz else None
+        ranks.append(red.rank if red else 0)
+        torsion.append(sorted(int(x) for x in red.invariants) if red else [])
     ranks.append(0)
-    divisors.append([])
-    out = []
-    for k in range(len(mats)):
-        betti = sizes[k] - ranks[k] - ranks[k + 1]
-        torsion = sorted(x for x in divisors[k + 1] if x > 1)
-        out.append((int(betti), torsion))
-    return out
+    torsion.append([])
+    return [(int(sizes[k] - ranks[k] - ranks[k + 1]), torsion[k + 1]) for k in range(len(mats))]
 
 
 def morse_homology(simplices: ComplexLike, pairs: Pairs, coefficients: int = 0) -> list[tuple[int, list[int]]]:
@@ -183,5 +189,5 @@ def morse_homology(simplices: ComplexLike, pairs: Pairs, coefficients: int = 0) 
     ValueError
         The vector field has a closed V-path or is invalid; coefficients neither 0 nor a prime.
     """
-    _, mats = morse_boundary(simplices, pairs, coefficients)
-    return chain_complex_homology(mats, coefficients)
+    field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
+    return _chain_homology(_morse_boundary(simplices, pairs, field)[1], field)

@@ -14,10 +14,10 @@ import numpy as np
 import numpy.typing as npt
 import scipy.sparse as sp
 
-from .._validate import InvalidTypeError, resolve_coefficients
+from .._validate import InvalidTypeError, parse_field, resolve_coefficients
 from ..filtration import Filtration, as_complex
 from ..persistence.barcode import Barcode
-from ..persistence.chains import chain_persistence
+from ..persistence.chains import chain_barcode, chain_persistence
 from ._cells import CellComplex, ComplexLike, Pairs, Simplex, partner_array
 from ._gradient import morse_boundary_ids
 from ._kernels import greedy_partner
@@ -203,8 +203,8 @@ def reduced_persistence(reduction: MorseReduction, coefficients: int | None = No
     """
     if not isinstance(reduction, MorseReduction):
         raise InvalidTypeError(f"expected a MorseReduction (from morse_reduce), got {type(reduction).__name__}")
-    default = reduction.coefficients or 2
-    p = resolve_coefficients(coefficients, default=default, field=True)
-    if reduction.coefficients not in (0, p):
-        raise ValueError(f"the reduction was computed mod {reduction.coefficients}, cannot take persistence mod {p}")
-    return chain_persistence(reduction.values, reduction.boundaries, p)
+    field = parse_field(coefficients, default=reduction.coefficients or 2, field=True)
+    if reduction.coefficients not in (0, field.p):
+        raise ValueError(f"the reduction was computed mod {reduction.coefficients}, cannot take persistence mod "
+                         f"{field.p}")
+    return chain_barcode(reduction.values, reduction.boundaries, field)

@@ -18,8 +18,9 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points, check_max_dim, check_radius
-from ..complexes import alpha, rips
+from .._validate import check_max_dim, check_radius, parse_points
+from ..complexes import alpha
+from ..complexes.rips import rips_filtration
 from ..filtration import Filtration, as_complex
 
 __all__ = ["Bifiltration", "function_bifiltration", "radius_curvature_bifiltration", "COMPLEX_KINDS"]
@@ -257,20 +258,21 @@ def radius_curvature_bifiltration(points: npt.ArrayLike, curvature: npt.ArrayLik
         Bad points, a curvature array of the wrong length or with NaN/inf entries (named), an
         unknown complex.
     """
-    pts = as_points(points)
+    pts = parse_points(points)
     if complex not in COMPLEX_KINDS:
         raise ValueError(f"complex must be one of {COMPLEX_KINDS}, got {complex!r}")
     k = np.asarray(curvature, dtype=np.float64) if not isinstance(curvature, str) else curvature
-    if np.ndim(k) != 1 or np.shape(k)[0] != pts.shape[0]:
-        raise ValueError(f"curvature must have one value per point ({pts.shape[0]}), got shape {np.shape(k)}")
-    _vertex_values(k, np.arange(pts.shape[0]), "curvature")
+    if np.ndim(k) != 1 or np.shape(k)[0] != pts.n:
+        raise ValueError(f"curvature must have one value per point ({pts.n}), got shape {np.shape(k)}")
+    _vertex_values(k, np.arange(pts.n), "curvature")
     if absolute:
         k = np.abs(k)
     if complex == "rips":
-        K = rips(pts, check_radius(max_radius), check_max_dim(max_dim))
+        eps, max_dim = check_radius(max_radius), check_max_dim(max_dim)
+        K = rips_filtration(pts, eps, max_dim)
         top = K.dimension - 1 if K.dimension == max_dim else K.dimension
     else:
-        K = alpha(pts)
+        K = alpha(pts.array)
         K = Filtration(K.simplices, [np.sqrt(np.maximum(v, 0.0)) for v in K.values], validate=False)
         top = K.dimension
     return function_bifiltration(K, k, max_homology_dim=max(top, 0), name="curvature")

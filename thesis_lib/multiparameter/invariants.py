@@ -22,10 +22,10 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_int, check_size, resolve_coefficients
+from .._validate import check_int, check_size, parse_field
 from ..filtration import Filtration
-from ..persistence import persistence
 from ..persistence.barcode import Barcode
+from ..persistence.engine import filtration_barcode
 from .bifiltration import Bifiltration
 
 __all__ = ["hilbert_function", "rank_invariant", "fibered_barcode", "line_filtration", "check_grid",
@@ -124,7 +124,7 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
     """
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
     dims = _dims(bifiltration, dims)
-    p = resolve_coefficients(coefficients, default=2, field=True)
+    field = parse_field(coefficients, default=2, field=True)
     _check_memory(len(dims) * eps.size * kappa.size, "Hilbert-function")
     out = np.zeros((len(dims), eps.size, kappa.size), dtype=np.int64)
     eps_grades = [g[:, 0] for g in bifiltration.grades]
@@ -132,7 +132,7 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
         keep = [g[:, 1] <= k for g in bifiltration.grades]
         if not keep[0].any():
             continue
-        bc = persistence(bifiltration.filtration(eps_grades, keep), p)
+        bc = filtration_barcode(bifiltration.filtration(eps_grades, keep), field)
         for a, d in enumerate(dims):
             out[a, :, j] = _betti_at(bc.intervals(d), eps)
     return out
@@ -180,7 +180,7 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
     """
     eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
     dim = _dims(bifiltration, [dim])[0]
-    p = resolve_coefficients(coefficients, default=2, field=True)
+    field = parse_field(coefficients, default=2, field=True)
     ne, nk = eps.size, kappa.size
     _check_memory(ne * nk * ne * nk, "rank-invariant")
     out = np.zeros((ne, nk, ne, nk), dtype=np.int64)
@@ -195,7 +195,7 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
             values, keep = _corner_path_values(te, tk, i, j2, ne)
             if not keep[0].any():
                 continue
-            arr = persistence(bifiltration.filtration(values, keep), p).intervals(dim)
+            arr = filtration_barcode(bifiltration.filtration(values, keep), field).intervals(dim)
             later = j2 + np.arange(ne - i)  # the positions of b = (ε_i2, κ_j2), i2 = i .. ne − 1
             for j in range(j2 + 1):
                 deaths = np.sort(arr[arr[:, 0] <= j, 1])  # bars alive at a = (ε_i, κ_j), position j
@@ -272,5 +272,5 @@ def fibered_barcode(bifiltration: Bifiltration, base: npt.ArrayLike, direction: 
     ValueError
         A bad line (see :func:`line_filtration`) or coefficients that are not a prime.
     """
-    p = resolve_coefficients(coefficients, default=2, field=True)
-    return persistence(line_filtration(bifiltration, base, direction), p)
+    field = parse_field(coefficients, default=2, field=True)
+    return filtration_barcode(line_filtration(bifiltration, base, direction), field)

@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from .._validate import resolve_coefficients
+from .._validate import parse_field
 from ..filtration import Filtration, as_complex
 from .barcode import Barcode
 from .kernels import inverse
@@ -38,6 +38,12 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
     """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
 
     Thesis: Algorithms 1–2, §2.3.5 (after Zomorodian and Carlsson), O(m³) in the number of simplices m.
+
+    A separate implementation, on purpose: the thesis's pseudocode line by line in pure Python, for
+    small complexes, the notebook's traces and as the reference the engines are tested against.
+    The library's engines are :func:`~thesis_lib.persistence.persistence` (any filtration) and
+    :func:`~thesis_lib.persistence.rips_persistence` (Rips, implicit); all three give the same
+    intervals.
 
     Parameters
     ----------
@@ -69,7 +75,8 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
         A complex :func:`~thesis_lib.filtration.as_complex` refuses, or ``coefficients`` not a prime.
     """
     K = as_complex(filtration)
-    p = resolve_coefficients(coefficients, default=2, field=True)
+    field = parse_field(coefficients, default=2, field=True)
+    p = field.p
 
     # "First, sort the simplices by dimension and then by degree.  The ordering between simplices
     #  with the same dimension and degree will be irrelevant."  We keep the filtration's own order
@@ -174,7 +181,7 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
     return Barcode(
         {q: np.array(v, dtype=np.float64).reshape(-1, 2) for q, v in L.items()},
         range(K.dimension + 1),
-        p=p,
+        p=field,
         simplices={q: np.array(v, dtype=np.int64).reshape(-1, 2) for q, v in pairs.items()},
         filtration=K,
         killers={q: np.array([t for _, t in v if t >= 0], dtype=np.int64) for q, v in pairs.items()},

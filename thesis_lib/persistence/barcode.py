@@ -3,9 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from .._validate import Field
 
 __all__ = ["Barcode"]
 
@@ -66,10 +69,13 @@ def _dimension_list(dims, name: str) -> list[int]:
 
 
 def _field(p) -> int | None:
-    """The coefficient field of a barcode: ``None`` (unknown) or a prime."""
+    """The coefficient field of a barcode: ``None`` (unknown) or a prime (a parsed field is taken as it is)."""
+    from .._validate import MAX_EXACT_PRIME, Field, check_coefficients
+
     if p is None:
         return None
-    from .._validate import MAX_EXACT_PRIME, check_coefficients
+    if isinstance(p, Field) and p.is_field:
+        return p.p
 
     return check_coefficients(p, field=True, max_prime=MAX_EXACT_PRIME)
 
@@ -100,7 +106,8 @@ class Barcode:
     intervals : mapping ``dim -> (k, 2)`` array-like of ``(birth, death)``.
     dimensions : homology dimensions that were computed (default: the keys of ``intervals``);
         a computed dimension may have no intervals.
-    p : the coefficient field Z/p the barcode was computed over (``None`` if unknown).
+    p : the coefficient field Z/p the barcode was computed over: a prime, a parsed ``Field``, or
+        ``None`` if unknown.
     simplices : optional mapping ``dim -> (k, 2)`` int array, parallel to ``intervals``: the index
         (into ``filtration.simplices[dim]``) of the simplex creating each class and the index (into
         ``filtration.simplices[dim + 1]``) of the simplex killing it, ``-1`` for an essential class.
@@ -123,7 +130,7 @@ class Barcode:
         intervals: Mapping[int, Any],
         dimensions: Iterable[int] | None = None,
         *,
-        p: int | None = None,
+        p: int | Field | None = None,
         simplices: Mapping[int, np.ndarray] | None = None,
         filtration: Any = None,
         killers: Mapping[int, np.ndarray] | None = None,

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._validate import check_coefficients
+from .._validate import Field, parse_field
 from .barcode import Barcode
 from .kernels import KEEP_REDUCED, reduce_columns
 
-__all__ = ["chain_persistence"]
+__all__ = ["chain_persistence", "chain_barcode"]
 
 
 def _reduce(mat, dims_pos: np.ndarray, p: int) -> np.ndarray:
@@ -59,10 +59,39 @@ def chain_persistence(values: list[np.ndarray], boundaries: list, p: int = 2) ->
     -------
     Barcode
     """
+    field = parse_field(p)
+    if not field.is_field:
+        raise ValueError("persistence needs a prime field Z/p, got 0")
+    return chain_barcode(values, boundaries, field)
+
+
+def chain_barcode(values: list[np.ndarray], boundaries: list, field: Field) -> Barcode:
+    """:func:`chain_persistence` with the field parsed (a prime).
+
+    Thesis: Algorithm 2, §2.3.5 (column reduction over Z/p).
+
+    Parameters
+    ----------
+    values : list of numpy.ndarray
+        As :func:`chain_persistence`.
+    boundaries : list of matrices
+        As :func:`chain_persistence`.
+    field : Field
+        The parsed prime field.
+
+    Returns
+    -------
+    Barcode
+        As :func:`chain_persistence`.
+
+    Raises
+    ------
+    ValueError
+        Mismatched shapes, NaN values, or a cell with a face of larger value.
+    """
     import scipy.sparse as sp
 
-    if check_coefficients(p) == 0:
-        raise ValueError("persistence needs a prime field Z/p, got 0")
+    p = field.p
     counts = [len(v) for v in values]
     if len(boundaries) != len(values):
         raise ValueError("give one boundary matrix per dimension")
@@ -111,4 +140,4 @@ def chain_persistence(values: list[np.ndarray], boundaries: list, p: int = 2) ->
             intervals[int(dims_pos[rr])].append((float(vals_pos[rr]), float(vals_pos[cc])))
     for i in np.flatnonzero(~paired).tolist():
         intervals[int(dims_pos[i])].append((float(vals_pos[i]), np.inf))
-    return Barcode(intervals, range(len(counts)), p=p)
+    return Barcode(intervals, range(len(counts)), p=field)

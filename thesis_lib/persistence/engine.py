@@ -30,12 +30,12 @@ from typing import Any
 import numpy as np
 
 from .._core import explicit_cohomology
-from .._validate import resolve_coefficients
+from .._validate import Field, parse_field
 from ..filtration import Filtration, as_complex
 from .barcode import Barcode
 from .kernels import KEEP_V, reduce_columns
 
-__all__ = ["persistence"]
+__all__ = ["persistence", "filtration_barcode"]
 
 
 # ---------------------------------------------------------------------------- coboundary columns
@@ -96,9 +96,48 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     The top dimension's essential classes (a truncated Rips complex has millions) are listed lazily:
     they are sorted into ``intervals(dim K)`` only when first asked for.  Memory: the coboundary
     matrix of one dimension at a time (4 + 1 bytes per incidence) plus one int32 per coface.
+
+    A filtration built by :func:`~thesis_lib.complexes.rips` is reduced here, not by the implicit
+    engine of :func:`~thesis_lib.persistence.rips_persistence`: only this engine knows the simplex
+    of every pair (:meth:`~Barcode.simplex_pairs`, :meth:`~Barcode.representative`) and the top
+    dimension.  Both give the same intervals, to the last bit.
+
+    Examples
+    --------
+    >>> from thesis_lib.complexes import rips
+    >>> square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+    >>> persistence(rips(square, max_dim=2)).intervals(1).tolist()
+    [[0.5, 0.7071067811865476]]
     """
-    K = as_complex(filtration)
-    p = resolve_coefficients(coefficients, default=2, field=True)
+    return filtration_barcode(as_complex(filtration), parse_field(coefficients, default=2, field=True), stats=stats)
+
+
+def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str, int]] | None = None) -> Barcode:
+    """:func:`persistence` on parsed input: a non-empty :class:`~thesis_lib.filtration.Filtration`
+    and a parsed prime field (the loops that take many barcodes of one complex call this).
+
+    Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
+
+    Parameters
+    ----------
+    K : Filtration
+        The filtration (``as_complex`` already applied).
+    field : Field
+        The parsed coefficients, a prime.
+    stats : dict, optional
+        Filled as by :func:`persistence`.
+
+    Returns
+    -------
+    Barcode
+        As :func:`persistence`.
+
+    Raises
+    ------
+    ValueError
+        A triangle with a missing edge, or more than 2³¹ − 1 simplices in one dimension.
+    """
+    p = field.p
     D = K.dimension
     # the order within each dimension (value, then index); the top dimension is never a column
     orders = [np.argsort(K.values[d], kind="stable") for d in range(D)]
@@ -124,7 +163,7 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     empty = np.empty(0, dtype=np.int64)
     if D == 0:
         finish(0, empty, empty, np.arange(K.simplices[0].shape[0]))
-        return Barcode(intervals, [0], p=p, simplices=pairs, filtration=K, killers=killers)
+        return Barcode(intervals, [0], p=field, simplices=pairs, filtration=K, killers=killers)
     # ---- H0 by union-find (the pairs Reduce finds on the edge columns)
     vrank = np.empty(K.simplices[0].shape[0], dtype=np.int64)
     vrank[orders[0]] = np.arange(orders[0].shape[0])
@@ -156,6 +195,6 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     # often millions of classes of a truncated complex, which nobody reads)
     essential_top = {D: (K.values[D], ~cleared)}
     return Barcode(
-        intervals, range(D + 1), p=p, simplices=pairs, filtration=K, killers=killers, essential=essential_top,
+        intervals, range(D + 1), p=field, simplices=pairs, filtration=K, killers=killers, essential=essential_top,
         complete=range(D if getattr(K, "truncated", False) else D + 1),
     )

@@ -64,19 +64,22 @@ import numpy.typing as npt
 from .._core import implicit_rips
 from .._validate import (
     MAX_DIM,
-    as_distance_matrix,
-    as_points,
+    Edges,
+    Field,
+    Points,
     check_int,
     check_max_dim,
     check_radius,
-    resolve_coefficients,
+    parse_field,
+    parse_rips_input,
 )
+from ..complexes.rips import rips_edges
 from .barcode import Barcode
 
 if TYPE_CHECKING:
     import scipy.sparse
 
-__all__ = ["rips_persistence", "rips_graph"]
+__all__ = ["rips_persistence", "rips_graph", "rips_barcode"]
 
 #: up to this many points a dense distance matrix (8 n² bytes, 128 MB at the limit) is kept for
 #: constant-time lookups; beyond, distances are found by binary search in the neighbour lists
@@ -119,59 +122,21 @@ def rips_graph(
         Both or neither of ``points`` and ``distance_matrix``; a bad radius, point cloud or
         distance matrix (not square, NaN, negative or asymmetric entries); more edges than
         ``MAX_SIMPLICES`` (refused before they are listed, ``complexes.rips.check_edges``).
+
+    Notes
+    -----
+    The edges are those of :func:`~thesis_lib.complexes.rips` (one search,
+    :func:`~thesis_lib.complexes.rips.rips_edges`): distances between points are computed on the
+    points scaled by a power of two and scaled back exactly.
     """
-    from ..complexes._flag import edges_within, matrix_edges
-    from ..complexes.rips import check_edges
-
     eps = check_radius(max_radius)
-    threshold = 2.0 * eps
-    if (points is None) == (distance_matrix is None):
-        raise ValueError("give exactly one of points and distance_matrix")
-    if points is not None:
-        pts = np.ascontiguousarray(as_points(points))
-        n = pts.shape[0]
-        with np.errstate(over="ignore"):
-            check_edges(n, threshold, points=pts)  # 10⁵ points at ε = ∞: 5·10⁹ edges, refused up front
-        edges, lengths = edges_within(pts, threshold)
-    elif hasattr(distance_matrix, "tocoo"):  # scipy.sparse
-        coo = distance_matrix.tocoo()
-        n = _square(coo.shape)
-        r, c, v = np.asarray(coo.row, np.int64), np.asarray(coo.col, np.int64), np.asarray(coo.data, np.float64)
-        _check_distances(v)
-        off = r != c
-        r, c, v = r[off], c[off], v[off]
-        lo, hi = np.minimum(r, c), np.maximum(r, c)
-        key = lo * n + hi
-        order = np.lexsort((v, key))
-        key, v = key[order], v[order]
-        first = np.ones(key.shape[0], dtype=bool)
-        first[1:] = key[1:] != key[:-1]
-        dup = np.flatnonzero(~first)
-        if dup.size and not np.allclose(v[dup], v[dup - 1], rtol=1e-12, atol=0):
-            raise ValueError("distance_matrix is not symmetric: an entry (i, j) differs from (j, i)")
-        key, v = key[first], v[first]
-        keep = v <= threshold
-        edges = np.column_stack([key[keep] // n, key[keep] % n])
-        lengths = v[keep]
-    else:
-        dm = as_distance_matrix(distance_matrix)
-        n = dm.shape[0]
-        check_edges(n, threshold, matrix=dm)
-        edges, lengths = matrix_edges(dm, threshold)
+    return _graph(parse_rips_input(points, distance_matrix, sparse=True), eps)
+
+
+def _graph(source: Points | np.ndarray | Edges, eps: float):
+    """:func:`rips_graph` on parsed input."""
+    n, edges, lengths = rips_edges(source, eps)
     return (n, *_csr(n, np.asarray(edges, np.int64).reshape(-1, 2), np.asarray(lengths, np.float64)))
-
-
-def _square(shape) -> int:
-    if len(shape) != 2 or shape[0] != shape[1] or shape[0] == 0:
-        raise ValueError(f"distance_matrix must be a non-empty square (n, n) matrix, got shape {shape}")
-    return int(shape[0])
-
-
-def _check_distances(v: np.ndarray) -> None:
-    if np.isnan(v).any():
-        raise ValueError("distance_matrix contains NaN")
-    if (v < 0).any():
-        raise ValueError("distance_matrix has a negative distance")
 
 
 def _csr(n: int, edges: np.ndarray, lengths: np.ndarray):
@@ -227,7 +192,9 @@ def rips_persistence(
     -------
     Barcode
         The same intervals as ``persistence(rips(points, max_radius, max_dim), coefficients)`` in
-        dimensions 0 .. max_dim − 1 (zero-length intervals left out).
+        dimensions 0 .. max_dim − 1 (zero-length intervals left out), to the last bit: the edges
+        are :func:`~thesis_lib.complexes.rips`'s (distances computed on the points scaled by a
+        power of two and scaled back exactly, so coordinates near 1e160 or 1e-170 are fine).
 
     Raises
     ------
@@ -235,19 +202,62 @@ def rips_persistence(
         ``max_dim`` below 1 or above ``MAX_DIM`` (10⁴; dimensions above
         the number of points are computed as the empty homology they are), a non-prime
         ``coefficients``, ``n_threads`` below 1, or invalid points / distances.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> circle = np.column_stack([np.cos(np.arange(12) * np.pi / 6), np.sin(np.arange(12) * np.pi / 6)])
+    >>> rips_persistence(circle, max_dim=2).betti(0.4)
+    [1, 1]
     """
     max_dim = check_max_dim(max_dim, maximum=MAX_DIM)
     if max_dim < 1:
         raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
-    p = resolve_coefficients(coefficients, default=2, field=True)
+    field = parse_field(coefficients, default=2, field=True)
     threads = 0 if n_threads is None else check_int(n_threads, "n_threads", minimum=1)
-    n, indptr, nbr, length = rips_graph(points, max_radius=max_radius, distance_matrix=distance_matrix)
+    eps = check_radius(max_radius)
+    source = parse_rips_input(points, distance_matrix, sparse=True)
+    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads)
+
+
+def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim: int, field: Field, *,
+                 stats: dict[int, dict[str, int]] | None = None, n_threads: int = 0) -> Barcode:
+    """:func:`rips_persistence` on parsed input (the implicit engine's one entry point).
+
+    Thesis: Definition 2.11 (Rips) and Theorem 2.39 (the pairs, by the dual reduction).
+
+    Parameters
+    ----------
+    source : Points, numpy.ndarray or Edges
+        The parsed point cloud or distance matrix (``parse_rips_input``).
+    max_radius : float
+        The checked scale ε.
+    max_dim : int
+        The checked largest simplex dimension, >= 1.
+    field : Field
+        The parsed coefficient field (a prime).
+    stats : dict, optional
+        Filled as by :func:`rips_persistence`.
+    n_threads : int
+        Threads for assembling the columns; 0: ``OMP_NUM_THREADS`` when set, else every core.
+
+    Returns
+    -------
+    Barcode
+        As :func:`rips_persistence`.
+
+    Raises
+    ------
+    ValueError
+        More edges than ``MAX_SIMPLICES``, or simplex indices that would overflow 64 bits.
+    """
+    n, indptr, nbr, length = _graph(source, max_radius)
     asked, max_dim = max_dim, min(max_dim, n + 1)  # no simplex has more than n vertices: H_k = 0 for k >= n
     if math.comb(n, max_dim + 1) >= 2**62:
         raise ValueError(f"{n} points with max_dim={max_dim}: simplex indices would overflow 64 bits")
     dims = implicit_rips.rips_barcode(
         n, np.ascontiguousarray(indptr, dtype=np.int64), np.ascontiguousarray(nbr, dtype=np.int64),
-        np.ascontiguousarray(length, dtype=np.float64), max_dim, p, n <= DENSE_MAX, threads, PARALLEL_MIN)
+        np.ascontiguousarray(length, dtype=np.float64), max_dim, field.p, n <= DENSE_MAX, n_threads, PARALLEL_MIN)
     intervals: dict[int, np.ndarray] = {}
     for k, (births, deaths, ess, counts) in enumerate(dims):
         iv = np.empty((births.shape[0] + ess.shape[0], 2))
@@ -255,7 +265,7 @@ def rips_persistence(
         iv[: births.shape[0], 1] = deaths
         iv[births.shape[0] :, 0] = ess
         iv[births.shape[0] :, 1] = np.inf
-        intervals[k] = iv
+        intervals[k] = iv * 0.5  # diameters -> ε
         if stats is None:
             continue
         if k == 0:
@@ -263,6 +273,4 @@ def rips_persistence(
         else:
             stats[k] = dict(zip(("simplices", "apparent", "columns", "emergent", "reduced", "additions", "entries",
                                  "enumerators"), (int(x) for x in counts)))
-    for d in intervals:
-        intervals[d] = intervals[d] * 0.5  # diameters -> ε
-    return Barcode(intervals, range(asked), p=p)
+    return Barcode(intervals, range(asked), p=field)

@@ -1,11 +1,12 @@
 """Persistence diagrams of many point clouds, in scikit-learn's estimator style.
 
 :class:`RipsDiagrams` is a stateless transformer: ``fit`` checks the parameters, ``transform`` maps
-a list of point clouds to their Vietoris–Rips persistence diagrams (the implicit engine,
-:func:`~thesis_lib.persistence.rips_persistence`).  It has ``get_params``/``set_params`` like any
-scikit-learn estimator, so ``sklearn.base.clone``, ``Pipeline`` and grid searches accept it, but
-scikit-learn is not needed to use it.  Diagrams are in the ripser/persim format (one ``(m, 2)`` array
-per dimension) with this library's values: ε, half the diameter (ripser reports 2ε).
+a list of point clouds to their Vietoris–Rips persistence diagrams (the implicit engine of
+:func:`~thesis_lib.persistence.rips_persistence`, with the parameters parsed once for all the
+clouds).  It has ``get_params``/``set_params`` like any scikit-learn estimator, so
+``sklearn.base.clone``, ``Pipeline`` and grid searches accept it, but scikit-learn is not needed to
+use it.  Diagrams are in the ripser/persim format (one ``(m, 2)`` array per dimension) with this
+library's values: ε, half the diameter (ripser reports 2ε).
 """
 
 from __future__ import annotations
@@ -16,8 +17,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import InvalidTypeError, check_coefficients, check_max_dim, check_radius
-from .implicit import rips_persistence
+from .._validate import Field, InvalidTypeError, check_max_dim, check_radius, parse_field, parse_points
+from .implicit import rips_barcode
 
 __all__ = ["RipsDiagrams"]
 
@@ -100,11 +101,16 @@ class RipsDiagrams:
         ValueError
             On an invalid ``max_radius``, ``max_dim`` (below 1) or ``coefficients`` (not a prime).
         """
-        check_radius(self.max_radius)
-        if check_max_dim(self.max_dim) < 1:
-            raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
-        check_coefficients(self.coefficients, field=True)
+        self._parameters()
         return self
+
+    def _parameters(self) -> tuple[float, int, Field]:
+        """The parameters parsed: (ε, max_dim, field), or the ValueError naming the bad one."""
+        eps = check_radius(self.max_radius)
+        max_dim = check_max_dim(self.max_dim)
+        if max_dim < 1:
+            raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
+        return eps, max_dim, parse_field(self.coefficients, field=True)
 
     def transform(self, X: Iterable[npt.ArrayLike]) -> list[list[np.ndarray]]:
         """The persistence diagrams of each point cloud.
@@ -125,7 +131,7 @@ class RipsDiagrams:
         ValueError
             On invalid parameters or an invalid point cloud (the message names the cloud).
         """
-        self.fit()
+        eps, max_dim, field = self._parameters()
         if X is None or isinstance(X, (str, bytes)) or not isinstance(X, Iterable):
             raise InvalidTypeError(f"X must be a list of point clouds, got {type(X).__name__}")
         if isinstance(X, np.ndarray) and X.ndim == 2:
@@ -133,11 +139,10 @@ class RipsDiagrams:
         out = []
         for i, cloud in enumerate(X):
             try:
-                barcode = rips_persistence(cloud, max_radius=self.max_radius, max_dim=self.max_dim,
-                                           coefficients=self.coefficients)
+                barcode = rips_barcode(parse_points(cloud), eps, max_dim, field)
             except ValueError as err:
                 raise ValueError(f"point cloud {i}: {err}") from None
-            out.append(barcode.to_diagrams(range(self.max_dim)))
+            out.append(barcode.to_diagrams(range(max_dim)))
         return out
 
     def fit_transform(self, X: Iterable[npt.ArrayLike], y: Any = None) -> list[list[np.ndarray]]:
