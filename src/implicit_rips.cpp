@@ -139,10 +139,13 @@ void edges_by_index(const Graph& g, std::vector<double>& ed, std::vector<i64>& e
     }
 }
 
-// Union–find over the edges in filtration order (diameter up, index down): the deaths of the H0
-// classes (elder rule), the number of components, and the positive edges (those closing a cycle).
+// Union–find over the edges in filtration order (diameter up, index down), the vertices born at
+// vbirth (inf: not in the complex): the (birth, death) of each H0 class that dies (elder rule: of the
+// two classes an edge joins, the younger dies), the births of the components left, and the positive
+// edges (those closing a cycle).
 // Thesis: Definition 2.31 (elder rule), §2.3.4.
-void h0(i64 n, const std::vector<double>& ed, const std::vector<i64>& ei, std::vector<double>& deaths, i64& comps,
+void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::vector<i64>& ei,
+        std::vector<double>& births, std::vector<double>& deaths, std::vector<double>& ess,
         std::vector<char>& positive) {
     const i64 m = static_cast<i64>(ed.size());
     std::vector<i64> order(static_cast<std::size_t>(m));
@@ -150,7 +153,9 @@ void h0(i64 n, const std::vector<double>& ed, const std::vector<i64>& ei, std::v
     std::sort(order.begin(), order.end(),
               [&](i64 a, i64 b) { return ed[a] < ed[b] || (ed[a] == ed[b] && ei[a] > ei[b]); });
     std::vector<i64> parent(static_cast<std::size_t>(n));
+    std::vector<double> born(vbirth, vbirth + n);  // the birth of each root's class
     for (i64 v = 0; v < n; ++v) parent[v] = v;
+    births.clear();
     deaths.clear();
     positive.assign(static_cast<std::size_t>(m), 0);
     for (i64 t = 0; t < m; ++t) {
@@ -166,11 +171,13 @@ void h0(i64 n, const std::vector<double>& ed, const std::vector<i64>& ei, std::v
         }
         if (a < b) std::swap(a, b);
         parent[a] = b;
+        births.push_back(std::max(born[a], born[b]));
         deaths.push_back(ed[e]);
+        born[b] = std::min(born[a], born[b]);
     }
-    comps = 0;
+    ess.clear();
     for (i64 v = 0; v < n; ++v)
-        if (parent[v] == v) ++comps;
+        if (parent[v] == v && born[v] != kInf) ess.push_back(born[v]);
 }
 
 // ---------------------------------------------------------------------------- zero apparent pairs
@@ -722,16 +729,21 @@ void check_graph(i64 n, const i64* indptr, std::size_t nptr, const i64* nbr, con
     }
 }
 
-// The barcode of the Rips filtration of the graph in dimensions 0 .. max_dim − 1, in diameters: for
-// dimension 0 the deaths (births 0) and, as essential births, one 0 per component; above, births,
-// deaths and essential births, with the statistics of the reduction.
+// The barcode of the Rips filtration of the graph in dimensions 0 .. max_dim − 1, in diameters: births,
+// deaths and essential births per dimension (in dimension 0 the vertices are born at vertex_births,
+// inf for a vertex not in the complex; an edge's length is at least its vertices' births), with the
+// statistics of the reduction above dimension 0.
 // Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, by the dual reduction),
 // Definitions 4.30–4.33 and Theorem 4.42 (apparent pairs as a discrete gradient).
 std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, nb::ndim<1>> neighbours,
-                                    In<double, nb::ndim<1>> lengths, i64 max_dim, i64 p, bool dense, int n_threads,
-                                    i64 parallel_min) {
+                                    In<double, nb::ndim<1>> lengths, In<double, nb::ndim<1>> vertex_births,
+                                    i64 max_dim, i64 p, bool dense, int n_threads, i64 parallel_min) {
     check_graph(n, indptr.data(), indptr.shape(0), neighbours.data(), lengths.data(), neighbours.shape(0),
                 lengths.shape(0));
+    if (vertex_births.shape(0) != static_cast<std::size_t>(n))
+        throw std::invalid_argument("rips_barcode: vertex_births must have one entry per vertex");
+    for (i64 v = 0; v < n; ++v)
+        if (!(vertex_births.data()[v] >= 0.0)) throw std::invalid_argument("rips_barcode: a vertex birth is negative or NaN");
     if (max_dim < 1 || max_dim > n + 1) throw std::invalid_argument("rips_barcode: max_dim must be in 1 .. n + 1");
     if (p < 2 || p >= (i64(1) << 31)) throw std::invalid_argument("rips_barcode: p must be a prime below 2^31");
     if (dense && n > 46340) throw std::invalid_argument("rips_barcode: too many points for a dense matrix");
@@ -753,9 +765,7 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         std::vector<i64> ei;
         edges_by_index(g, ed, ei);
         std::vector<char> positive;
-        i64 comps = 0;
-        h0(n, ed, ei, dims[0].deaths, comps, positive);
-        dims[0].ess.assign(static_cast<std::size_t>(comps), 0.0);
+        h0(n, vertex_births.data(), ed, ei, dims[0].births, dims[0].deaths, dims[0].ess, positive);
         // ---- dimensions 1 .. max_dim − 1: cohomology with clearing, apparent and emergent pairs
         Blocks from, all;  // the candidates of H1 (the positive edges); every (k − 1)-simplex, to build the k-simplices
         from.parts.emplace_back();
@@ -805,7 +815,6 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
     }
     std::vector<DimResult> result;
     for (DimOut& d : dims) {
-        if (d.stats.empty()) d.births.assign(d.deaths.size(), 0.0);  // dimension 0: born at 0
         result.emplace_back(to_numpy(std::move(d.births)), to_numpy(std::move(d.deaths)), to_numpy(std::move(d.ess)),
                             to_numpy(std::move(d.stats)));
     }
@@ -821,7 +830,8 @@ NB_MODULE(implicit_rips, m) {
     m.def("neighbour_lists", &thesis::rips::neighbour_lists, nb::arg("n"), nb::arg("edges"), nb::arg("lengths"),
           "Symmetric neighbour lists (indptr, neighbours, lengths) of the edges, each list by decreasing vertex.");
     m.def("rips_barcode", &thesis::rips::rips_barcode, nb::arg("n"), nb::arg("indptr"), nb::arg("neighbours"),
-          nb::arg("lengths"), nb::arg("max_dim"), nb::arg("p"), nb::arg("dense"), nb::arg("n_threads"),
+          nb::arg("lengths"), nb::arg("vertex_births"), nb::arg("max_dim"), nb::arg("p"), nb::arg("dense"),
+          nb::arg("n_threads"),
           nb::arg("parallel_min"),
           "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics), in diameters.");
 }

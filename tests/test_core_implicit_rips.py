@@ -17,9 +17,10 @@ def _graph(points, eps=np.inf):
     return n, indptr, nbr, length
 
 
-def _barcode(graph, max_dim=3, p=2, dense=True, n_threads=1, parallel_min=PARALLEL_MIN):
+def _barcode(graph, max_dim=3, p=2, dense=True, n_threads=1, parallel_min=PARALLEL_MIN, births=None):
     n, indptr, nbr, length = graph
-    return implicit_rips.rips_barcode(n, indptr, nbr, length, max_dim, p, dense, n_threads, parallel_min)
+    births = np.zeros(max(n, 0)) if births is None else births
+    return implicit_rips.rips_barcode(n, indptr, nbr, length, births, max_dim, p, dense, n_threads, parallel_min)
 
 
 def _same(a, b):
@@ -89,6 +90,10 @@ def test_rips_barcode_refuses_a_graph_it_could_not_walk():
         _barcode((n, indptr, nbr, length), p=1)
     with pytest.raises(ValueError, match="n must be"):
         _barcode((0, np.zeros(1, np.int64), np.zeros(0, np.int64), np.zeros(0)))
+    for births, match in ((np.zeros(n + 1), "one entry per vertex"), (-np.ones(n), "negative"),
+                          (np.full(n, np.nan), "NaN")):
+        with pytest.raises(ValueError, match=match):
+            _barcode((n, indptr, nbr, length), births=births)
     # another integer dtype is converted (a copy), never misread
     _same(_barcode((n, indptr.astype(np.int32), nbr, length)), _barcode((n, indptr, nbr, length)))
 

@@ -344,17 +344,19 @@ def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, 
 @dataclass(frozen=True, eq=False)
 class Edges:
     """A weighted graph on ``n`` vertices parsed once (a sparse distance matrix, :func:`parse_sparse_distances`):
-    ``edges`` the ``(m, 2)`` int64 pairs i < j in lexicographic order, ``lengths`` their distances."""
+    ``edges`` the ``(m, 2)`` int64 pairs i < j in lexicographic order, ``lengths`` their distances,
+    ``births`` the diagonal (the vertices' filtration values, 0 where nothing is stored)."""
 
     n: int
     edges: np.ndarray
     lengths: np.ndarray
+    births: np.ndarray
 
 
 def parse_sparse_distances(matrix) -> Edges:
     """A scipy.sparse distance matrix as :class:`Edges`: its stored off-diagonal entries are the
-    edges (the diagonal is ignored); a non-square shape, NaN, a negative entry, or (i, j) and
-    (j, i) stored with different values are refused."""
+    edges, its stored diagonal entries the vertices' births (as ripser reads them); a non-square
+    shape, NaN, a negative entry, or (i, j) and (j, i) stored with different values are refused."""
     coo = matrix.tocoo()
     shape = coo.shape
     if len(shape) != 2 or shape[0] != shape[1] or shape[0] == 0:
@@ -366,6 +368,8 @@ def parse_sparse_distances(matrix) -> Edges:
     if (v < 0).any():
         raise ValueError("distance_matrix has a negative distance")
     off = r != c
+    births = np.zeros(n)
+    np.maximum.at(births, r[~off], v[~off])
     r, c, v = r[off], c[off], v[off]
     key = np.minimum(r, c) * n + np.maximum(r, c)
     order = np.lexsort((v, key))
@@ -376,7 +380,8 @@ def parse_sparse_distances(matrix) -> Edges:
     if dup.size and not np.allclose(v[dup], v[dup - 1], rtol=1e-12, atol=0):
         raise ValueError("distance_matrix is not symmetric: an entry (i, j) differs from (j, i)")
     key, v = key[first], v[first]
-    return Edges(n, np.column_stack([key // n, key % n]).astype(np.int64).reshape(-1, 2), np.ascontiguousarray(v))
+    return Edges(n, np.column_stack([key // n, key % n]).astype(np.int64).reshape(-1, 2), np.ascontiguousarray(v),
+                 births)
 
 
 def parse_rips_input(points, distance_matrix, *, sparse: bool = False) -> Points | np.ndarray | Edges:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import numpy.typing as npt
 
@@ -59,7 +61,8 @@ def check_edges(n: int, threshold: float, *, points: np.ndarray | None = None,
     check_size(count, f"edges ({n:,} points at this radius, about {24 * count / 2**30:,.3g} GiB)")
 
 
-def rips_edges(source: Points | np.ndarray | Edges, max_radius: float) -> tuple[int, np.ndarray, np.ndarray]:
+def rips_edges(source: Points | np.ndarray | Edges,
+               max_radius: float) -> tuple[int, np.ndarray, np.ndarray, np.ndarray | None]:
     """The edges of R(X, ε), pairs at distance ≤ 2ε, with their lengths, from parsed input.
 
     Thesis: Definition 2.11 (an edge when the distance is at most 2ε).
@@ -84,7 +87,18 @@ def rips_edges(source: Points | np.ndarray | Edges, max_radius: float) -> tuple[
     edges : numpy.ndarray of int64, shape (m, 2)
         Pairs i < j in lexicographic order.
     lengths : numpy.ndarray of float64, shape (m,)
-        Their distances, in the units of the input.
+        Their values in the units of the input: the distance, or the larger of its two vertices'
+        births when that is larger.
+    births : numpy.ndarray of float64, shape (n,), or None
+        The vertices' births, a distance matrix's diagonal (as ripser and giotto-ph read it), inf
+        for a vertex born above 2ε (not in the complex, as in R(X, ε) for ε ≤ max_radius; ripser.py
+        reports such a vertex as a class born above its threshold); None when every vertex is born
+        at 0.
+
+    Warns
+    -----
+    UserWarning
+        An entry below one of its vertices' diagonal entries (read as that birth).
 
     Raises
     ------
@@ -98,13 +112,25 @@ def rips_edges(source: Points | np.ndarray | Edges, max_radius: float) -> tuple[
             scaled_threshold = float(np.ldexp(threshold, source.exponent))
         check_edges(source.n, scaled_threshold, points=source.scaled)
         edges, lengths = edges_within(source.scaled, scaled_threshold)
-        return source.n, edges, unscale_values(lengths, -source.exponent, "edge lengths")
+        return source.n, edges, unscale_values(lengths, -source.exponent, "edge lengths"), None
     if isinstance(source, Edges):
-        keep = source.lengths <= threshold
-        return source.n, source.edges[keep], source.lengths[keep]
-    n = int(source.shape[0])
-    check_edges(n, threshold, matrix=source)
-    return (n, *matrix_edges(source, threshold))
+        n, edges, lengths, diagonal = source.n, source.edges, source.lengths, source.births
+    else:
+        n = int(source.shape[0])
+        check_edges(n, threshold, matrix=source)
+        (edges, lengths), diagonal = matrix_edges(source, threshold), np.diagonal(source)
+    if not diagonal.any():
+        keep = lengths <= threshold
+        return n, edges[keep], lengths[keep], None
+    ends = np.maximum(diagonal[edges[:, 0]], diagonal[edges[:, 1]])
+    below = int(np.count_nonzero(lengths < ends))
+    if below:
+        warnings.warn(f"distance_matrix: {below} entries are below the diagonal entry (the birth) of one of their "
+                      "vertices; an edge cannot enter before its vertices, so they are read as that birth "
+                      "(ripser.py keeps them as they are and reports another barcode)", UserWarning, stacklevel=4)
+    lengths = np.maximum(lengths, ends)
+    keep = lengths <= threshold
+    return n, edges[keep], lengths[keep], np.where(diagonal <= threshold, diagonal, np.inf)
 
 
 def rips_filtration(source: Points | np.ndarray, max_radius: float, max_dim: int) -> Filtration:
@@ -126,12 +152,13 @@ def rips_filtration(source: Points | np.ndarray, max_radius: float, max_dim: int
     Filtration
         As :func:`rips`.
     """
-    if max_dim >= 1:
-        n, edges, lengths = rips_edges(source, max_radius)
-    else:
-        n = source.n if isinstance(source, Points) else int(source.shape[0])
-        edges, lengths = np.empty((0, 2), np.int64), np.empty(0)
-    simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim)
+    n, edges, lengths, births = rips_edges(source, max_radius)
+    if max_dim < 1:
+        edges, lengths = edges[:0], lengths[:0]
+    simplices, values = flag_levels(n, edges, lengths * 0.5, max_dim, None if births is None else births * 0.5)
+    if births is not None and np.isinf(births).any():  # vertices born above 2ε are not in the complex
+        present = np.isfinite(births)
+        simplices[0], values[0] = simplices[0][present], values[0][present]
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)
 
 
@@ -146,13 +173,15 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
     points : (n, d) array of points (or give ``distance_matrix`` instead).
     max_radius : largest ε kept (simplices of diameter ≤ 2 · max_radius); ``inf`` keeps all.
     max_dim : largest simplex dimension built (>= 0).
-    distance_matrix : (n, n) symmetric array of pairwise distances (keyword only).
+    distance_matrix : (n, n) symmetric array of pairwise distances (keyword only).  A non-zero
+        diagonal gives the vertices' births, as ripser.py reads it (see
+        :func:`~thesis_lib.persistence.rips_persistence`).
 
     Returns
     -------
     Filtration
         Values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε; ripser's
-        ``thresh`` is 2ε).  Vertices enter at 0; ``simplices[d]`` is in lexicographic order.
+        ``thresh`` is 2ε).  Vertices enter at 0 (or their diagonal entry / 2); ``simplices[d]`` is in lexicographic order.
         Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
         1e160 or 1e-170 give correct values; the edges are those of :func:`rips_edges`, the same
         as the implicit engine's (:func:`~thesis_lib.persistence.rips_persistence`).

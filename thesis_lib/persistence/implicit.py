@@ -103,7 +103,9 @@ def rips_graph(
         Scale ε: an edge joins two vertices at distance at most 2ε (default ∞: every pair).
     distance_matrix : array_like, shape (n, n), or scipy.sparse matrix, optional
         A dense symmetric matrix of distances, or a scipy.sparse matrix whose stored entries are the
-        only edges (as ripser's sparse input; the diagonal is ignored, entries above 2ε dropped).
+        only edges (as ripser's sparse input; entries above 2ε dropped).  A diagonal entry is the
+        vertex's birth, as ripser reads it: the edges' lengths here are then at least their
+        vertices' births (:func:`~thesis_lib.complexes.rips.rips_edges`).
 
     Returns
     -------
@@ -130,13 +132,14 @@ def rips_graph(
     points scaled by a power of two and scaled back exactly.
     """
     eps = check_radius(max_radius)
-    return _graph(parse_rips_input(points, distance_matrix, sparse=True), eps)
+    return _graph(parse_rips_input(points, distance_matrix, sparse=True), eps)[0]
 
 
 def _graph(source: Points | np.ndarray | Edges, eps: float):
-    """:func:`rips_graph` on parsed input."""
-    n, edges, lengths = rips_edges(source, eps)
-    return (n, *_csr(n, np.asarray(edges, np.int64).reshape(-1, 2), np.asarray(lengths, np.float64)))
+    """:func:`rips_graph` on parsed input, and the vertices' births (zeros when none is given)."""
+    n, edges, lengths, births = rips_edges(source, eps)
+    graph = (n, *_csr(n, np.asarray(edges, np.int64).reshape(-1, 2), np.asarray(lengths, np.float64)))
+    return graph, np.zeros(n) if births is None else births
 
 
 def _csr(n: int, edges: np.ndarray, lengths: np.ndarray):
@@ -177,7 +180,10 @@ def rips_persistence(
         A prime p: the field Z/p.
     distance_matrix : array_like, shape (n, n), or scipy.sparse matrix, optional
         A dense symmetric matrix, or a scipy.sparse matrix whose stored entries are the only edges
-        (entries above 2ε dropped); keyword only, instead of ``points``.
+        (entries above 2ε dropped); keyword only, instead of ``points``.  A non-zero diagonal gives
+        the vertices' births, as ripser.py and giotto-ph read it: vertex i enters at
+        ``D[i, i] / 2``, an edge at half the largest of its entry and its vertices' diagonal entries,
+        and a vertex whose entry is above 2ε is left out.
     stats : dict, optional
         Filled per dimension with ``simplices`` (k-simplices not killing a (k−1)-class),
         ``apparent`` (zero apparent pairs σ < τ found), ``columns`` (columns left), ``emergent``
@@ -251,13 +257,14 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
     ValueError
         More edges than ``MAX_SIMPLICES``, or simplex indices that would overflow 64 bits.
     """
-    n, indptr, nbr, length = _graph(source, max_radius)
+    (n, indptr, nbr, length), births = _graph(source, max_radius)
     asked, max_dim = max_dim, min(max_dim, n + 1)  # no simplex has more than n vertices: H_k = 0 for k >= n
     if math.comb(n, max_dim + 1) >= 2**62:
         raise ValueError(f"{n} points with max_dim={max_dim}: simplex indices would overflow 64 bits")
     dims = implicit_rips.rips_barcode(
         n, np.ascontiguousarray(indptr, dtype=np.int64), np.ascontiguousarray(nbr, dtype=np.int64),
-        np.ascontiguousarray(length, dtype=np.float64), max_dim, field.p, n <= DENSE_MAX, n_threads, PARALLEL_MIN)
+        np.ascontiguousarray(length, dtype=np.float64), np.ascontiguousarray(births, dtype=np.float64), max_dim,
+        field.p, n <= DENSE_MAX, n_threads, PARALLEL_MIN)
     intervals: dict[int, np.ndarray] = {}
     for k, (births, deaths, ess, counts) in enumerate(dims):
         iv = np.empty((births.shape[0] + ess.shape[0], 2))
