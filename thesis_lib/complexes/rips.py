@@ -181,9 +181,10 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
     -------
     Filtration
         Values are ε = diameter / 2 (GUDHI's Rips values are the diameters, 2ε; ripser's
-        ``thresh`` is 2ε).  Vertices enter at 0 (or their diagonal entry / 2); ``simplices[d]`` is in lexicographic order.
+        ``thresh`` is 2ε).  Vertices enter at 0 (or their diagonal entry / 2); ``simplices[d]``
+        is in lexicographic order.
         Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
-        1e160 or 1e-170 give correct values; the edges are those of :func:`rips_edges`, the same
+        1e160 or 1e-170 give correct values; the edges are those of ``rips_edges``, the same
         as the implicit engine's (:func:`~thesis_lib.persistence.rips_persistence`).
 
     Examples

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Mapping, Sequence
 
 import numpy as np
 
@@ -14,7 +14,11 @@ __all__ = [
     "example_filtration",
     "EXAMPLE_NAMES",
     "EXAMPLE_2_40_CYCLES",
+    "EXAMPLE_2_41_MATRIX",
+    "EQUATION_2_5",
+    "EQUATION_2_6",
     "named_chain",
+    "simplex_labels",
     "module_filtration",
     "dense_filtration",
 ]
@@ -29,6 +33,25 @@ EXAMPLE_2_40_CYCLES = {
     "z1": {"da": 1, "cd": 1, "bc": 1, "ab": 1},
     "z2": {"ed": 1, "ce": 1, "cd": -1},
 }
+
+#: The first matrix of Example 2.41 as printed, with the thesis's orientations (da, ed, ced): column
+#: → {row: (coefficient, power of t)}.
+EXAMPLE_2_41_MATRIX = {
+    "ab": {"a": (-1, 1), "b": (1, 1)},
+    "cd": {"c": (-1, 0), "d": (1, 0)},
+    "da": {"a": (1, 2), "d": (-1, 1)},
+    "bc": {"b": (-1, 2), "c": (1, 1)},
+    "ed": {"d": (1, 2), "e": (-1, 1)},
+    "ce": {"c": (-1, 2), "e": (1, 1)},
+    "ced": {"cd": (-1, 3), "ed": (1, 1), "ce": (1, 1)},
+}
+
+#: Equation 2.5 as printed, H₀ ≃ Σ²F[t]/(t) ⊕ Σ¹F[t]/(t) ⊕ F[t] ⊕ F[t]/(t), as summands (shift, n)
+#: of Σ^shift F[t]/(t^n), n = None for a free summand.
+EQUATION_2_5 = ((2, 1), (1, 1), (0, None), (0, 1))
+
+#: Equation 2.6 as printed, H₁ ≃ Σ³F[t]/(t) ⊕ Σ²F[t], as summands (shift, n).
+EQUATION_2_6 = ((3, 1), (2, None))
 
 
 def example_filtration() -> Filtration:
@@ -103,6 +126,32 @@ def named_chain(terms: Mapping[str, int], names: str = EXAMPLE_NAMES) -> dict[tu
         else:
             chain.pop(key, None)
     return chain
+
+
+def simplex_labels(simplices: Sequence[Sequence[int]], *, names: str | None = None) -> list[str]:
+    """The name of each simplex: its vertices' letters (``names[v]``), or their numbers comma-separated.
+
+    Thesis: Example 2.38 (simplices named by their vertices: ab, cd, ced, ...); the inverse of
+    :func:`named_chain` on ascending simplices.
+
+    Parameters
+    ----------
+    simplices : sequence of sequence of int
+        Simplices as vertex tuples.
+    names : str, optional
+        ``names[v]`` is the letter of vertex v (``"abcde"``); default: the numbers.
+
+    Returns
+    -------
+    list of str
+        One name per simplex, in order.
+
+    Examples
+    --------
+    >>> simplex_labels([(0,), (2, 3)], names="abcde"), simplex_labels([(2, 3)])
+    (['a', 'cd'], ['2,3'])
+    """
+    return ["".join(names[v] for v in s) if names else ",".join(map(str, s)) for s in simplices]
 
 
 def module_filtration(summands: Iterable[tuple[int, int | None]], dim: int = 1) -> Filtration:

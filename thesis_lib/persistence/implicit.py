@@ -105,7 +105,7 @@ def rips_graph(
         A dense symmetric matrix of distances, or a scipy.sparse matrix whose stored entries are the
         only edges (as ripser's sparse input; entries above 2ε dropped).  A diagonal entry is the
         vertex's birth, as ripser reads it: the edges' lengths here are then at least their
-        vertices' births (:func:`~thesis_lib.complexes.rips.rips_edges`).
+        vertices' births (``thesis_lib.complexes.rips.rips_edges``).
 
     Returns
     -------
@@ -128,7 +128,7 @@ def rips_graph(
     Notes
     -----
     The edges are those of :func:`~thesis_lib.complexes.rips` (one search,
-    :func:`~thesis_lib.complexes.rips.rips_edges`): distances between points are computed on the
+    ``thesis_lib.complexes.rips.rips_edges``): distances between points are computed on the
     points scaled by a power of two and scaled back exactly.
     """
     eps = check_radius(max_radius)

@@ -1,8 +1,10 @@
-"""Barcodes and persistence diagrams in the thesis's style (Figures 2.10 and 2.12), with matplotlib."""
+"""Barcodes and persistence diagrams in the thesis's style (Figures 2.10 and 2.12), a long bar's cycle on its
+points beside them (Figure 2.9), and the growth of the work of Algorithms 1–2, with matplotlib."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import itertools
+from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -11,10 +13,13 @@ from .._optional import require
 from .barcode import Barcode
 
 if TYPE_CHECKING:
+    import numpy.typing as npt
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["plot_barcode", "plot_diagram"]
+    from .complexity import WorkGrowth
+
+__all__ = ["plot_barcode", "plot_diagram", "plot_long_bar", "plot_work_growth"]
 
 
 def _color(dim: int) -> str:
@@ -219,4 +224,140 @@ def plot_diagram(
     ax.set_aspect("equal")
     if title:
         ax.set_title(title)
+    return fig
+
+
+def plot_long_bar(points: npt.ArrayLike, barcode: Barcode, *, index: int | None = None, dim: int = 1,
+                  max_value: float | None = None, min_length: float = 0.0) -> Figure:
+    """A bar's representative cycle drawn on the points, beside the barcode and the persistence diagram.
+
+    Thesis: Figure 2.9 (points sampled with noise from a circle; the persistent cycle is the hole).
+
+    Parameters
+    ----------
+    points : array-like, shape (n, 2)
+        The vertex positions of the filtration the barcode was computed from.
+    barcode : Barcode
+        A barcode that knows its representatives (computed from a filtration).
+    index : int, optional
+        The row in ``barcode.intervals(dim)`` of the bar whose cycle is drawn (default: the longest).
+    dim : int, default 1
+        The dimension of the bar, and of the barcode panel; the diagram shows dimensions 0 .. dim.
+    max_value : float, optional
+        Right end of the barcode and diagram axes (as :func:`plot_barcode`).
+    min_length : float, default 0
+        The barcode and the diagram leave out bars no longer than this.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Three panels: the points with the cycle, the barcode of ``dim``, the persistence diagram.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
+    ValueError
+        A barcode without representatives, or no bar ``index``.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> from thesis_lib.complexes import alpha
+    >>> from thesis_lib.datasets import noisy_circle
+    >>> from thesis_lib.persistence import persistence
+    >>> points = noisy_circle(30, noise=0.05, seed=0)
+    >>> fig = plot_long_bar(points, persistence(alpha(points)))
+    >>> len(fig.axes)
+    3
+    >>> plt.close(fig)
+    """
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting a representative cycle")
+    from ..graphics.style import COLORS
+
+    pts = np.asarray(points, dtype=float)
+    i = int(barcode.longest(dim, 1)[0]) if index is None else int(index)
+    cycle = barcode.representative(dim, i)
+    fig, axes = plt.subplots(1, 3, figsize=(7.2, 2.7), gridspec_kw={"width_ratios": [1, 1.2, 1]})
+    ax = axes[0]
+    ax.scatter(pts[:, 0], pts[:, 1], s=6, color=COLORS["points"])
+    for simplex, _ in cycle:
+        ax.plot(pts[list(simplex), 0], pts[list(simplex), 1], color=_color(dim), lw=1.4)
+    ax.set_aspect("equal")
+    ax.set_title(f"the long bar's cycle ({len(cycle)} edges)", fontsize=10)
+    dims = list(range(dim + 1))
+    shown = Barcode({d: barcode.intervals(d)[barcode.intervals(d)[:, 1] - barcode.intervals(d)[:, 0] > min_length]
+                     for d in dims})
+    plot_barcode(shown, dims=[dim], axes=[axes[1]], max_value=max_value, title=f"$H_{dim}$ barcode")
+    plot_diagram(shown, dims=dims, ax=axes[2], max_value=max_value, title="persistence diagram")
+    for a in axes:
+        a.title.set_fontsize(10)
+    axes[2].set_title("persistence diagram", fontsize=10, pad=14)
+    fig.tight_layout()
+    return fig
+
+
+#: the reference slopes of :func:`plot_work_growth`: exponent, line style, name
+_REFERENCE_SLOPES = ((1, ":", "m"), (2, "--", "m²"), (3, "-.", "m³"))
+
+
+def plot_work_growth(growth: Mapping[str, WorkGrowth], *, reference: tuple[float, float] | None = None,
+                     ylim: tuple[float, float] | None = None) -> Figure:
+    """The work of Algorithms 1–2 against the number of simplices, log-log, with the slopes of m, m², m³.
+
+    Thesis: Algorithm 2 and the Summary (ComputeIntervals is O(m³) in the number m of simplices).
+
+    Parameters
+    ----------
+    growth : mapping of str to WorkGrowth
+        Family name → its :func:`~thesis_lib.persistence.complexity.work_growth`; the legend shows
+        the name up to its first ``:`` and the fitted exponent.
+    reference : (float, float), optional
+        The range of m of the reference lines (default: half the smallest m to twice the largest);
+        each starts at twice its left end.
+    ylim : (float, float), optional
+        The range of the work axis (default: matplotlib's).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One panel, the legend right of it.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
+    ValueError
+        No family to draw.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> from thesis_lib.persistence.complexity import WorkGrowth
+    >>> fig = plot_work_growth({"paths": WorkGrowth(np.array([19.0, 199.0]), np.array([18.0, 198.0]), 1.02)})
+    >>> [t.get_text() for t in fig.axes[0].get_legend().get_texts()][:2]
+    ['paths (a ≈ 1.0)', 'slope of m']
+    >>> plt.close(fig)
+    """
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting the work of Algorithms 1-2")
+    from ..graphics.style import COLORS
+
+    if not growth:
+        raise ValueError("no family to draw")
+    colors = itertools.cycle([COLORS["first"], COLORS["second"], COLORS["highlight"], COLORS["points"]])
+    fig, ax = plt.subplots(figsize=(5.4, 3.4))
+    for (family, g), color in zip(growth.items(), colors):
+        ax.loglog(g.simplices, g.work, "o", color=color, ms=4, label=f"{family.split(':')[0]} (a ≈ {g.exponent:.2})")
+    if reference is None:
+        m = np.concatenate([g.simplices for g in growth.values()])
+        reference = (float(m.min()) / 2, float(m.max()) * 2)
+    m_ref = np.array(reference, dtype=float)
+    for a, style, name in _REFERENCE_SLOPES:
+        ax.loglog(m_ref, 2 * m_ref**a / m_ref[0] ** (a - 1), style, color="0.6", lw=1, label=f"slope of {name}")
+    if ylim is not None:
+        ax.set_ylim(*ylim)
+    ax.set_xlabel("simplices m")
+    ax.set_ylabel("work (entries touched)")
+    ax.tick_params(labelsize=10.5)
+    ax.legend(fontsize=9.5, loc="upper left", bbox_to_anchor=(1.0, 1.0))
     return fig
