@@ -226,3 +226,21 @@ def test_hostile_tolerances_dimensions_and_fields_are_refused_by_name():
     with pytest.raises(ValueError, match=r"1,000,000,000,001 diagrams.*limit of 10,000"):
         a.to_diagrams([10**12])
     assert [d.tolist() for d in a.to_diagrams([2])] == [[[0, 1]], [], []]
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_betti_at_infinity_counts_the_essential_classes_as_gudhi(seed):
+    """At ∞ the complex is the whole filtration: β = the essential bars, GUDHI's betti_numbers()."""
+    import gudhi
+
+    rng = np.random.default_rng(seed)
+    points = rng.random((int(rng.integers(8, 30)), 2))
+    eps = [0.15, 0.3, np.inf][seed % 3]
+    barcode = persistence(rips(points, max_radius=eps, max_dim=2))
+    tree = gudhi.RipsComplex(points=points, max_edge_length=2 * eps).create_simplex_tree(max_dimension=2)
+    tree.compute_persistence(homology_coeff_field=2, persistence_dim_max=True)
+    expected = (tree.betti_numbers() + [0, 0])[:2]
+    assert [barcode.betti(np.inf, d) for d in (0, 1)] == expected
+    assert [barcode.persistent_betti(np.inf, 0.0, d) for d in (0, 1)] == expected
+    born_at_0 = [barcode.intervals(d)[barcode.intervals(d)[:, 0] <= 0] for d in (0, 1)]
+    assert [barcode.persistent_betti(0.0, np.inf, d) for d in (0, 1)] == [int(np.isinf(b[:, 1]).sum()) for b in born_at_0]

@@ -343,7 +343,8 @@ class Barcode:
         Parameters
         ----------
         value : float
-            The filtration value l.
+            The filtration value l; ``np.inf`` means the whole complex, whose Betti numbers are
+            the essential classes (bars ``[b, ∞)``, GUDHI's ``betti_numbers()``).
         dim : int, optional
             The homology dimension; default: every complete dimension.
 
@@ -367,7 +368,8 @@ class Barcode:
         l : float
             The filtration value where the classes must exist.
         k : float
-            The persistence, ≥ 0: the classes must still be alive at ``l + k``.
+            The persistence, ≥ 0: the classes must still be alive at ``l + k``; when ``l + k`` is
+            ∞ (the whole complex) the classes alive there are the essential ones, ``[b, ∞)``.
         dim : int
             The homology dimension.
 
@@ -387,7 +389,9 @@ class Barcode:
         if k < 0:
             raise ValueError(f"the persistence k must be non-negative, got {k}")
         arr = self.intervals(dim)
-        return int(np.count_nonzero((arr[:, 0] <= l) & (arr[:, 1] > l + k)))
+        end = l + k
+        alive = arr[:, 1] > end if end != np.inf else arr[:, 1] == np.inf  # no bar is alive after ∞
+        return int(np.count_nonzero((arr[:, 0] <= l) & alive))
 
     def __len__(self) -> int:
         return int(sum(self.intervals(d).shape[0] for d in self._dims))
