@@ -14,7 +14,7 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-__all__ = ["PROJECT_ENV", "ProjectError", "is_project", "project_root", "repo_root", "shared_dir"]
+__all__ = ["PROJECT_ENV", "ProjectError", "is_project", "project_root", "shared_dir"]
 
 #: environment variable naming the project folder (``thesis-lab --project DIR`` sets it)
 PROJECT_ENV = "THESIS_LAB_PROJECT"
@@ -72,10 +72,6 @@ def project_root() -> Path:
         f"no thesis-lab project found in {here} or above it, nor at {installed}: run from inside the "
         f"project folder, pass --project DIR, or set {PROJECT_ENV}=DIR"
     )
-
-
-#: the name older code uses
-repo_root = project_root
 
 
 def shared_dir() -> Path:
