@@ -234,11 +234,13 @@ struct Column {
     i64 idx, tau, sign;
 };
 
-// One block's share of a dimension: its columns, its k-simplices (when the next dimension is built
-// from them), the candidates met (k-simplices not cleared) and the zero apparent pairs among them.
+// One block's share of a dimension: its columns, its k-simplices and the upper simplices of its zero
+// apparent pairs (both when a next dimension is built), the candidates met (k-simplices not
+// cleared) and the zero apparent pairs among them.
 struct Assembled {
     std::vector<Column> columns;
     std::vector<Simplex> all;
+    std::vector<i64> uppers;
     i64 candidates = 0, apparent = 0;
 };
 
@@ -265,27 +267,30 @@ struct Blocks {
 // The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`: with
 // generate, `from` holds every (k − 1)-simplex and its cofaces whose new vertex is the largest are
 // met (each k-simplex once); otherwise `from` holds the k-simplices themselves.  A simplex met is
-// kept in all when keep_all; it is a candidate unless it is a pivot of dimension k − 1 (cleared) or the
-// upper simplex of a zero apparent pair, and a column unless it is the lower simplex of one.
+// kept in all when keep_all; it is a candidate unless it is a pivot of dimension k − 1 (cleared) or
+// the upper simplex of a zero apparent pair of dimension k − 1 (in uppers), and a column unless it
+// is the lower simplex of one, whose upper simplex is kept when next (a dimension k + 1 follows).
 // Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
 // flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
 void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, bool generate, bool keep_all,
-                    const Table& cleared, i64 maxdeg, Assembled& out) {
+                    bool next, const Table& cleared, const Table& uppers, i64 maxdeg, Assembled& out) {
     Scratch x(k);
     std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
         cur(static_cast<std::size_t>(k)), oi(static_cast<std::size_t>(maxdeg + 1)), om(static_cast<std::size_t>(maxdeg + 1));
     std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
     auto meet = [&](double d, i64 s) {
         if (keep_all) out.all.push_back({d, s});
-        if (cleared.contains(s) || (k >= 2 && zero_apparent_facet(g, s, k - 1, d, x) != -1)) return;
+        if (cleared.contains(s) || uppers.contains(s)) return;
         ++out.candidates;
         vertices(g, s, k, sv.data());
         bool app;
         const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app);
-        if (app)
+        if (app) {
             ++out.apparent;
-        else
+            if (next) out.uppers.push_back(t.index);
+        } else {
             out.columns.push_back({d, s, t.index, 1 - 2 * (t.m & 1)});
+        }
     };
     from.visit(lo, hi, [&](const Simplex& f) {
         if (!generate) return meet(f.d, f.idx);
@@ -299,8 +304,9 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, b
 // met (with generate, estimated as |from| times the mean degree over k + 1), else in 8 · threads
 // blocks shared by the threads; the blocks' shares are kept in block order, so nothing depends on
 // how the blocks were shared.
-std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool generate, bool keep_all,
-                                const Table& cleared, i64 maxdeg, int threads, i64 parallel_min) {
+std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool generate, bool keep_all, bool next,
+                                const Table& cleared, const Table& uppers, i64 maxdeg, int threads,
+                                i64 parallel_min) {
     const i64 m = from.size();
     const double met = generate ? static_cast<double>(m) * static_cast<double>(g.indptr[g.n]) /
                                       static_cast<double>(g.n * (k + 1))
@@ -308,14 +314,14 @@ std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool 
     const i64 nblocks = (met < static_cast<double>(parallel_min) || threads <= 1) ? 1 : 8 * static_cast<i64>(threads);
     const i64 size = (m + nblocks - 1) / nblocks;
     std::vector<Assembled> out(static_cast<std::size_t>(nblocks));
-    std::atomic<i64> next{0};
+    std::atomic<i64> taken{0};
     const int workers = static_cast<int>(std::min<i64>(threads, nblocks));
     std::vector<std::exception_ptr> errors(static_cast<std::size_t>(workers));
     auto work = [&](int t) {
         try {
-            for (i64 b = next++; b < nblocks; b = next++)
+            for (i64 b = taken++; b < nblocks; b = taken++)
                 assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), generate, keep_all,
-                               cleared, maxdeg, out[static_cast<std::size_t>(b)]);
+                               next, cleared, uppers, maxdeg, out[static_cast<std::size_t>(b)]);
         } catch (...) {
             errors[static_cast<std::size_t>(t)] = std::current_exception();
         }
@@ -776,23 +782,29 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         }
         std::vector<double>().swap(ed);
         std::vector<i64>().swap(ei);
-        Table cleared(0);
+        Table cleared(0), uppers(0);
         for (i64 k = 1; k < max_dim; ++k) {
-            const bool keep = k + 1 < max_dim;  // the k-simplices build dimension k + 1
+            const bool next = k + 1 < max_dim;  // the k-simplices build dimension k + 1
             std::vector<Assembled> parts = k == 1
-                ? assemble(g, 1, from, false, false, cleared, maxdeg, threads, parallel_min)
-                : assemble(g, k, all, true, keep, cleared, maxdeg, threads, parallel_min);
+                ? assemble(g, 1, from, false, false, next, cleared, uppers, maxdeg, threads, parallel_min)
+                : assemble(g, k, all, true, next, next, cleared, uppers, maxdeg, threads, parallel_min);
             if (k >= 2) {
                 all.parts.clear();
-                if (keep)
+                if (next)
                     for (Assembled& a : parts) all.parts.push_back(std::move(a.all));
             }
             i64 ncand = 0, napp = 0;
-            std::size_t ncol = 0;
+            std::size_t ncol = 0, nup = 0;
             for (const Assembled& a : parts) {
                 ncand += a.candidates;
                 napp += a.apparent;
                 ncol += a.columns.size();
+                nup += a.uppers.size();
+            }
+            uppers = Table(static_cast<i64>(nup));  // the uppers of this dimension's pairs, cleared from the next
+            for (Assembled& a : parts) {
+                for (i64 t : a.uppers) uppers.keys[static_cast<std::size_t>(uppers.slot(t))] = t;
+                std::vector<i64>().swap(a.uppers);
             }
             std::vector<Column> cols;
             cols.reserve(ncol);
