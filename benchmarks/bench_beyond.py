@@ -38,7 +38,7 @@ def _bifiltration(case: str):
     kind, n = case.split("-")
     if kind == "torus":
         pts = sample_torus(int(n), seed=0)
-        return radius_curvature_bifiltration(pts, point_curvature(pts, estimator="knn", kind="gaussian", k=24),
+        return radius_curvature_bifiltration(pts, point_curvature(pts, estimator="knn", curvature="gaussian", k=24),
                                              complex="alpha", absolute=False)
     pts = two_circles(int(n), seed=0)
     return radius_curvature_bifiltration(pts, point_curvature(pts, estimator="knn", k=10), complex="rips",
@@ -93,7 +93,7 @@ def _mp_rank(bif, eps, kappa, dim):
 def _lines(bif, n_lines):
     from thesis_lib.multiparameter.plotting import line_fan
 
-    return line_fan(bif.bounds(), n_lines)
+    return line_fan(bif.bounds(), n_lines=n_lines)
 
 
 def _ours_lines(bif, base, dirs):
@@ -164,7 +164,7 @@ def invariant_row(case: str, rounds: int | None) -> dict:
 def _sphere(n: int):
     from thesis_lib.meshes import sample_sphere
 
-    return sample_sphere(n, 4, 2.0, seed=0)
+    return sample_sphere(n, n_dims=4, radius=2.0, seed=0)
 
 
 def crust_row(case: str, rounds: int | None) -> dict:

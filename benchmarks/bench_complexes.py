@@ -13,14 +13,14 @@ imports, input and warm-up (``harness.memory``).
 
 Pairs compared:
 
-* rips — ``rips(points, ε, 2)`` vs ``RipsComplex(max_edge_length=2ε).create_simplex_tree(2)``; the
-  thesis case is two circles with 100 points each, ε <= 2 (1,333,500 simplices).
+* rips — ``rips(points, max_radius=ε, max_dim=2)`` vs ``RipsComplex(max_edge_length=2ε).create_simplex_tree(2)``;
+  the thesis case is two circles with 100 points each, ε <= 2 (1,333,500 simplices).
 * alpha — ``alpha(points)`` vs ``AlphaComplex(points).create_simplex_tree()`` (GUDHI's default,
   ``precision="safe"``; ours is exact where it matters, see ``thesis_lib.complexes.predicates``),
   uniform random points; ``alpha-grid`` is an exact 2-D grid (every unit square co-circular: the
   exact predicates' worst case) against GUDHI with ``precision="exact"``.
 * alpha-weighted — the same with random weights in [0, 1e-5).
-* witness — ``witness(points, landmarks, ε, 3)`` (thesis rule, un-squared offsets) vs
+* witness — ``witness(points, landmarks, max_radius=ε, max_dim=3)`` (thesis rule, un-squared offsets) vs
   ``EuclideanStrongWitnessComplex(...).create_simplex_tree(α², 3)`` (squared rule): the complexes
   differ, so read the ratio with the simplex counts.
 * cech — GUDHI's Python API has no Čech complex; the reference is its Delaunay–Čech complex on the
@@ -100,11 +100,11 @@ def builders(name: str):
     kind = case["kind"]
     pts, weights = _input(name)
     if kind == "rips":
-        return {"ours": lambda: cx.rips(pts, case["eps"], case["max_dim"]),
+        return {"ours": lambda: cx.rips(pts, max_radius=case["eps"], max_dim=case["max_dim"]),
                 "gudhi": lambda: gudhi.RipsComplex(points=pts, max_edge_length=2 * case["eps"])
                 .create_simplex_tree(max_dimension=case["max_dim"])}
     if kind == "cech":
-        return {"ours": lambda: cx.cech(pts, case["eps"], case["max_dim"]),
+        return {"ours": lambda: cx.cech(pts, max_radius=case["eps"], max_dim=case["max_dim"]),
                 "gudhi": lambda: gudhi.DelaunayCechComplex(points=pts)
                 .create_simplex_tree(max_alpha_square=case["eps"] ** 2)}
     if kind.startswith("alpha"):
@@ -113,8 +113,8 @@ def builders(name: str):
                 "gudhi": lambda: gudhi.AlphaComplex(points=pts, weights=weights, precision=precision)
                 .create_simplex_tree()}
     if kind == "witness":
-        lm = cx.maxmin_landmarks(pts, case["landmarks"], seed=0)
-        return {"ours": lambda: cx.witness(pts, lm, case["eps"], case["max_dim"]),
+        lm = cx.maxmin_landmarks(pts, n=case["landmarks"], seed=0)
+        return {"ours": lambda: cx.witness(pts, lm, max_radius=case["eps"], max_dim=case["max_dim"]),
                 "gudhi": lambda: gudhi.EuclideanStrongWitnessComplex(landmarks=pts[lm], witnesses=pts)
                 .create_simplex_tree(max_alpha_square=case["alpha2"], limit_dimension=case["max_dim"])}
     raise ValueError(f"unknown case kind {kind!r}")

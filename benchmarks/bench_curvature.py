@@ -52,14 +52,14 @@ def operations():
         return np.linalg.norm(igl_vec(V, F), axis=1) / (2 * igl_area(V, F))
 
     def ours_all(V, F):
-        return mean_curvature_vector(V, F), vertex_areas(V, F, "mixed"), gaussian_curvature(V, F)
+        return mean_curvature_vector(V, F), vertex_areas(V, F, area="mixed"), gaussian_curvature(V, F)
 
     def igl_all(V, F):
         return igl_vec(V, F), igl_area(V, F), igl_gauss(V, F)
 
     return {
         "mean_curvature_vector": (mean_curvature_vector, igl_vec),
-        "mixed_area": (lambda V, F: vertex_areas(V, F, "mixed"), igl_area),
+        "mixed_area": (lambda V, F: vertex_areas(V, F, area="mixed"), igl_area),
         "gaussian_curvature": (gaussian_curvature, igl_gauss),
         "mean_curvature": (mean_curvature, igl_mean),
         "all_three": (ours_all, igl_all),

@@ -14,9 +14,9 @@ per-round ratios.
 
 Tools, all starting from the same per-dimension arrays of simplices:
 
-* ``ours-z`` — ``homology(arrays, 0)``: boundary matrices, sparse unit-pivot elimination with
+* ``ours-z`` — ``homology(arrays, coefficients=0)``: boundary matrices, sparse unit-pivot elimination with
   clearing, then the modular Smith form of the dense core; Betti numbers and torsion over Z.
-* ``ours-z2`` — ``homology(arrays, 2)``.
+* ``ours-z2`` — ``homology(arrays, coefficients=2)``.
 * ``gudhi`` — ``SimplexTree.insert_batch`` per dimension (constant filtration),
   ``compute_persistence(homology_coeff_field=2, persistence_dim_max=True)``, ``betti_numbers()``:
   the whole pipeline over Z/2 (GUDHI has no homology over Z).
@@ -112,7 +112,7 @@ def complex_arrays(name: str) -> list:
     if case["kind"] == "torus":
         return closure(freudenthal((case["n"], case["n"]), periodic=True))
     if case["kind"] == "klein":
-        return closure(klein_bottle(case["n"], case["n"]))
+        return closure(klein_bottle(n=case["n"], m=case["n"]))
     n = case["n"]
     edges = np.array(list(itertools.combinations(range(n), 2)), dtype=np.int64)
     if case["kind"] == "hypertree":
@@ -130,7 +130,7 @@ def dense_core(arrays: list):
     from thesis_lib._elimination import markowitz_eliminate
     from thesis_lib.simplicial import boundary_matrix
 
-    d2 = boundary_matrix(arrays[1], arrays[2], 0)
+    d2 = boundary_matrix(arrays[1], arrays[2], coefficients=0)
     _, _, (core, _, _) = markowitz_eliminate(d2.indptr, d2.indices, d2.data, d2.shape[0],
                                              np.zeros(d2.shape[1], bool), 0)
     return core
@@ -150,9 +150,9 @@ def worker(tool: str, name: str) -> dict:
         from thesis_lib.homology import homology
 
         p = 0 if tool == "ours-z" else 2
-        homology([(0, 1, 2), (1, 3)], p)  # warm-up: imports and caches
-        homology(complex_arrays("linial-meshulam-40"), p)
-        run = lambda: homology(arrays, p)  # noqa: E731
+        homology([(0, 1, 2), (1, 3)], coefficients=p)  # warm-up: imports and caches
+        homology(complex_arrays("linial-meshulam-40"), coefficients=p)
+        run = lambda: homology(arrays, coefficients=p)  # noqa: E731
         summary = lambda h: {"betti": [b for b, _ in h], "torsion": [[_big(t) for t in ts] for _, ts in h]}  # noqa: E731
     elif tool == "gudhi":
         import gudhi

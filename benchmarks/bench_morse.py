@@ -47,9 +47,9 @@ def build(case: str):
     kind, n = case.rsplit("-", 1)
     n = int(n)
     if kind == "two-circles":
-        return rips(two_circles(n, seed=0), 2.0, 2)
+        return rips(two_circles(n, seed=0), max_radius=2.0, max_dim=2)
     if kind == "flat-torus":
-        return rips(flat_torus(n, noise=0.02, seed=0), 0.5, 3)
+        return rips(flat_torus(n, noise=0.02, seed=0), max_radius=0.5, max_dim=3)
     if kind == "lower-star-grid":
         vals = np.random.default_rng(0).random(n * n)
         return lower_star_filtration([tuple(t) for t in grid_triangles(n).tolist()], vals)
@@ -65,10 +65,10 @@ def contenders(f) -> dict:
     def gudhi():
         st.compute_persistence(homology_coeff_field=2, min_persistence=0, persistence_dim_max=True)
         return Barcode.from_pairs(st.persistence(homology_coeff_field=2, min_persistence=0,
-                                                 persistence_dim_max=True), range(f.dimension + 1))
+                                                 persistence_dim_max=True), dimensions=range(f.dimension + 1))
 
-    return {"ours": lambda: reduced_persistence(morse_reduce(f, 2)), "engine": lambda: persistence(f, 2),
-            "gudhi": gudhi}
+    return {"ours": lambda: reduced_persistence(morse_reduce(f, coefficients=2)),
+            "engine": lambda: persistence(f, coefficients=2), "gudhi": gudhi}
 
 
 def check(results: dict) -> None:
@@ -93,7 +93,7 @@ def run_case(case: str, rounds: int | None) -> dict:
 
     f = build(case)
     res = harness.compare(contenders(f), rounds=rounds, check=check)
-    red = morse_reduce(f, 2)
+    red = morse_reduce(f, coefficients=2)
     row = {"case": case, "n_cells": len(f), "n_critical": red.n_critical, "critical_fraction": red.critical_fraction,
            "critical_per_dim": [int(c.shape[0]) for c in red.critical],
            "apparent_critical_below_top": apparent_summary(f)["critical_fraction_below_top"],

@@ -8,7 +8,7 @@ Every figure is a **whole pipeline, points → barcode**, for every tool (the ha
 
 * ``ours``: ``rips_persistence(points, max_radius=ε, max_dim=D)`` — the implicit engine (nothing stored
   but the neighbour graph; apparent and emergent pairs; H0 by union–find);
-* ``explicit``: ``persistence(rips(points, ε, D))`` — the Filtration is built, then reduced (the
+* ``explicit``: ``persistence(rips(points, max_radius=ε, max_dim=D))`` — the Filtration is built, then reduced (the
   engine of the thesis's pages; only where its simplices fit in memory);
 * ``ripser``: ``ripser(points, maxdim=D − 1, thresh=2ε)`` (ripser.py, one thread);
 * ``gph``: giotto-ph ``ripser_parallel(points, maxdim=D − 1, thresh=2ε, n_threads=2)`` (both cores);
@@ -80,7 +80,7 @@ def pipeline(tool: str, pts: np.ndarray, eps: float, max_dim: int):
         from thesis_lib.complexes import rips
         from thesis_lib.persistence import persistence
 
-        return lambda: [persistence(rips(pts, eps, max_dim)).intervals(d) for d in range(max_dim)]
+        return lambda: [persistence(rips(pts, max_radius=eps, max_dim=max_dim)).intervals(d) for d in range(max_dim)]
     if tool == "ripser":
         from ripser import ripser
 

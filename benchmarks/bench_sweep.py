@@ -86,7 +86,7 @@ def main(argv: list[str] | None = None) -> list[dict]:
         cluster_s = {}
         for workers in (1, 2):
             t0 = time.perf_counter()
-            with dask_client(None, jobs=workers) as client:
+            with dask_client(scheduler=None, jobs=workers) as client:
                 cluster_s[workers] = time.perf_counter() - t0
                 for _ in range(rounds):
                     times[f"local-{workers}"].append(_sweep_once(project, runs, work, workers))

@@ -44,12 +44,12 @@ def one_step_reduction(f: Filtration, p: int) -> list[dict[int, int]]:
 
 def gudhi_barcode(f: Filtration, p: int) -> Barcode:
     pairs = f.to_simplex_tree().persistence(homology_coeff_field=p, min_persistence=0.0, persistence_dim_max=True)
-    return Barcode.from_pairs(pairs, range(f.dimension + 1))
+    return Barcode.from_pairs(pairs, dimensions=range(f.dimension + 1))
 
 
 FILTRATIONS = {
     "example-2.40": example_filtration,
-    "rips-12": lambda: rips(np.random.default_rng(4).random((12, 2)), 0.6, 3),
+    "rips-12": lambda: rips(np.random.default_rng(4).random((12, 2)), max_radius=0.6, max_dim=3),
     "dense-9": lambda: dense_filtration(9, seed=2),
 }
 

@@ -22,9 +22,9 @@ def test_tables_from_rows(tmp_path, monkeypatch):
         "| a | 0.5 | 1 | 0.5 |  |",
         "| b | 2 |  |  | 3 |",
     ]
-    assert bench.markdown("x", ["ratio", "case"]).splitlines()[2] == "| 0.5 | a |"
+    assert bench.markdown("x", columns=["ratio", "case"]).splitlines()[2] == "| 0.5 | a |"
     with pytest.raises(ValueError, match="no columns"):
-        bench.markdown("x", ["nothing"])
+        bench.markdown("x", columns=["nothing"])
     with pytest.raises(FileNotFoundError, match="make bench"):
         bench.load("missing")
 
@@ -175,15 +175,15 @@ def test_ratios_figures_and_exponents(tmp_path, monkeypatch):
     (tmp_path / "benchmarks" / "results" / "p.json").write_text(
         json.dumps({"meta": {"commit": "abc", "date": "d", "cores": 2, "load_average": [1, 1, 1],
                              "load_average_end": [2, 2, 2]}, "rows": rows}))
-    assert bench.ratios("p", ["scaling-10"]) == [("scaling-10", "ripser", 0.05, 5)]
-    assert "No stored rows" in bench.markdown("p", ["case"], cases=["absent"])
+    assert bench.ratios("p", cases=["scaling-10"]) == [("scaling-10", "ripser", 0.05, 5)]
+    assert "No stored rows" in bench.markdown("p", columns=["case"], cases=["absent"])
     assert bench.meta("p")["commit"] == "abc" and "load average 1 at the start and 2" in bench.provenance("p")
     assert abs(bench.fit_exponent([1, 2, 4], [3, 12, 48]) - 2.0) < 1e-12
     with pytest.raises(ValueError):
         bench.fit_exponent([1], [1])
     fig = bench.ratio_figure("p")
     assert len(fig.axes[0].patches) == 3
-    fig, exps = bench.scaling_figure("p", "scaling-", {"ours": "ours", "ripser": "Ripser"})
+    fig, exps = bench.scaling_figure("p", prefix="scaling-", tools={"ours": "ours", "ripser": "Ripser"})
     assert abs(exps["ours"][0] - 2) < 1e-9 and abs(exps["ripser"][0] - 3) < 1e-9 and abs(exps["ours"][1] - 1) < 1e-9
     with pytest.raises(ValueError, match="no cases"):
-        bench.scaling_figure("p", "nothing", {"ours": "ours"})
+        bench.scaling_figure("p", prefix="nothing", tools={"ours": "ours"})

@@ -25,9 +25,10 @@ def test_markdown_headers_are_opt_in(tmp_path, monkeypatch):
     rows = [{"case": "a", "ours_s": 0.5, "ripser_s": 1.0, "ratio_ripser": 0.5, "ours_mb": 3.0}]
     (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))
     columns = ["case", "ours_s", "ripser_s", "ratio_ripser", "ours_mb"]
-    assert bench.markdown("x", columns).splitlines()[0] == "| case | ours_s | ripser_s | ratio_ripser | ours_mb |"
-    assert bench.markdown("x", columns, headers=True).splitlines()[0] == (
+    header = "| case | ours_s | ripser_s | ratio_ripser | ours_mb |"
+    assert bench.markdown("x", columns=columns).splitlines()[0] == header
+    assert bench.markdown("x", columns=columns, headers=True).splitlines()[0] == (
         "| case | ours (s) | ripser.py (s) | ours ÷ ripser.py | ours peak (MB) |")
-    assert bench.markdown("x", columns, headers={"ours_mb": "memory (MB)"}).splitlines()[0].endswith(
+    assert bench.markdown("x", columns=columns, headers={"ours_mb": "memory (MB)"}).splitlines()[0].endswith(
         "| memory (MB) |")
-    assert bench.markdown("x", columns, headers=True).splitlines()[2] == "| a | 0.5 | 1 | 0.5 | 3 |"
+    assert bench.markdown("x", columns=columns, headers=True).splitlines()[2] == "| a | 0.5 | 1 | 0.5 | 3 |"

@@ -32,7 +32,7 @@ def test_union_of_discs_simple_shapes():
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_union_of_discs_agrees_with_the_cech_complex_away_from_critical_radii(seed):
     pts = np.random.default_rng(seed).random((12, 2))
-    f = cech(pts, 2.0, 2)
+    f = cech(pts, max_radius=2.0, max_dim=2)
     values = np.unique(np.concatenate([np.asarray(v) for v in f.values]))
     gaps = np.diff(values)
     k = int(np.argmax(gaps))
@@ -74,17 +74,17 @@ def test_realization_failures_sees_a_degenerate_placement():
 # ---------------------------------------------------------------------------- Definition 2.23
 def gudhi_bars(f, p):
     pairs = f.to_simplex_tree().persistence(homology_coeff_field=p, min_persistence=0.0, persistence_dim_max=True)
-    return Barcode.from_pairs(pairs, range(f.dimension + 1))
+    return Barcode.from_pairs(pairs, dimensions=range(f.dimension + 1))
 
 
 @pytest.mark.parametrize("seed", range(4))
 @pytest.mark.parametrize("p", [2, 3])
 def test_definition_agrees_with_gudhi_barcodes(seed, p):
-    f = rips(np.random.default_rng(seed).random((9, 2)), 0.5, 2)
+    f = rips(np.random.default_rng(seed).random((9, 2)), max_radius=0.5, max_dim=2)
     bars = gudhi_bars(f, p)
     for l, k in itertools.product(np.linspace(0, 0.5, 6), np.linspace(0, 0.4, 5)):
         for dim in (0, 1):
-            assert persistent_betti_by_definition(f, l, k, dim, coefficients=p) == bars.persistent_betti(l, k, dim)
+            assert persistent_betti_by_definition(f, l, k, dim, coefficients=p) == bars.persistent_betti(l, k, dim=dim)
 
 
 def test_definition_on_the_thesis_examples():
@@ -102,7 +102,7 @@ def test_definition_on_alpha_matches_the_squared_barcode():
     a = alpha(pts)
     bars = gudhi_bars(a, 2)
     for l, k in ((0.002, 0.0), (0.01, 0.005), (0.02, 0.01)):
-        assert persistent_betti_by_definition(a, l, k, 1) == bars.persistent_betti(l, k, 1)
+        assert persistent_betti_by_definition(a, l, k, 1) == bars.persistent_betti(l, k, dim=1)
 
 
 def test_definition_refuses_bad_input():

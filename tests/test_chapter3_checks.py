@@ -56,11 +56,11 @@ def test_printed_gram_determinant_differs_from_the_gram_determinant():
 
 
 def _sphere(radius):
-    return lambda a: hypersphere_point(a, radius)
+    return lambda a: hypersphere_point(a, radius=radius)
 
 
 def test_first_variation_of_a_sphere_is_its_mean_curvature():
-    params, weights = hypersphere_quadrature(2, 16)
+    params, weights = hypersphere_quadrature(2, nodes=16)
     outward = _sphere(1.0)
     dA = ct.first_variation_of_area(_sphere(2.0), outward, params, weights)  # λ = 1: d/dε 4π(2 + ε)²
     assert dA == pytest.approx(16 * np.pi, rel=1e-7)
@@ -90,7 +90,7 @@ def test_gauss_map_pullback_ratio_is_minus_one_to_the_n(n, sign):
 
 
 def test_cotangent_formulas_are_the_area_gradient():
-    pts, hull = sphere_hull(3, 80, radius=2.0, seed=5)
+    pts, hull = sphere_hull(n_dims=3, n_points=80, radius=2.0, seed=5)
     fd = ct.mesh_area_gradient_fd(pts, hull)
     assert np.allclose(ct.cotangent_formula_gradient(pts, hull), fd, atol=1e-7)
     assert np.allclose(ct.example_3_20_gradient(pts, hull), fd, atol=1e-7)
@@ -122,7 +122,7 @@ def test_bad_inputs_are_refused():
         ct.printed_gram_determinant(np.zeros((2, 1, 3)))
     with pytest.raises(ValueError):
         ct.proposition_3_17_residual(1)
-    params, weights = hypersphere_quadrature(2, 4)
+    params, weights = hypersphere_quadrature(2, nodes=4)
     with pytest.raises(ValueError):
         ct.first_variation_of_area(_sphere(1.0), _sphere(1.0), params, weights[:-1])
     with pytest.raises(ValueError):

@@ -73,7 +73,7 @@ def test_sphere_quadratic_critical_points_indices_and_homology(c):
     d1, d2 = mc["signed"][1], mc["signed"][2]
     assert not (d1 @ d2).any()
     assert mc["counts"][1].tolist() == [[1, 1], [1, 1]] and mc["counts"][2].tolist() == [[1, 1], [1, 1]]
-    hom = chain_complex_homology([np.zeros((0, 2), np.int64), d1, d2], 0)
+    hom = chain_complex_homology([np.zeros((0, 2), np.int64), d1, d2], coefficients=0)
     assert hom == [(1, []), (0, []), (1, [])]
     q = checks.antipodal_quotient_counts(crit, mc)
     assert q[1].tolist() == [[2]] and q[2].tolist() == [[2]]
@@ -115,15 +115,15 @@ def test_flow_invariant_homology_of_rp2_depends_on_the_field_of_coefficients():
 @pytest.mark.parametrize("seed", range(4))
 def test_flow_invariant_homology_equals_simplicial_on_random_complexes(seed):
     cx = checks.random_complex(n_vertices=7, dim=2, density=0.35, seed=seed)
-    pairs = morse.morse_matching(cx, "collapse", seed=seed)
+    pairs = morse.morse_matching(cx, heuristic="collapse", seed=seed)
     out = checks.flow_invariant_homology(cx, pairs, coefficients=2)
-    assert out["betti"] == [b for b, _ in homology(cx, 2)]
+    assert out["betti"] == [b for b, _ in homology(cx, coefficients=2)]
     assert out["rank"] == morse.critical_counts(cx, pairs)
 
 
 def test_morse_inequality_survey_sees_strictness_and_equal_alternating_sums():
     tor = torus()
-    samples = [("all critical", tor, []), ("greedy", tor, morse.morse_matching(tor, "coreduction"))]
+    samples = [("all critical", tor, []), ("greedy", tor, morse.morse_matching(tor, heuristic="coreduction"))]
     out = checks.morse_inequality_survey(samples)
     assert out["n"] == 2 and out["weak"] == 2 and out["strong"] == 2 and out["euler_equal"] == 2
     assert out["weak_strict"] >= 1 and out["euler_strict"] == 0
@@ -133,13 +133,13 @@ def test_lemma_4_22_counter_finds_a_simplex_breaking_both_conditions():
     f = {(0,): 2, (1,): 0, (2,): 0.1, (0, 1): 1, (0, 2): 3, (1, 2): 4, (0, 1, 2): 0.5}
     n, both, at_vertex = checks.lemma_4_22_count(f)
     assert n == 7 and both == 1 and at_vertex
-    g = morse.discrete_morse_function(rp2(), morse.morse_matching(rp2(), "collapse", seed=1))
+    g = morse.discrete_morse_function(rp2(), morse.morse_matching(rp2(), heuristic="collapse", seed=1))
     assert checks.lemma_4_22_count(g)[1] == 0
 
 
 def test_sublevel_changes_count_one_cell_per_critical_simplex():
     cx = sphere(2)
-    f = morse.discrete_morse_function(cx, morse.morse_matching(cx, "collapse", seed=0))
+    f = morse.discrete_morse_function(cx, morse.morse_matching(cx, heuristic="collapse", seed=0))
     out = checks.sublevel_changes(f)
     assert out["regular_changes"] == 0 and out["one_cell"] == out["critical"] == len(morse.critical_simplices(f))
 
@@ -163,7 +163,7 @@ def test_proposition_4_32_counts_are_zero_for_a_discrete_morse_function():
 
 
 def test_two_critical_survey_on_spheres():
-    samples = [(f"S{d}", sphere(d), morse.morse_matching(sphere(d), "collapse", seed=0)) for d in (2, 3)]
+    samples = [(f"S{d}", sphere(d), morse.morse_matching(sphere(d), heuristic="collapse", seed=0)) for d in (2, 3)]
     out = checks.two_critical_survey(samples)
     assert out["n"] == out["with_vertex"] == out["sphere_homology"]
 
@@ -183,7 +183,7 @@ def test_chapter_of_heading_reads_both_numberings():
 
 def test_torus_grid_sublevels_change_only_at_critical_values():
     tris, pts = checks.torus_grid(12)
-    assert homology(tris, 2) == [(1, []), (2, []), (1, [])]
+    assert homology(tris, coefficients=2) == [(1, []), (2, []), (1, [])]
     assert len(tris) == 2 * 12 * 12
     levels = np.linspace(-3.5, 3.5, 14)  # no level at a critical value
     crit = [(-3.0, 0), (-1.0, 1), (1.0, 1), (3.0, 2)]

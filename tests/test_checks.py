@@ -78,7 +78,7 @@ def test_nearest_vertex_volumes_of_regular_simplices_and_segments():
 def test_voronoi_formula_holds_on_non_obtuse_triangles_only():
     tri = np.random.default_rng(5).normal(size=(300, 3, 3))
     exact = nearest_vertex_volumes(tri)
-    formula = vertex_areas(tri.reshape(-1, 3), np.arange(900).reshape(300, 3), "voronoi").reshape(300, 3)
+    formula = vertex_areas(tri.reshape(-1, 3), np.arange(900).reshape(300, 3), area="voronoi").reshape(300, 3)
     a = tri[:, [1, 2, 0]] - tri
     b = tri[:, [2, 0, 1]] - tri
     obtuse = (np.einsum("mka,mka->mk", a, b) < 0).any(axis=1)
@@ -98,7 +98,7 @@ def test_thales(x, y):
 
 
 def test_principal_curvatures_from_h_and_k_on_a_sphere_and_the_torus():
-    pts, hull = sphere_hull(3, 2000, radius=2.0, seed=0)
+    pts, hull = sphere_hull(n_dims=3, n_points=2000, radius=2.0, seed=0)
     k1, k2 = principal_curvatures_from_mean_and_gaussian(pts, hull)
     assert np.median(k1) == pytest.approx(0.5, rel=0.02) and np.median(k2) == pytest.approx(0.5, rel=0.02)
     v, f = torus_grid(80)
@@ -113,7 +113,7 @@ def test_printed_sum_has_no_stationary_point():
     v, f = torus_grid(40)
     g = printed_sum_gradient(v, f)
     assert np.all(g >= 1 / np.sqrt(2) - 1e-12) and np.all(g <= 1 + 1e-12)
-    pts, hull = sphere_hull(3, 500, seed=2)
+    pts, hull = sphere_hull(n_dims=3, n_points=500, seed=2)
     assert np.nanmin(printed_sum_gradient(pts, hull)) >= 1 / np.sqrt(2) - 1e-12
 
 

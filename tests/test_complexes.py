@@ -47,7 +47,7 @@ def assert_valid(f):
 @pytest.mark.parametrize("dim, eps, max_dim", [(2, 0.25, 2), (3, 0.3, 3), (5, 0.6, 2)])
 def test_rips_equals_gudhi(dim, eps, max_dim):
     pts = np.random.default_rng(dim).random((50, dim))
-    f = rips(pts, eps, max_dim)
+    f = rips(pts, max_radius=eps, max_dim=max_dim)
     ref = gudhi_dict(gudhi.RipsComplex(points=pts, max_edge_length=2 * eps).create_simplex_tree(max_dimension=max_dim))
     ours = as_dict(f)
     assert set(ours) == set(ref)
@@ -65,7 +65,7 @@ def test_rips_kd_tree_path_equals_gudhi():
     a, b = edges_within(pts, 0.06), flag_complex.pairwise_edges(pts, 0.06)  # k-d tree vs brute force
     np.testing.assert_array_equal(a[0], b[0])
     np.testing.assert_array_equal(a[1], b[1])
-    f = rips(pts, 0.04, 3)
+    f = rips(pts, max_radius=0.04, max_dim=3)
     ref = gudhi_dict(gudhi.RipsComplex(points=pts, max_edge_length=0.08).create_simplex_tree(max_dimension=3))
     ours = as_dict(f)
     assert set(ours) == set(ref)
@@ -74,7 +74,7 @@ def test_rips_kd_tree_path_equals_gudhi():
 
 def test_rips_distance_matrix_and_rows_sorted():
     pts = np.random.default_rng(1).random((30, 2))
-    a = rips(pts, 0.3, 3)
+    a = rips(pts, max_radius=0.3, max_dim=3)
     b = rips(distance_matrix=squareform(pdist(pts)), max_radius=0.3, max_dim=3)
     assert a.counts() == b.counts()
     for x, y in zip(a.simplices, b.simplices):
@@ -87,22 +87,22 @@ def test_rips_distance_matrix_and_rows_sorted():
 
 def test_rips_thesis_size_two_circles():
     # §2.4.1: 60 points per circle, ε <= 2, simplices up to dimension 2 -> 288,100 (every triple)
-    f = rips(two_circles(60), 2.0, 2)
+    f = rips(two_circles(60), max_radius=2.0, max_dim=2)
     assert len(f) == 288_100 and f.counts() == [120, 7140, 280840]
-    assert len(rips(two_circles(60), 1.0, 2)) == 181_427  # diameter <= 2 (MEASUREMENTS.md)
+    assert len(rips(two_circles(60), max_radius=1.0, max_dim=2)) == 181_427  # diameter <= 2 (MEASUREMENTS.md)
 
 
 def test_rips_small_cases():
-    f = rips([[0.0, 0.0], [3.0, 4.0]], 10, 3)
+    f = rips([[0.0, 0.0], [3.0, 4.0]], max_radius=10, max_dim=3)
     assert list(f) == [((0,), 0.0), ((1,), 0.0), ((0, 1), 2.5)]
-    assert rips([[0.0], [1.0]], 0.4, 1).counts() == [2]
-    assert rips([[0.0], [1.0]], 0.5, 0).counts() == [2]
+    assert rips([[0.0], [1.0]], max_radius=0.4, max_dim=1).counts() == [2]
+    assert rips([[0.0], [1.0]], max_radius=0.5, max_dim=0).counts() == [2]
 
 
 # ----------------------------------------------------------------------------------------- Čech
 def test_cech_values_and_gudhi_delaunay_cech():
     pts = np.random.default_rng(3).random((35, 2))
-    f = cech(pts, 0.2, 3)
+    f = cech(pts, max_radius=0.2, max_dim=3)
     assert_valid(f)
     ours = as_dict(f)
     for s, v in itertools.islice(ours.items(), 0, None, 7):
@@ -122,7 +122,7 @@ def test_cech_values_and_gudhi_delaunay_cech():
 
 def test_cech_brute_force_membership():
     pts = np.random.default_rng(4).random((12, 3))
-    f = as_dict(cech(pts, 0.3, 3))
+    f = as_dict(cech(pts, max_radius=0.3, max_dim=3))
     for k in range(1, 5):
         for s in itertools.combinations(range(12), k):
             r = smallest_enclosing_ball(pts[list(s)])[1]
@@ -134,11 +134,11 @@ def test_cech_brute_force_membership():
 def test_lemma_2_12_and_jung(seed, n, dim, eps):
     """R(X, ε) ⊆ C(X, √2 ε) ⊆ R(X, √2 ε) (Lemma 2.12); Čech radius <= Jung's bound (Theorem 2.10)."""
     pts = np.random.default_rng(seed).random((n, dim))
-    r_small = set(as_dict(rips(pts, eps, 3)))
-    c = as_dict(cech(pts, np.sqrt(2) * eps * (1 + 1e-12), 3))
-    r_big = set(as_dict(rips(pts, np.sqrt(2) * eps * (1 + 1e-12), 3)))
+    r_small = set(as_dict(rips(pts, max_radius=eps, max_dim=3)))
+    c = as_dict(cech(pts, max_radius=np.sqrt(2) * eps * (1 + 1e-12), max_dim=3))
+    r_big = set(as_dict(rips(pts, max_radius=np.sqrt(2) * eps * (1 + 1e-12), max_dim=3)))
     assert r_small <= set(c) <= r_big
-    rv = as_dict(rips(pts, np.inf, 3))
+    rv = as_dict(rips(pts, max_radius=np.inf, max_dim=3))
     for s, v in c.items():
         # Jung: radius <= diam sqrt(n / (2 (n + 1))) with diam = 2 × Rips value; Čech >= Rips value
         assert v <= 2 * rv[s] * np.sqrt(dim / (2 * (dim + 1))) * (1 + 1e-9)
@@ -241,9 +241,9 @@ def _brute_witness(D, eps, max_dim):
 def test_witness_brute_force(nu):
     rng = np.random.default_rng(nu)
     pts = rng.random((250, 2))
-    lm = maxmin_landmarks(pts, 11, seed=0)
-    f = witness(pts, lm, 0.2, 3, nu=nu)
-    D = witness_offsets(pts, lm, nu)
+    lm = maxmin_landmarks(pts, n=11, seed=0)
+    f = witness(pts, lm, max_radius=0.2, max_dim=3, nu=nu)
+    D = witness_offsets(pts, lm, nu=nu)
     ref = _brute_witness(D, 0.2, 3)
     ours = as_dict(f)
     assert set(ours) == set(ref)
@@ -260,9 +260,9 @@ def test_witness_full_complex_uses_shortcuts_correctly():
     # all simplices up to dimension 3 (ε = inf), values against brute force: exercises both the
     # lower-bound shortcut and the full scans
     pts = np.random.default_rng(5).random((400, 3))
-    lm = random_landmarks(pts, 14, seed=1)
-    f = witness(pts, lm, np.inf, 3)
-    ref = _brute_witness(witness_offsets(pts, lm, 1), np.inf, 3)
+    lm = random_landmarks(pts, n=14, seed=1)
+    f = witness(pts, lm, max_radius=np.inf, max_dim=3)
+    ref = _brute_witness(witness_offsets(pts, lm, nu=1), np.inf, 3)
     ours = as_dict(f)
     assert len(ours) == len(ref) == 14 + 91 + 364 + 1001
     assert max(abs(ours[s] - ref[s]) for s in ref) == 0.0
@@ -272,9 +272,9 @@ def test_witness_full_complex_uses_shortcuts_correctly():
 @given(st.integers(0, 10_000), st.integers(20, 150), st.integers(3, 9), st.integers(0, 2), st.floats(0.0, 0.6))
 def test_witness_random_against_brute_force(seed, n, n_landmarks, nu, eps):
     pts = np.random.default_rng(seed).random((n, 3))
-    lm = random_landmarks(pts, n_landmarks, seed=seed)
-    ours = as_dict(witness(pts, lm, eps, 3, nu=nu))
-    ref = _brute_witness(witness_offsets(pts, lm, nu), eps, 3)
+    lm = random_landmarks(pts, n=n_landmarks, seed=seed)
+    ours = as_dict(witness(pts, lm, max_radius=eps, max_dim=3, nu=nu))
+    ref = _brute_witness(witness_offsets(pts, lm, nu=nu), eps, 3)
     assert ours == ref
 
 
@@ -283,8 +283,8 @@ def test_witness_kernel_paths_agree():
     from thesis_lib._core import witness_complex
 
     pts = np.random.default_rng(8).random((3000, 4))
-    lm = maxmin_landmarks(pts, 16, seed=0)
-    D = np.ascontiguousarray(witness_offsets(pts, lm, 1))
+    lm = maxmin_landmarks(pts, n=16, seed=0)
+    D = np.ascontiguousarray(witness_offsets(pts, lm, nu=1))
     ev, arg = witness_complex.edge_values(D)
     order = np.argsort(D, axis=1, kind="stable")
     sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
@@ -301,13 +301,13 @@ def test_witness_matches_gudhi_strong_witness_at_zero():
     # two rules agree on which simplices are witnessed at ε = 0 (max d <= m  <=>  max d² <= m²)
     rng = np.random.default_rng(11)
     pts = rng.random((300, 2))
-    lm = maxmin_landmarks(pts, 12, seed=3)
+    lm = maxmin_landmarks(pts, n=12, seed=3)
     ref = gudhi_dict(
         gudhi.EuclideanStrongWitnessComplex(landmarks=pts[lm], witnesses=pts).create_simplex_tree(
             max_alpha_square=0.05, limit_dimension=3
         )
     )
-    ours = as_dict(witness(pts, lm, np.inf, 3, nu=1))
+    ours = as_dict(witness(pts, lm, max_radius=np.inf, max_dim=3, nu=1))
     assert {s for s, v in ours.items() if v == 0} == {s for s, v in ref.items() if v <= 0}
     # the same values after squaring, brute force
     dist = np.sqrt(((pts[lm][:, None, :] - pts[None]) ** 2).sum(-1))
@@ -318,9 +318,9 @@ def test_witness_matches_gudhi_strong_witness_at_zero():
 
 def test_lazy_witness_is_flag_and_contains_witness():
     pts = np.random.default_rng(2).random((300, 2))
-    lm = maxmin_landmarks(pts, 15, seed=0)
-    lazy = as_dict(lazy_witness(pts, lm, 0.15, 3))
-    strict = as_dict(witness(pts, lm, 0.15, 3))
+    lm = maxmin_landmarks(pts, n=15, seed=0)
+    lazy = as_dict(lazy_witness(pts, lm, max_radius=0.15, max_dim=3))
+    strict = as_dict(witness(pts, lm, max_radius=0.15, max_dim=3))
     assert set(strict) <= set(lazy)
     for s, v in lazy.items():
         if len(s) == 2:
@@ -348,7 +348,7 @@ def test_nerve_of_balls_is_cech():
     eps = 0.56
     g = np.stack(np.meshgrid(np.linspace(-1, 3, 801), np.linspace(-1, 2, 601)), -1).reshape(-1, 2)
     cover = [set(np.flatnonzero(np.hypot(*(g - p).T) <= eps).tolist()) for p in pts]
-    assert nerve(cover) == sorted(as_dict(cech(pts, eps, 3)), key=lambda s: (len(s), s))
+    assert nerve(cover) == sorted(as_dict(cech(pts, max_radius=eps, max_dim=3)), key=lambda s: (len(s), s))
 
 
 @settings(deadline=None, max_examples=25)
@@ -370,7 +370,7 @@ def test_relabelling_invariance(seed, n):
     rng = np.random.default_rng(seed)
     pts = rng.random((n, 2))
     perm = rng.permutation(n)
-    for build in (lambda p: rips(p, 0.3, 2), lambda p: cech(p, 0.3, 2), alpha):
+    for build in (lambda p: rips(p, max_radius=0.3, max_dim=2), lambda p: cech(p, max_radius=0.3, max_dim=2), alpha):
         a, b = build(pts), build(pts[perm])
         assert a.counts() == b.counts()
         np.testing.assert_allclose(np.sort(np.concatenate(a.values)), np.sort(np.concatenate(b.values)),
@@ -386,15 +386,15 @@ GOOD = np.random.default_rng(0).random((10, 2))
 @pytest.mark.parametrize(
     "call, msg",
     [
-        (lambda: rips([[0.0, np.nan], [1.0, 1.0]], 1.0, 2), "NaN"),
-        (lambda: cech([[np.inf, 0.0]], 1.0, 2), "NaN or infinite"),
+        (lambda: rips([[0.0, np.nan], [1.0, 1.0]], max_radius=1.0, max_dim=2), "NaN"),
+        (lambda: cech([[np.inf, 0.0]], max_radius=1.0, max_dim=2), "NaN or infinite"),
         (lambda: alpha([[0.0, np.nan], [1, 0], [0, 1]]), "NaN"),
-        (lambda: rips(GOOD, -1.0, 2), "non-negative"),
-        (lambda: cech(GOOD, float("nan"), 2), "NaN"),
-        (lambda: witness(GOOD, [0, 1], -0.5, 2), "non-negative"),
-        (lambda: rips(GOOD, 1.0, -1), "max_dim"),
-        (lambda: cech(GOOD, 1.0, 1.5), "max_dim"),
-        (lambda: lazy_witness(GOOD, [0, 1], 1.0, -2), "max_dim"),
+        (lambda: rips(GOOD, max_radius=-1.0, max_dim=2), "non-negative"),
+        (lambda: cech(GOOD, max_radius=float("nan"), max_dim=2), "NaN"),
+        (lambda: witness(GOOD, [0, 1], max_radius=-0.5, max_dim=2), "non-negative"),
+        (lambda: rips(GOOD, max_radius=1.0, max_dim=-1), "max_dim"),
+        (lambda: cech(GOOD, max_radius=1.0, max_dim=1.5), "max_dim"),
+        (lambda: lazy_witness(GOOD, [0, 1], max_radius=1.0, max_dim=-2), "max_dim"),
         (lambda: rips(), "exactly one"),
         (lambda: rips(distance_matrix=[[0, 1], [2, 0]]), "symmetric"),
         (lambda: rips(distance_matrix=[[0, -1], [-1, 0]]), "negative"),
@@ -405,13 +405,13 @@ GOOD = np.random.default_rng(0).random((10, 2))
         (lambda: delaunay(GOOD, -np.ones(10)), "squared radii"),
         (lambda: alpha(GOOD, np.ones(9)), "one weight per point"),
         (lambda: alpha(GOOD, np.full(10, np.nan)), "NaN"),
-        (lambda: witness(GOOD, np.arange(11), 1.0, 2), "11 landmarks but only 10 points"),
-        (lambda: witness(GOOD, [0, 0], 1.0, 2), "repeat"),
-        (lambda: witness(GOOD, [0, 10], 1.0, 2), "indices"),
-        (lambda: witness(GOOD, [0.5, 1.0], 1.0, 2), "integer"),
-        (lambda: witness(GOOD, [0, 1], 1.0, 2, nu=3), "exceeds"),
-        (lambda: lazy_witness(GOOD, [0, 1], 1.0, 2, nu=-1), "nu"),
-        (lambda: maxmin_landmarks(GOOD, 11, seed=0), "cannot choose"),
+        (lambda: witness(GOOD, np.arange(11), max_radius=1.0, max_dim=2), "11 landmarks but only 10 points"),
+        (lambda: witness(GOOD, [0, 0], max_radius=1.0, max_dim=2), "repeat"),
+        (lambda: witness(GOOD, [0, 10], max_radius=1.0, max_dim=2), "indices"),
+        (lambda: witness(GOOD, [0.5, 1.0], max_radius=1.0, max_dim=2), "integer"),
+        (lambda: witness(GOOD, [0, 1], max_radius=1.0, max_dim=2, nu=3), "exceeds"),
+        (lambda: lazy_witness(GOOD, [0, 1], max_radius=1.0, max_dim=2, nu=-1), "nu"),
+        (lambda: maxmin_landmarks(GOOD, n=11, seed=0), "cannot choose"),
     ],
 )
 def test_bad_input(call, msg):
@@ -435,15 +435,15 @@ def test_alpha_random_against_gudhi(seed, n, dim, weighted):
 # ------------------------------------------------------------------------------------ landmarks
 def test_landmarks():
     pts = np.random.default_rng(4).random((300, 2))
-    lm = maxmin_landmarks(pts, 25, seed=2)
+    lm = maxmin_landmarks(pts, n=25, seed=2)
     assert len(set(lm.tolist())) == 25
-    np.testing.assert_array_equal(lm, maxmin_landmarks(pts, 25, seed=2))
+    np.testing.assert_array_equal(lm, maxmin_landmarks(pts, n=25, seed=2))
     d = np.sqrt(((pts[:, None, :] - pts[None]) ** 2).sum(-1))
     for i in range(1, 25):
         # the sequential maxmin rule (§2.1.2): the i-th landmark is farthest from the first i - 1
         nearest = d[:, lm[:i]].min(axis=1)
         assert nearest[lm[i]] == pytest.approx(nearest.max())
-    rnd = random_landmarks(pts, 25, seed=2)
+    rnd = random_landmarks(pts, n=25, seed=2)
     assert np.all(np.diff(rnd) > 0) and rnd.max() < 300
     from thesis_lib.complexes import covering_radius
 
@@ -451,14 +451,14 @@ def test_landmarks():
     # maxmin covers better than random here, as the thesis observes (Figure 2.13)
     assert covering_radius(pts, lm) < covering_radius(pts, rnd)
     with pytest.raises(ValueError, match="number of landmarks must be >= 1"):
-        random_landmarks(pts, 0, seed=0)
+        random_landmarks(pts, n=0, seed=0)
 
 
 def test_landmarks_on_duplicate_points():
     # maxmin returned a repeated index once the distinct points were exhausted
     pts = np.array([[0.0, 0.0], [1.0, 0.0], [0.0, 0.0], [1.0, 0.0], [0.5, 3.0]])
     for seed in range(5):
-        lm = maxmin_landmarks(pts, 5, seed=seed)
+        lm = maxmin_landmarks(pts, n=5, seed=seed)
         assert sorted(lm.tolist()) == [0, 1, 2, 3, 4]
         # the distinct points come first, then copies (at distance 0)
         assert len({tuple(pts[i]) for i in lm[:3]}) == 3

@@ -87,8 +87,8 @@ def test_flag_kernels_refuse_bad_input():
 
 def witness_input(n_points=400, n_landmarks=12, seed=3):
     pts = np.random.default_rng(seed).random((n_points, 3))
-    lm = maxmin_landmarks(pts, n_landmarks, seed=0)
-    D = np.ascontiguousarray(witness_offsets(pts, lm, 1))
+    lm = maxmin_landmarks(pts, n=n_landmarks, seed=0)
+    D = np.ascontiguousarray(witness_offsets(pts, lm, nu=1))
     ev, arg = witness_complex.edge_values(D)
     order = np.argsort(D, axis=1, kind="stable")
     sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))

@@ -71,7 +71,7 @@ def test_engine_agrees_with_the_thesis_algorithm(seed):
     rng = np.random.default_rng(seed)
     K = rips(rng.random((int(rng.integers(3, 14)), 2)), max_radius=0.5, max_dim=int(rng.integers(1, 4)))
     p = int(rng.choice([2, 3, 5]))
-    fast, slow = persistence(K, p), compute_intervals(K, p)
+    fast, slow = persistence(K, coefficients=p), compute_intervals(K, coefficients=p)
     for d in range(K.dimension):
         assert np.array_equal(np.sort(fast.intervals(d), axis=0), np.sort(slow.intervals(d), axis=0))
 

@@ -31,13 +31,13 @@ def _coherent(f):
 
 
 def _torus_normals(pts, R=10.0, r=5.0):
-    u, v = torus_uv(pts, R, r)
+    u, v = torus_uv(pts, R=R, r=r)
     return np.column_stack([np.cos(u) * np.cos(v), np.sin(u) * np.cos(v), np.sin(v)])
 
 
 @pytest.fixture(scope="module")
 def torus3000():
-    pts = sample_torus(3000, 10.0, 5.0, seed=11)
+    pts = sample_torus(3000, R=10.0, r=5.0, seed=11)
     return pts, crust(pts)
 
 
@@ -65,7 +65,7 @@ def test_crust_mesh_feeds_curvature(torus3000):
 
 
 def test_poles_lie_along_normals():
-    pts = sample_torus(2000, 10.0, 5.0, seed=5)
+    pts = sample_torus(2000, R=10.0, r=5.0, seed=5)
     pp, pm = poles(pts)
     nrm = _torus_normals(pts)
     for q in (pp, pm):
@@ -95,9 +95,9 @@ def _candidates_by_definition(pts, theta=np.pi / 4):
 @pytest.mark.parametrize(
     "pts",
     [
-        sample_torus(1500, 10.0, 5.0, seed=3),
-        sample_torus(400, 10.0, 5.0, seed=4),
-        sample_sphere(800, 3, 2.0, seed=6),
+        sample_torus(1500, R=10.0, r=5.0, seed=3),
+        sample_torus(400, R=10.0, r=5.0, seed=4),
+        sample_sphere(800, n_dims=3, radius=2.0, seed=6),
         sample_catenoid(1200, seed=7),  # open surface: convex-hull faces with Voronoi rays
     ],
     ids=["torus1500", "torus400", "sphere", "catenoid"],
@@ -110,7 +110,7 @@ def test_voronoi_filter_equals_delaunay_of_samples_and_poles(pts):
 
 
 def test_crust_on_sphere():
-    pts = sample_sphere(1500, 3, 2.0, seed=2)
+    pts = sample_sphere(1500, n_dims=3, radius=2.0, seed=2)
     f = crust(pts)
     assert np.all(facet_degrees(f) == 2) and euler_characteristic(f) == 2
     p = pts[f]
@@ -121,7 +121,7 @@ def test_crust_on_sphere():
 @settings(deadline=None, max_examples=4, derandomize=True)
 @given(st.integers(0, 10**6))
 def test_crust_torus_random_seeds(seed):
-    pts = sample_torus(2000, 10.0, 5.0, seed=seed)
+    pts = sample_torus(2000, R=10.0, r=5.0, seed=seed)
     f = crust(pts)
     deg = facet_degrees(f)
     assert deg.max() <= 2  # always a pseudo-manifold with boundary at worst
@@ -137,7 +137,7 @@ def test_crust_of_chosen_points_is_closed(n):
 
     from thesis_lib.meshes.crust_geometry import circumcentres
 
-    vertices, grid_faces = torus_grid(n, 10.0, 5.0)
+    vertices, grid_faces = torus_grid(n, R=10.0, r=5.0)
     flat = ~circumcentres(vertices[Delaunay(vertices).simplices])[1]
     assert flat.sum() > n  # the degenerate configuration really occurs
     f = crust(vertices)
@@ -172,7 +172,7 @@ def _torus_core(x, R=10.0):
 
 
 def test_sparse_sample_falls_back_to_untrimmed_walk():
-    pts = sample_torus(100, 10.0, 5.0, seed=1)
+    pts = sample_torus(100, R=10.0, r=5.0, seed=1)
     f = crust(pts)
     assert len(f) > 0 and facet_degrees(f).max() <= 2
     with pytest.raises(ValueError, match="too sparse"):
@@ -180,7 +180,7 @@ def test_sparse_sample_falls_back_to_untrimmed_walk():
 
 
 def test_ball_pivoting_reference():
-    pts = sample_sphere(1000, 3, 1.0, seed=0)
+    pts = sample_sphere(1000, n_dims=3, radius=1.0, seed=0)
     n = estimate_normals(pts)
     assert np.all(np.einsum("ij,ij->i", n, pts) > 0.9)
     f = ball_pivoting(pts, n)
@@ -198,25 +198,25 @@ def test_bad_input():
     with pytest.raises(ValueError, match="NaN"):
         crust(np.array([[np.nan, 0, 0]] + [[i, i * i, 1.0] for i in range(6)]))
     with pytest.raises(ValueError, match="theta"):
-        crust_candidates(sample_sphere(50, 3), theta=2.0)
+        crust_candidates(sample_sphere(50, n_dims=3), theta=2.0)
     with pytest.raises(ValueError, match="far"):
-        crust(sample_sphere(50, 3), far=-1.0)
+        crust(sample_sphere(50, n_dims=3), far=-1.0)
     with pytest.raises(ValueError, match="triangles"):
         extract_manifold(np.eye(3), np.zeros((0, 3), dtype=int))
     with pytest.raises(ValueError, match="normals"):
-        ball_pivoting(sample_sphere(50, 3), normals=np.zeros((3, 3)))
+        ball_pivoting(sample_sphere(50, n_dims=3), normals=np.zeros((3, 3)))
     with pytest.raises(ValueError, match="radii"):
-        ball_pivoting(sample_sphere(50, 3), radii=[-1.0])
+        ball_pivoting(sample_sphere(50, n_dims=3), radii=[-1.0])
 
 
 def test_reconstruct_surface_dispatch():
     from thesis_lib.meshes import reconstruct_surface
 
-    pts = sample_torus(1500, 10.0, 5.0, seed=3)
-    assert np.array_equal(reconstruct_surface(pts, "crust"), crust(pts))
+    pts = sample_torus(1500, R=10.0, r=5.0, seed=3)
+    assert np.array_equal(reconstruct_surface(pts, algorithm="crust"), crust(pts))
     open_cat = sample_catenoid(800, seed=2)
-    assert np.array_equal(reconstruct_surface(open_cat, "crust", closed=False), crust(open_cat, prune=False))
-    f = reconstruct_surface(pts, "ball-pivoting")
+    assert np.array_equal(reconstruct_surface(open_cat, algorithm="crust", closed=False), crust(open_cat, prune=False))
+    f = reconstruct_surface(pts, algorithm="ball-pivoting")
     assert f.shape[1] == 3 and facet_degrees(f).max() <= 2
     with pytest.raises(ValueError, match="unknown reconstruction"):
-        reconstruct_surface(pts, "poisson")
+        reconstruct_surface(pts, algorithm="poisson")

@@ -48,13 +48,13 @@ def _s1_times_s2(n, R=2.0, r=1.0, seed=0):
 
 @pytest.fixture(scope="module")
 def sphere3():
-    pts = sample_sphere(400, 4, 2.0, seed=3)
+    pts = sample_sphere(400, n_dims=4, radius=2.0, seed=3)
     return pts, crust_nd(pts)
 
 
 @pytest.mark.parametrize("seed", [0, 5])
 def test_n2_equals_the_3d_crust(seed):
-    pts = sample_torus(1500, 10.0, 5.0, seed=seed)
+    pts = sample_torus(1500, R=10.0, r=5.0, seed=seed)
     ours = crust_nd(pts)
     ref = crust(pts)
     assert ours.report.is_closed_manifold
@@ -64,7 +64,7 @@ def test_n2_equals_the_3d_crust(seed):
 def test_n2_candidates_equal_the_3d_crust():
     from thesis_lib.meshes import crust_candidates
 
-    pts = sample_torus(800, 10.0, 5.0, seed=9)
+    pts = sample_torus(800, R=10.0, r=5.0, seed=9)
     assert np.array_equal(crust_nd_candidates(pts), crust_candidates(pts))
 
 
@@ -143,7 +143,7 @@ def test_curve_in_the_plane():
 def test_open_three_catenoid_has_clean_interior_stars():
     pts, prm = sample_n_catenoid(3000, seed=0, return_params=True)
     res = crust_nd(pts, closed=False)
-    good = manifold_vertices(res.simplices, len(pts))
+    good = manifold_vertices(res.simplices, n_points=len(pts))
     assert good.sum() > 0.25 * len(pts)
     H = mean_curvature(pts, res.simplices, area="voronoi")
     assert np.all(np.isfinite(H[good]))
@@ -181,13 +181,13 @@ def test_bad_input():
     with pytest.raises(ValueError, match=r"R\^5.*n\^⌈d/2⌉"):
         crust_nd(rng.normal(size=(1000, 5)))
     with pytest.raises(ValueError, match="too few samples"):
-        crust_nd(sample_sphere(6, 4))
+        crust_nd(sample_sphere(6, n_dims=4))
     with pytest.raises(ValueError, match="affine subspace"):
-        crust_nd(np.column_stack([sample_sphere(100, 3), np.zeros(100)]))
+        crust_nd(np.column_stack([sample_sphere(100, n_dims=3), np.zeros(100)]))
     with pytest.raises(ValueError, match="theta"):
-        crust_nd(sample_sphere(100, 4), theta=0.0)
+        crust_nd(sample_sphere(100, n_dims=4), theta=0.0)
     with pytest.raises(ValueError, match="duplicate"):
-        crust_nd(np.vstack([sample_sphere(50, 4), sample_sphere(50, 4)[:1]]))
+        crust_nd(np.vstack([sample_sphere(50, n_dims=4), sample_sphere(50, n_dims=4)[:1]]))
     with pytest.raises(ValueError, match="R\\^d with d >= 2"):
         crust_nd(rng.normal(size=(50, 1)))
     # points filling a 4-D ball are no hypersurface: refused with what failed

@@ -191,18 +191,18 @@ def test_mixed_area_equals_libigl_voronoi_mass():
     rng = np.random.default_rng(2)
     x, f = sphere_hull(400, seed=2)
     x = x + rng.normal(scale=0.03, size=x.shape)
-    ours = vertex_areas(x, f, "mixed")
+    ours = vertex_areas(x, f, area="mixed")
     M = igl.massmatrix(x, f, igl.MASSMATRIX_TYPE_VORONOI).diagonal()
     np.testing.assert_allclose(ours, M, rtol=1e-12)
     Mb = igl.massmatrix(x, f, igl.MASSMATRIX_TYPE_BARYCENTRIC).diagonal()
-    np.testing.assert_allclose(vertex_areas(x, f, "barycentric"), Mb, rtol=1e-12)
+    np.testing.assert_allclose(vertex_areas(x, f, area="barycentric"), Mb, rtol=1e-12)
 
 
 def test_voronoi_area_thesis_formula_and_libigl_on_non_obtuse():
     rng = np.random.default_rng(3)
     x, f = fibonacci_sphere(400, radius=1.0)  # mostly acute, some obtuse triangles
     x = x + rng.normal(scale=0.01, size=x.shape)
-    vor = vertex_areas(x, f, "voronoi")
+    vor = vertex_areas(x, f, area="voronoi")
     # A_vor = 1/8 sum_j (cot a_ij + cot b_ij) |x_i - x_j|^2 (§3.3.2), written per corner
     expected = np.zeros(len(x))
     obtuse = np.zeros(len(x), dtype=bool)
@@ -229,7 +229,7 @@ def test_every_area_kind_sums_to_total_area(n):
     total = total_hyperarea(x, s)
     kinds = ["voronoi", "barycentric"] + (["mixed"] if n == 2 else [])
     for kind in kinds:
-        assert vertex_areas(x, s, kind).sum() == pytest.approx(total, rel=1e-12)
+        assert vertex_areas(x, s, area=kind).sum() == pytest.approx(total, rel=1e-12)
     np.testing.assert_allclose(simplex_hyperareas(x, s).sum(), total)
 
 
@@ -238,7 +238,7 @@ def test_circumcentric_fractions_general_n():
     rng = np.random.default_rng(5)
     p = rng.normal(size=(50, 3, 3))
     x = validate_mesh(p.reshape(-1, 3), np.arange(150).reshape(50, 3))
-    tri = vertex_areas(x.vertices, x.simplices, "voronoi").reshape(50, 3) / x.areas[:, None]
+    tri = vertex_areas(x.vertices, x.simplices, area="voronoi").reshape(50, 3) / x.areas[:, None]
     np.testing.assert_allclose(circumcentric_fractions(p), tri, atol=1e-10)
     # regular simplex: equal shares; right-corner tetrahedron: the corner gets 3/4 of the volume
     reg = np.eye(4)[None]
@@ -284,7 +284,7 @@ def test_gaussian_curvature_matches_libigl():
     np.testing.assert_allclose(angle_defects(x, f), defect, atol=1e-12)
     M = igl.massmatrix(x, f, igl.MASSMATRIX_TYPE_VORONOI).diagonal()
     np.testing.assert_allclose(gaussian_curvature(x, f), defect / M, rtol=1e-10)
-    Mb = vertex_areas(x, f, "barycentric")
+    Mb = vertex_areas(x, f, area="barycentric")
     np.testing.assert_allclose(gaussian_curvature(x, f, area="barycentric"), defect / Mb, rtol=1e-10)
 
 
@@ -434,7 +434,7 @@ def tetrahedron():
         mean_curvature,
         gaussian_curvature,
         angle_defects,
-        lambda x, f: vertex_areas(x, f, "voronoi"),
+        lambda x, f: vertex_areas(x, f, area="voronoi"),
         shape_operator,
         principal_curvatures,
     ],
@@ -470,7 +470,7 @@ def test_bad_options_and_dimensions():
     with pytest.raises(ValueError, match="unknown area"):
         mean_curvature(x, f, area="hexagonal")
     with pytest.raises(ValueError, match="unknown area"):
-        vertex_areas(x, f, "hexagonal")
+        vertex_areas(x, f, area="hexagonal")
     with pytest.raises(ValueError, match="unknown edge_weights"):
         shape_operator(x, f, edge_weights="random")
     with pytest.raises(ValueError, match="unknown normals"):
@@ -551,7 +551,7 @@ def _pinched():
 @pytest.mark.parametrize(
     "fn",
     [
-        lambda v, f: vertex_areas(v, f, "mixed"),
+        lambda v, f: vertex_areas(v, f, area="mixed"),
         lambda v, f: mean_curvature(v, f),
         lambda v, f: mean_curvature_vector(v, f),
         lambda v, f: gaussian_curvature(v, f),
@@ -619,7 +619,7 @@ def test_scale_covariance_up_to_the_float_range_and_refusal_beyond(n):
     from thesis_lib.curvature.validate import SCALE_BITS
     from thesis_lib.meshes import convex_hull_surface, sample_sphere
 
-    pts = sample_sphere(150, n + 1, seed=n)
+    pts = sample_sphere(150, n_dims=n + 1, seed=n)
     faces = convex_hull_surface(pts)
     area = "mixed" if n == 2 else "voronoi"
     limit = SCALE_BITS // (2 * n)
@@ -635,3 +635,63 @@ def test_scale_covariance_up_to_the_float_range_and_refusal_beyond(n):
             warnings.simplefilter("error")  # refused with no overflow warning on the way
             with pytest.raises(ValueError, match="rescale the vertices"):
                 mean_curvature(pts * 2.0**bits, faces, area=area)
+
+
+# ----------------------------------------------------------------------------- a triangle soup
+def soup(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The mesh split into a triangle soup: each triangle has its own three vertices (as a mesh read
+    from a textured OBJ file is split at its seams)."""
+    return vertices[faces.ravel()], np.arange(3 * len(faces)).reshape(-1, 3)
+
+
+@pytest.mark.parametrize("function", [mean_curvature, gaussian_curvature])
+def test_a_triangle_soup_warns_with_the_remedy_and_merging_restores_the_curvature(function):
+    import warnings
+
+    from thesis_lib.meshes import merge_coincident
+    from thesis_lib.meshes import torus_grid as mesh_torus_grid
+
+    vertices, faces = mesh_torus_grid(16)
+    original = function(vertices, faces)
+    assert np.all(np.isfinite(original))
+    sv, sf = soup(vertices, faces)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        split = function(sv, sf)
+    assert np.all(np.isnan(split))  # every vertex of a soup is on a boundary
+    assert len(caught) == 1 and caught[0].filename == __file__
+    message = str(caught[0].message)
+    assert "merge_coincident(vertices, simplices)" in message and f"{len(sv)} boundary vertices" in message
+    mv, mf, kept = merge_coincident(sv, sf)
+    assert len(mv) == len(vertices)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        merged = function(mv, mf)
+    # merged vertex i is soup vertex kept[i], that is original vertex faces.ravel()[kept[i]]
+    np.testing.assert_allclose(merged, original[faces.ravel()[kept]], rtol=1e-12, atol=0)
+
+
+def test_a_split_seam_warns_and_an_open_or_closed_mesh_does_not():
+    import warnings
+
+    from thesis_lib.meshes import torus_grid as mesh_torus_grid
+
+    vertices, faces = mesh_torus_grid(12)
+    # cut the torus along its seam u = 0 by giving the triangles on one side copies of the seam vertices
+    seam = np.flatnonzero(np.isclose(np.arctan2(vertices[:, 1], vertices[:, 0]), 0.0))
+    copies = np.arange(len(vertices), len(vertices) + len(seam))
+    remap = np.arange(len(vertices))
+    remap[seam] = copies
+    side = np.any(np.arctan2(vertices[faces, 1], vertices[faces, 0]) < -1e-9, axis=1)
+    cut = faces.copy()
+    cut[side] = remap[faces[side]]
+    cut_vertices = np.vstack([vertices, vertices[seam]])
+    with pytest.warns(UserWarning, match=f"{2 * len(seam)} boundary vertices lie at exactly") as caught:
+        H = mean_curvature(cut_vertices, cut)
+    assert len(caught) == 1
+    assert np.count_nonzero(np.isnan(H)) == 2 * len(seam)  # the seam's two copies, and nothing else
+    # a closed mesh and an open one without coincident vertices are not warned about
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        mean_curvature(vertices, faces)
+        mean_curvature(vertices, faces[~side])

@@ -197,20 +197,20 @@ def check_mesh(v: np.ndarray, s: np.ndarray) -> dict[str, float]:
     for method, tol in (("gram", TOL), ("cot", TOL_COT)):
         vec = mean_curvature_vector(v, s, method=method)
         ratio(f"vector-{method}", np.abs(vec - r["vector"]).max(axis=1), tol * r["size"])
-    a = vertex_areas(v, s, "barycentric")
+    a = vertex_areas(v, s, area="barycentric")
     ratio("barycentric", np.abs(a - r["barycentric"]), 1e-12 * r["barycentric"])
-    h = mean_curvature(v, s, "barycentric")
+    h = mean_curvature(v, s, area="barycentric")
     ratio("H-barycentric", np.abs(h - r["H_barycentric"]),
           TOL * r["size"] / (n * r["barycentric"]) + 1e-12 * r["H_barycentric"])
     if n == 2:
         for kind in ("mixed", "voronoi"):
-            a = vertex_areas(v, s, kind)
+            a = vertex_areas(v, s, area=kind)
             scale = r["barycentric"] if kind == "mixed" else r["voronoi_size"]
             ratio(kind, np.abs(a - r[kind]), (1e-13 if kind == "mixed" else TOL) * scale)
-        h = mean_curvature(v, s, "mixed")
+        h = mean_curvature(v, s, area="mixed")
         ratio("H-mixed", np.abs(h - r["H_mixed"]), TOL * r["size"] / (n * r["mixed"]) + 1e-12 * r["H_mixed"])
         ratio("defect", np.abs(angle_defects(v, s) - r["defect"]), np.full(len(v), TOL))
-        k = gaussian_curvature(v, s, "mixed")
+        k = gaussian_curvature(v, s, area="mixed")
         ratio("K-mixed", np.abs(k - r["K_mixed"]), TOL / r["mixed"] + 1e-12 * np.abs(r["K_mixed"]))
     return worst
 
@@ -243,7 +243,7 @@ def test_spike_vertex_of_aspect_5e9():
     s = np.array([[i, (i + 1) % 4, 4] for i in range(4)] + [[(i + 1) % 4, i, 5] for i in range(4)])
     assert simplex_aspects(v, s).max() > 1e9
     r = reference(v, s)
-    h = mean_curvature(v, s, "mixed")
+    h = mean_curvature(v, s, area="mixed")
     apex = len(v) - 2
     assert h[apex] == pytest.approx(r["H_mixed"][apex], rel=1e-9)
 
@@ -284,13 +284,13 @@ for key in sorted({k.split(':')[0] for k in data.files}):
     n = s.shape[1] - 1
     out[key + ':gram'] = c.mean_curvature_vector(v, s, method='gram')
     out[key + ':cot'] = c.mean_curvature_vector(v, s, method='cot')
-    out[key + ':bary'] = c.vertex_areas(v, s, 'barycentric')
-    out[key + ':vor'] = c.vertex_areas(v, s, 'voronoi')
-    out[key + ':Hb'] = c.mean_curvature(v, s, 'barycentric')
+    out[key + ':bary'] = c.vertex_areas(v, s, area='barycentric')
+    out[key + ':vor'] = c.vertex_areas(v, s, area='voronoi')
+    out[key + ':Hb'] = c.mean_curvature(v, s, area='barycentric')
     if n == 2:
-        out[key + ':mixed'] = c.vertex_areas(v, s, 'mixed')
-        out[key + ':Hm'] = c.mean_curvature(v, s, 'mixed')
-        out[key + ':K'] = c.gaussian_curvature(v, s, 'mixed')
+        out[key + ':mixed'] = c.vertex_areas(v, s, area='mixed')
+        out[key + ':Hm'] = c.mean_curvature(v, s, area='mixed')
+        out[key + ':K'] = c.gaussian_curvature(v, s, area='mixed')
         out[key + ':defect'] = c.angle_defects(v, s)
         out[key + ':hyper'] = c.simplex_hyperareas(v, s)
 np.savez(sys.argv[2], **out)
@@ -341,13 +341,13 @@ def test_well_conditioned_meshes_bit_identical_to_the_float_formulas(tmp_path):
         assert validate_mesh(v, s).ill_conditioned.size == 0
         n = s.shape[1] - 1
         new = {"gram": mean_curvature_vector(v, s, method="gram"), "cot": mean_curvature_vector(v, s, method="cot"),
-               "bary": vertex_areas(v, s, "barycentric"), "vor": vertex_areas(v, s, "voronoi"),
-               "Hb": mean_curvature(v, s, "barycentric")}
+               "bary": vertex_areas(v, s, area="barycentric"), "vor": vertex_areas(v, s, area="voronoi"),
+               "Hb": mean_curvature(v, s, area="barycentric")}
         if n == 2:
             from thesis_lib.curvature import simplex_hyperareas
 
-            new.update(mixed=vertex_areas(v, s, "mixed"), Hm=mean_curvature(v, s, "mixed"),
-                       K=gaussian_curvature(v, s, "mixed"), defect=angle_defects(v, s),
+            new.update(mixed=vertex_areas(v, s, area="mixed"), Hm=mean_curvature(v, s, area="mixed"),
+                       K=gaussian_curvature(v, s, area="mixed"), defect=angle_defects(v, s),
                        hyper=simplex_hyperareas(v, s))
         for name, value in new.items():
             ref = old[f"{key}:{name}"]
@@ -396,7 +396,7 @@ def test_circumcentric_fractions_on_bad_tetrahedra_against_60_digit_reference(fa
         areas = reference(v, s)["areas"][:, None]  # the 60-digit hyperareas
         exact = np.bincount(s.ravel(), weights=(ref * areas).ravel(), minlength=len(v))
         scale = np.bincount(s.ravel(), weights=(np.abs(ref) * areas).ravel(), minlength=len(v))
-        assert np.all(np.abs(vertex_areas(v, s, "voronoi") - exact) <= TOL * scale)
+        assert np.all(np.abs(vertex_areas(v, s, area="voronoi") - exact) <= TOL * scale)
     print(f"R4 {family}: {CIRCUMCENTRIC_CASES} meshes, {ill} tetrahedra of aspect > {ASPECT_BOUND:g}, "
           f"worst error {worst:.2g}")
     assert ill >= CIRCUMCENTRIC_CASES

@@ -34,7 +34,7 @@ pytest.importorskip("distributed")
 @pytest.fixture(scope="module")
 def client():
     """A LocalCluster of 2 single-threaded worker processes, started the way `--executor dask` does."""
-    with dask_client(None, jobs=2, retries=2) as c:
+    with dask_client(scheduler=None, jobs=2, retries=2) as c:
         yield c
 
 
@@ -89,7 +89,7 @@ def test_client_executor_runs_self_contained_and_refuses_large_outputs(client, r
 
 def test_unreachable_scheduler_is_a_clear_error_and_starts_nothing(root, capsys):
     with pytest.raises(ClusterError, match="could not reach the Dask scheduler at 'tcp://127.0.0.1:9'"):
-        with dask_client("tcp://127.0.0.1:9", timeout=3):
+        with dask_client(scheduler="tcp://127.0.0.1:9", timeout=3):
             pytest.fail("connected to nothing")
     argv = ["sweep", "toy", "-q", "-p", "n", "1", "--executor", "dask", "--scheduler", "tcp://127.0.0.1:9"]
     assert lab_cli.main(argv) == 2
@@ -117,7 +117,7 @@ def test_a_worker_without_the_project_is_named(tmp_path):
                                   env=env, cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         try:
             with pytest.raises(ClusterError, match=r"missing thesis_lib; install the project there"):
-                with dask_client(cluster.scheduler_address, timeout=60):
+                with dask_client(scheduler=cluster.scheduler_address, timeout=60):
                     pytest.fail("a worker without thesis_lib was accepted")
         finally:
             worker.kill()

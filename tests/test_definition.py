@@ -37,7 +37,7 @@ def test_the_grid_of_example_2_36():
 
 
 def test_barcode_grid_is_the_brute_force_count():
-    bars = persistence(cech(noisy_circle(25, noise=0.1, seed=1), 1.0, 2))
+    bars = persistence(cech(noisy_circle(25, noise=0.1, seed=1), max_radius=1.0, max_dim=2))
     ls, ks = [0.1, 0.2, 0.5], [0.0, 0.05, 0.3]
     assert barcode_betti_grid(bars, ls=ls, ks=ks, dim=1) == [
         [brute_force_count(bars.intervals(1), l, k) for k in ks] for l in ls]
@@ -51,7 +51,7 @@ def test_no_mismatch_on_the_examples_and_a_planted_one_is_found():
     assert barcode_definition_mismatches(good, K, ls=range(6), ks=range(6), dims=(0, 1)) == (72, 0)
     # a barcode that lost the H₁ bar (3, 4): β₁^{3,0} is 2 by the definition, 1 by the count
     h1 = good.intervals(1)
-    wrong = Barcode({0: good.intervals(0), 1: h1[h1[:, 0] != 3]}, p=2)
+    wrong = Barcode({0: good.intervals(0), 1: h1[h1[:, 0] != 3]}, coefficients=2)
     cases, bad = barcode_definition_mismatches(wrong, K, ls=range(6), ks=range(6), dims=(1,))
     assert cases == 36 and bad == 1  # only (l, k) = (3, 0) spans [3, 3] and not [3, 4]
 
@@ -66,7 +66,7 @@ def test_random_rips_filtrations_over_two_fields(seed):
 def test_squared_values_compare_cech_with_alpha():
     # the alpha filtration's values are squared radii; its ranks at (l², (l + k)² − l²) are the Čech counts
     points = noisy_circle(30, noise=0.08, seed=2)
-    bars = persistence(cech(points, 1.0, 2))
+    bars = persistence(cech(points, max_radius=1.0, max_dim=2))
     ls, ks = [0.15, 0.3, 0.6], [0.0, 0.1, 0.3]
     assert barcode_definition_mismatches(bars, alpha(points), ls=ls, ks=ks, dims=(0, 1), squared_values=True) == (18, 0)
     # without the squares they differ somewhere

@@ -102,8 +102,8 @@ def test_huge_and_tiny_coordinates(scale):
     assert delaunay(base * scale) == delaunay(base)
     # Rips and Čech values scale by s: computed correctly
     for build in (rips, cech):
-        got = build(base * scale, np.inf, 2)
-        ref = build(base, np.inf, 2)
+        got = build(base * scale, max_radius=np.inf, max_dim=2)
+        ref = build(base, max_radius=np.inf, max_dim=2)
         for (s1, v1), (s2, v2) in zip(got, ref):
             assert s1 == s2 and v1 == pytest.approx(v2 * scale, rel=1e-14)
     # alpha values scale by s²: 1e320 and 1e-340 do not fit in float64, so alpha refuses clearly

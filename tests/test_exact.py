@@ -30,30 +30,31 @@ angle = st.floats(0, 2 * np.pi, allow_nan=False)
 def test_torus_values_at_known_points():
     R, r = 10.0, 5.0
     # outer equator v = 0: κ = -1/15, -1/5; inner equator v = π: κ = +1/5, -1/5
-    assert np.allclose(torus_principal_curvatures(0.0, 0.0, R, r), [-0.2, -1 / 15])
-    assert np.isclose(torus_mean_curvature(0.0, 0.0, R, r), -(1 / 15 + 1 / 5) / 2)
-    assert np.isclose(torus_gaussian_curvature(0.0, 0.0, R, r), 1 / 75)
-    assert np.isclose(torus_mean_curvature(1.0, np.pi, R, r), 0.0)  # R + 2r cos v = 0
-    assert np.isclose(torus_gaussian_curvature(1.0, np.pi / 2, R, r), 0.0)
-    assert np.allclose(torus_point(0.0, 0.0, R, r), [15, 0, 0])
+    assert np.allclose(torus_principal_curvatures(0.0, 0.0, R=R, r=r), [-0.2, -1 / 15])
+    assert np.isclose(torus_mean_curvature(0.0, 0.0, R=R, r=r), -(1 / 15 + 1 / 5) / 2)
+    assert np.isclose(torus_gaussian_curvature(0.0, 0.0, R=R, r=r), 1 / 75)
+    assert np.isclose(torus_mean_curvature(1.0, np.pi, R=R, r=r), 0.0)  # R + 2r cos v = 0
+    assert np.isclose(torus_gaussian_curvature(1.0, np.pi / 2, R=R, r=r), 0.0)
+    assert np.allclose(torus_point(0.0, 0.0, R=R, r=r), [15, 0, 0])
 
 
 @settings(deadline=None, max_examples=25)
 @given(u=angle, v=angle)
 def test_torus_closed_forms_match_trace_det_and_numerics(u, v):
     R, r = 10.0, 5.0
-    S = torus_shape_operator(u, v, R, r)
-    assert np.isclose(np.trace(S) / 2, torus_mean_curvature(u, v, R, r))
-    assert np.isclose(np.linalg.det(S), torus_gaussian_curvature(u, v, R, r))
-    Sn = parametric_shape_operator(lambda w: torus_point(w[..., 0], w[..., 1], R, r), np.array([u, v]))
+    S = torus_shape_operator(u, v, R=R, r=r)
+    assert np.isclose(np.trace(S) / 2, torus_mean_curvature(u, v, R=R, r=r))
+    assert np.isclose(np.linalg.det(S), torus_gaussian_curvature(u, v, R=R, r=r))
+    Sn = parametric_shape_operator(lambda w: torus_point(w[..., 0], w[..., 1], R=R, r=r), np.array([u, v]))
     assert np.allclose(Sn, S, atol=1e-6)
-    uu, vv = torus_uv(torus_point(u, v, R, r), R, r)
+    uu, vv = torus_uv(torus_point(u, v, R=R, r=r), R=R, r=r)
     assert np.isclose(np.cos(uu), np.cos(u)) and np.isclose(np.sin(vv), np.sin(v), atol=1e-12)
-    assert np.isclose(torus_mean_curvature_at(torus_point(u, v, R, r), R, r), torus_mean_curvature(u, v, R, r))
-    k = torus_principal_curvatures_at(torus_point(u, v, R, r), R, r)
+    assert np.isclose(torus_mean_curvature_at(torus_point(u, v, R=R, r=r), R=R, r=r),
+                      torus_mean_curvature(u, v, R=R, r=r))
+    k = torus_principal_curvatures_at(torus_point(u, v, R=R, r=r), R=R, r=r)
     assert np.allclose(k, np.sort(np.linalg.eigvals(S).real)) and k[0] <= k[1]
     assert np.isclose(
-        torus_gaussian_curvature_at(torus_point(u, v, R, r), R, r), torus_gaussian_curvature(u, v, R, r)
+        torus_gaussian_curvature_at(torus_point(u, v, R=R, r=r), R=R, r=r), torus_gaussian_curvature(u, v, R=R, r=r)
     )
 
 
@@ -61,18 +62,18 @@ def test_torus_gauss_bonnet_numerically():
     # ∫ K dA = 2πχ = 0, dA = r (R + r cos v) du dv
     R, r = 10.0, 5.0
     v = np.linspace(0, 2 * np.pi, 2001)[:-1]
-    integrand = torus_gaussian_curvature(0.0, v, R, r) * r * (R + r * np.cos(v))
+    integrand = torus_gaussian_curvature(0.0, v, R=R, r=r) * r * (R + r * np.cos(v))
     assert abs(integrand.sum() * (2 * np.pi / 2000) * 2 * np.pi) < 1e-10
 
 
 def test_hypersphere_points_and_curvature():
     w = np.random.default_rng(0).uniform(0, np.pi, (50, 3))
-    x = hypersphere_point(w, 2.0)
+    x = hypersphere_point(w, radius=2.0)
     assert np.allclose(np.linalg.norm(x, axis=1), 2.0)
-    assert np.allclose(hypersphere_point(np.array([0.0, 1.0, 2.0]), 2.0), [2, 0, 0, 0])
-    S = parametric_shape_operator(lambda a: hypersphere_point(a, 2.0), np.array([0.7, 1.1, 0.3]))
+    assert np.allclose(hypersphere_point(np.array([0.0, 1.0, 2.0]), radius=2.0), [2, 0, 0, 0])
+    S = parametric_shape_operator(lambda a: hypersphere_point(a, radius=2.0), np.array([0.7, 1.1, 0.3]))
     assert np.allclose(np.abs(np.diag(S)), 0.5, atol=1e-6)
-    assert hypersphere_mean_curvature(2.0) == 0.5
+    assert hypersphere_mean_curvature(radius=2.0) == 0.5
 
 
 @pytest.mark.parametrize("n", [2, 3, 4])
@@ -148,17 +149,17 @@ from thesis_lib.curvature.exact import (  # noqa: E402
 def test_outer_inner_ratio_closed_form_and_brute_force():
     # R = 2r: (π + 2)(π − 1) / ((π + 1)(π − 2))
     closed_form = (np.pi + 2) * (np.pi - 1) / ((np.pi + 1) * (np.pi - 2))
-    assert torus_outer_inner_ratio(10.0, 5.0) == pytest.approx(closed_form, rel=1e-12)
+    assert torus_outer_inner_ratio(R=10.0, r=5.0) == pytest.approx(closed_form, rel=1e-12)
     for R, r in [(10.0, 5.0), (10.0, 7.0), (3.0, 1.0)]:  # R < 2r: H changes sign on the inner half
         v = (np.arange(200000) + 0.5) * 2 * np.pi / 200000
-        h = np.abs(torus_mean_curvature(0.0, v, R, r))
+        h = np.abs(torus_mean_curvature(0.0, v, R=R, r=r))
         area = R + r * np.cos(v)
         outer = np.cos(v) > 0
         mean_outer = np.sum(h[outer] * area[outer]) / area[outer].sum()
         brute = mean_outer / (np.sum(h[~outer] * area[~outer]) / area[~outer].sum())
-        assert torus_outer_inner_ratio(R, r) == pytest.approx(brute, rel=1e-8)
+        assert torus_outer_inner_ratio(R=R, r=r) == pytest.approx(brute, rel=1e-8)
     with pytest.raises(ValueError, match="radii"):
-        torus_outer_inner_ratio(1.0, 2.0)
+        torus_outer_inner_ratio(R=1.0, r=2.0)
 
 
 @pytest.mark.parametrize("n", range(1, 9))
@@ -173,12 +174,12 @@ def test_hypersphere_volume_and_the_constant_of_theorem_3_11(n):
 
 def test_hypersphere_quadrature_integrates_the_volume_element():
     for n in (2, 3, 4):
-        params, weights = hypersphere_quadrature(n, 12)
+        params, weights = hypersphere_quadrature(n, nodes=12)
         assert weights.sum() == pytest.approx(np.pi ** (n - 1) * 2 * np.pi, rel=1e-12)
         element = np.prod([np.sin(params[:, k]) ** (n - 1 - k) for k in range(n - 1)], axis=0)
         assert np.sum(weights * element) == pytest.approx(hypersphere_volume(n), rel=1e-10)
     with pytest.raises(ValueError, match="nodes"):
-        hypersphere_quadrature(2, 1)
+        hypersphere_quadrature(2, nodes=1)
 
 
 def test_ellipsoid_points_satisfy_the_equation():
@@ -196,7 +197,7 @@ def test_ellipsoid_points_satisfy_the_equation():
     [(2, [1.0, 1.5, 2.0], 24, 1e-5), (4, [1.0, 1.1, 1.2, 1.1, 1.0], 10, 1e-4), (4, [2.0] * 5, 12, 1e-6)],
 )
 def test_gauss_bonnet_chern_on_ellipsoids(n, axes, nodes, rtol):
-    params, weights = hypersphere_quadrature(n, nodes)
+    params, weights = hypersphere_quadrature(n, nodes=nodes)
     total = total_gauss_kronecker_curvature(lambda a: ellipsoid_point(a, axes), params, weights)
     assert total == pytest.approx(gauss_bonnet_chern_constant(n) * 2, rel=rtol)  # χ(S^n) = 2
 
@@ -204,7 +205,7 @@ def test_gauss_bonnet_chern_on_ellipsoids(n, axes, nodes, rtol):
 def test_gauss_bonnet_on_the_torus_and_fundamental_forms():
     t = 2 * np.pi * np.arange(120) / 120
     uv = np.stack(np.meshgrid(t, t, indexing="ij"), -1).reshape(-1, 2)
-    X = lambda w: torus_point(w[..., 0], w[..., 1], 10.0, 5.0)  # noqa: E731
+    X = lambda w: torus_point(w[..., 0], w[..., 1], R=10.0, r=5.0)  # noqa: E731
     total = total_gauss_kronecker_curvature(X, uv, np.full(len(uv), (2 * np.pi / 120) ** 2))
     assert abs(total) < 1e-6  # χ(torus) = 0
     g, B = fundamental_forms(X, uv[:5])
@@ -218,7 +219,7 @@ def test_gauss_bonnet_on_the_torus_and_fundamental_forms():
 @settings(deadline=None, max_examples=20)
 @given(angle, angle)
 def test_normal_curvature_circle_extremes_and_mean(u, v):
-    X = lambda w: torus_point(w[..., 0], w[..., 1], 10.0, 5.0)  # noqa: E731
+    X = lambda w: torus_point(w[..., 0], w[..., 1], R=10.0, r=5.0)  # noqa: E731
     kn = normal_curvature_circle(X, np.array([u, v]), nodes=64)
     k1, k2 = torus_principal_curvatures(u, v)
     # X_u ⊥ X_v, so θ = 0 and θ = π/2 (nodes 0 and 16) are the principal directions
@@ -230,6 +231,6 @@ def test_normal_curvature_circle_extremes_and_mean(u, v):
 
 def test_normal_curvature_circle_needs_a_surface():
     with pytest.raises(ValueError, match="n = 2"):
-        normal_curvature_circle(lambda a: hypersphere_point(a, 1.0), np.array([0.5, 0.6, 0.7]))
+        normal_curvature_circle(lambda a: hypersphere_point(a, radius=1.0), np.array([0.5, 0.6, 0.7]))
     with pytest.raises(ValueError, match="nodes"):
         normal_curvature_circle(lambda w: torus_point(w[..., 0], w[..., 1]), np.array([0.1, 0.2]), nodes=2)

@@ -69,7 +69,7 @@ def test_skeleton_and_threshold():
 
 def test_simplex_tree_round_trip():
     pts = np.random.default_rng(0).random((25, 2))
-    f = rips(pts, 0.3, 2)
+    f = rips(pts, max_radius=0.3, max_dim=2)
     st_ = f.to_simplex_tree()
     assert st_.num_simplices() == len(f)
     g = Filtration.from_simplex_tree(st_)
@@ -81,7 +81,7 @@ def test_simplex_tree_round_trip():
 @settings(deadline=None, max_examples=15)
 @given(st.integers(0, 10_000), st.integers(3, 25), st.floats(0.05, 0.8))
 def test_order_lists_faces_first(seed, n, eps):
-    f = rips(np.random.default_rng(seed).random((n, 3)), eps, 3)
+    f = rips(np.random.default_rng(seed).random((n, 3)), max_radius=eps, max_dim=3)
     seen = set()
     last = -np.inf
     for s, v in f:
@@ -107,14 +107,15 @@ def test_constructions_cut_at_max_dim_are_truncated():
 
     pts = datasets.two_circles(12, seed=3)
     landmarks = np.arange(0, 24, 3)
-    for f in (rips(pts, 2.0, 2), cech(pts, 1.0, 2), witness(pts, landmarks, 2.0, 2),
-              lazy_witness(pts, landmarks, 2.0, 2)):
+    for f in (rips(pts, max_radius=2.0, max_dim=2), cech(pts, max_radius=1.0, max_dim=2),
+              witness(pts, landmarks, max_radius=2.0, max_dim=2),
+              lazy_witness(pts, landmarks, max_radius=2.0, max_dim=2)):
         assert f.truncated and f.dimension == 2
         assert persistence(f, coefficients=2).complete_dimensions == (0, 1)
-    sparse = rips(pts, 0.01, 2)  # no edges at this scale: nothing was cut
+    sparse = rips(pts, max_radius=0.01, max_dim=2)  # no edges at this scale: nothing was cut
     assert sparse.dimension == 0 and sparse.truncated is False
-    full = rips(pts[:4], 10.0, 3)  # the whole 3-simplex: reaches the cut, so still marked
+    full = rips(pts[:4], max_radius=10.0, max_dim=3)  # the whole 3-simplex: reaches the cut, so still marked
     assert full.truncated
     plain = Filtration.from_simplices([[0, 1, 2]])
     assert not plain.truncated and plain.skeleton(1).truncated and not plain.skeleton(2).truncated
-    assert rips(pts, 2.0, 2).threshold(0.5).truncated
+    assert rips(pts, max_radius=2.0, max_dim=2).threshold(0.5).truncated

@@ -227,3 +227,125 @@ def test_a_bad_argument_is_reported_once_by_its_public_name(call, name):
     with pytest.raises(ValueError) as err:
         call()
     assert str(err.value).count(name) == 1, str(err.value)
+
+
+# ---------------------------------------------------------------------------- doubtful input
+def distance_matrix_of(points: np.ndarray) -> np.ndarray:
+    return np.sqrt(((points[:, None] - points[None]) ** 2).sum(axis=2))
+
+
+def cech_door(x):
+    from thesis_lib.complexes import cech
+
+    return cech(x, max_radius=np.inf, max_dim=2)
+
+
+POINT_DOORS = {
+    "rips": lambda x: rips(x, max_dim=2),
+    "rips_persistence": lambda x: rips_persistence(x, max_dim=2),
+    "rips_graph": lambda x: rips_graph(x),
+    "RipsDiagrams": lambda x: RipsDiagrams(max_dim=2).transform([x]),
+    "cech": cech_door,
+}
+
+
+def user_warnings(call) -> list:
+    """The UserWarnings of one call, none filtered out (so a warning given twice shows twice)."""
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        call()
+    return [w for w in caught if issubclass(w.category, UserWarning)]
+
+
+@pytest.mark.parametrize("door", sorted(POINT_DOORS))
+def test_points_that_look_like_a_distance_matrix_warn_once_at_the_callers_line(door):
+    dm = distance_matrix_of(cloud(3, 6, 2))
+    caught = user_warnings(lambda: POINT_DOORS[door](dm))
+    assert len(caught) == 1
+    assert "read as 6 points in R^6" in str(caught[0].message) and "distance_matrix=" in str(caught[0].message)
+    assert caught[0].filename == __file__
+    # what is not a distance matrix is read as points without a word
+    not_square, asymmetric, diagonal, negative = dm[:, :4], dm + np.triu(dm) * 0.1, dm + np.eye(6), dm.copy()
+    negative[0, 1] = negative[1, 0] = -1.0
+    for points in (not_square, asymmetric, diagonal, negative, cloud(3, 6, 6)):
+        assert user_warnings(lambda p=points: POINT_DOORS[door](p)) == []
+
+
+def test_a_distance_matrix_given_by_its_keyword_is_not_warned_about():
+    dm = distance_matrix_of(cloud(4, 7, 3))
+    assert user_warnings(lambda: rips_persistence(distance_matrix=dm, max_dim=2)) == []
+    assert user_warnings(lambda: rips(distance_matrix=dm, max_dim=2)) == []
+
+
+def test_the_warnings_of_every_rips_door_name_the_callers_line():
+    d = np.array([[0.0, 1.0], [1.0, 2.0]])  # an entry below its vertex's birth (the diagonal)
+    for call in (lambda: rips(distance_matrix=d), lambda: rips_persistence(distance_matrix=d),
+                 lambda: rips_graph(distance_matrix=d)):
+        caught = user_warnings(call)
+        assert len(caught) == 1 and "below the diagonal entry" in str(caught[0].message)
+        assert caught[0].filename == __file__
+
+
+def test_the_alpha_complex_refuses_n_points_in_r_n():
+    from thesis_lib.complexes import alpha
+
+    with pytest.raises(ValueError, match="needs at least 7 points"):
+        alpha(distance_matrix_of(cloud(5, 6, 3)))
+
+
+@pytest.mark.parametrize("seed, dim, max_dim", [(0, 2, 2), (1, 3, 3), (2, 2, 3)])
+def test_duplicate_points_are_allowed_and_the_four_doors_agree(seed, dim, max_dim):
+    rng = np.random.default_rng(seed)
+    distinct = cloud(seed, 12, dim)
+    points = np.vstack([distinct, distinct[rng.integers(0, 12, size=5)]])[rng.permutation(17)]
+    points = np.vstack([points, points[:1], points[:1]])  # a point three times over
+    barcodes = {
+        "rips_persistence": rips_persistence(points, max_dim=max_dim),
+        "persistence(rips)": persistence(rips(points, max_dim=max_dim)),
+        "compute_intervals(rips)": compute_intervals(rips(points, max_dim=max_dim)),
+    }
+    reference = [barcodes["rips_persistence"].intervals(d).tobytes() for d in range(max_dim)]
+    for door, barcode in barcodes.items():
+        assert [barcode.intervals(d).tobytes() for d in range(max_dim)] == reference, door
+    diagrams = RipsDiagrams(max_dim=max_dim).transform([points])[0]
+    assert [np.ascontiguousarray(dg).tobytes() for dg in diagrams] == reference
+    # the copies only add zero-length H0 bars, left out: the barcode of the distinct points
+    alone = rips_persistence(np.unique(points, axis=0), max_dim=max_dim)
+    assert [alone.intervals(d).tobytes() for d in range(max_dim)] == reference
+    assert len(np.unique(points, axis=0)) == 12 < len(points)
+
+
+def rotated_grid(n: int, dim: int, angle: float) -> np.ndarray:
+    """A cubic grid of n^dim points, step 0.1, turned by ``angle`` in its first plane and shifted:
+    its many tied distances are computed with different roundings, and differ by about 1e-16."""
+    grid = np.stack(np.meshgrid(*[np.arange(n)] * dim, indexing="ij"), axis=-1).reshape(-1, dim) * 0.1
+    turn = np.eye(dim)
+    turn[:2, :2] = [[np.cos(angle), -np.sin(angle)], [np.sin(angle), np.cos(angle)]]
+    return grid @ turn.T + 0.37
+
+
+@pytest.mark.parametrize("angle", [0.3, 0.7])
+def test_min_persistence_is_the_same_option_at_every_door(angle):
+    points = rotated_grid(4, 3, angle)
+    kept = {
+        "rips_persistence": rips_persistence(points, max_dim=3, min_persistence=1e-12),
+        "persistence(rips)": persistence(rips(points, max_dim=3), min_persistence=1e-12),
+    }
+    reference = [kept["rips_persistence"].intervals(d).tobytes() for d in range(3)]
+    assert [kept["persistence(rips)"].intervals(d).tobytes() for d in range(3)] == reference
+    diagrams = RipsDiagrams(max_dim=3, min_persistence=1e-12).transform([points])[0]
+    assert [np.ascontiguousarray(dg).tobytes() for dg in diagrams] == reference
+    everything = rips_persistence(points, max_dim=3)
+    assert [everything.to_diagrams(min_persistence=1e-12)[d].tobytes() for d in range(3)] == reference
+    # what was dropped: the bars of length at most 1e-12, and there were some
+    full = everything.intervals(2)
+    short = full[:, 1] - full[:, 0] <= 1e-12
+    assert short.any() and kept["rips_persistence"].intervals(2).tobytes() == full[~short].tobytes()
+    # ripser.py, on float32 distances, reports the bars that are left
+    from ripser import ripser
+
+    theirs = [len(d) for d in ripser(points, maxdim=2)["dgms"]]
+    assert [len(kept["rips_persistence"].intervals(d)) for d in range(3)] == theirs
+    assert [len(everything.intervals(d)) for d in range(3)] != theirs

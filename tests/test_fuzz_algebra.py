@@ -102,10 +102,10 @@ def test_morse_homology_of_hostile_input(obj, p, coef):
 
 
 @FUZZ
-@given(obj=complexes, method=st.one_of(st.sampled_from(["coreduction", "collapse", "lower-star", "x"]), numbers),
+@given(obj=complexes, heuristic=st.one_of(st.sampled_from(["coreduction", "collapse", "lower-star", "x"]), numbers),
        seed=st.one_of(st.none(), st.integers(-2, 5), st.floats()), values=st.one_of(st.none(), st.lists(numbers)))
-def test_morse_matching_of_hostile_input(obj, method, seed, values):
-    out = _clear("morse", lambda: morse_matching(obj, method=method, values=values, seed=seed))
+def test_morse_matching_of_hostile_input(obj, heuristic, seed, values):
+    out = _clear("morse", lambda: morse_matching(obj, heuristic=heuristic, values=values, seed=seed))
     if out is not None:
         assert is_acyclic(obj, out)
         counts = critical_counts(obj, out)

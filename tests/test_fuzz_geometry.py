@@ -117,23 +117,24 @@ def meshes(draw):
 
 # ----------------------------------------------------------------------------- targets
 COMPLEX_CALLS = {
-    "rips": lambda p, a, b: cx.rips(p, a, b),
+    "rips": lambda p, a, b: cx.rips(p, max_radius=a, max_dim=b),
     "rips_matrix": lambda p, a, b: cx.rips(distance_matrix=p, max_radius=a, max_dim=b),
-    "cech": lambda p, a, b: cx.cech(p, a, b),
+    "cech": lambda p, a, b: cx.cech(p, max_radius=a, max_dim=b),
     "alpha": lambda p, a, b: cx.alpha(p),
     "alpha_weighted": lambda p, a, b: cx.alpha(p, np.full(len(p), a) if hasattr(p, "__len__") and
                                                not isinstance(p, (str, dict)) else a),
     "delaunay": lambda p, a, b: cx.delaunay(p),
     "regular_triangulation": lambda p, a, b: cx.regular_triangulation(p, a),
-    "witness": lambda p, a, b: cx.witness(p, [0, 1], a, b),
-    "lazy_witness": lambda p, a, b: cx.lazy_witness(p, b, a, 2),
+    "witness": lambda p, a, b: cx.witness(p, [0, 1], max_radius=a, max_dim=b),
+    "lazy_witness": lambda p, a, b: cx.lazy_witness(p, b, max_radius=a, max_dim=2),
     "witness_offsets": lambda p, a, b: cx.witness_offsets(p, [0], nu=b),
-    "maxmin_landmarks": lambda p, a, b: cx.maxmin_landmarks(p, b, seed=0),
-    "random_landmarks": lambda p, a, b: cx.random_landmarks(p, b, seed=a),
+    "maxmin_landmarks": lambda p, a, b: cx.maxmin_landmarks(p, n=b, seed=0),
+    "random_landmarks": lambda p, a, b: cx.random_landmarks(p, n=b, seed=a),
     "covering_radius": lambda p, a, b: cx.covering_radius(p, [b]),
     "count_within": lambda p, a, b: cx.landmarks.count_within(p, p, a),
     "smallest_enclosing_ball": lambda p, a, b: cx.smallest_enclosing_ball(p, seed=b),
-    "build_filtration": lambda p, a, b: cx.build_filtration("witness", p, a, b, n_landmarks=2),
+    "build_filtration": lambda p, a, b: cx.build_filtration(p, complex="witness", max_radius=a, max_dim=b,
+                                                            n_landmarks=2),
     "nerve": lambda p, a, b: cx.nerve(p, max_dim=b),
 }
 
@@ -154,15 +155,15 @@ def test_fuzz_complexes(points, a, b, name):
 
 
 CURVATURE_CALLS = {
-    "vertex_areas": lambda v, f: cv.vertex_areas(v, f, "mixed"),
-    "vertex_areas_voronoi": lambda v, f: cv.vertex_areas(v, f, "voronoi"),
+    "vertex_areas": lambda v, f: cv.vertex_areas(v, f, area="mixed"),
+    "vertex_areas_voronoi": lambda v, f: cv.vertex_areas(v, f, area="voronoi"),
     "mean_curvature": lambda v, f: cv.mean_curvature(v, f, area="barycentric"),
     "mean_curvature_mixed": lambda v, f: cv.mean_curvature(v, f),
     "mean_curvature_vector_cot": lambda v, f: cv.mean_curvature_vector(v, f, method="cot"),
     "gaussian_curvature": lambda v, f: cv.gaussian_curvature(v, f),
     "angle_defects": lambda v, f: cv.angle_defects(v, f),
     "shape_operator": lambda v, f: cv.shape_operator(v, f),
-    "principal_curvatures": lambda v, f: cv.principal_curvatures(v, f, "uniform"),
+    "principal_curvatures": lambda v, f: cv.principal_curvatures(v, f, edge_weights="uniform"),
     "vertex_normals": lambda v, f: cv.vertex_normals(v, f),
     "normal_curvatures": lambda v, f: cv.normal_curvatures(v, f),
     "total_hyperarea": lambda v, f: cv.total_hyperarea(v, f),
@@ -193,7 +194,7 @@ MESH_CALLS = {
     "euler_characteristic": lambda v, f, a: ms.euler_characteristic(f),
     "facet_degrees": lambda v, f, a: ms.facet_degrees(f),
     "is_closed_pseudomanifold": lambda v, f, a: ms.is_closed_pseudomanifold(f),
-    "faces_of": lambda v, f, a: ms.faces_of(f, a),
+    "faces_of": lambda v, f, a: ms.faces_of(f, k=a),
     "crust": lambda v, f, a: ms.crust(v),
     "crust_theta": lambda v, f, a: ms.crust(v, theta=a),
     "extract_manifold": lambda v, f, a: ms.extract_manifold(v, f),
@@ -206,17 +207,17 @@ GRID_CALLS = {
     "freudenthal_periodic": lambda a, b: ms.freudenthal(a, periodic=b),
     "grid_parameters": lambda a, b: ms.grid_parameters([a, b], [1.0, 2.0]),
     "torus_grid": lambda a, b: ms.torus_grid(a),
-    "torus_chosen_points": lambda a, b: ms.torus_chosen_points(a),
-    "hypersphere_freudenthal": lambda a, b: ms.hypersphere_freudenthal(a, n=b),
-    "catenoid_freudenthal": lambda a, b: ms.catenoid_freudenthal(a, n=b),
+    "torus_chosen_points": lambda a, b: ms.torus_chosen_points(step=a),
+    "hypersphere_freudenthal": lambda a, b: ms.hypersphere_freudenthal(step=a, n=b),
+    "catenoid_freudenthal": lambda a, b: ms.catenoid_freudenthal(step=a, n=b),
     "sample_torus": lambda a, b: ms.sample_torus(a, seed=b),
     "sample_sphere": lambda a, b: ms.sample_sphere(a, n_dims=b),
-    "sample_catenoid": lambda a, b: ms.sample_catenoid(a, (b, 1.0)),
-    "sphere_hull": lambda a, b: ms.sphere_hull(b, a),
-    "cross_stars": lambda a, b: ms.cross_stars(lambda w: np.column_stack([w, w[:, :1]]), [[0.0, a]], b),
+    "sample_catenoid": lambda a, b: ms.sample_catenoid(a, v_range=(b, 1.0)),
+    "sphere_hull": lambda a, b: ms.sphere_hull(n_dims=b, n_points=a),
+    "cross_stars": lambda a, b: ms.cross_stars(lambda w: np.column_stack([w, w[:, :1]]), [[0.0, a]], step=b),
     "noisy_circle": lambda a, b: noisy_circle(a, noise=b),
     "two_circles": lambda a, b: two_circles(a, distance=b),
-    "two_circles_intersections": lambda a, b: two_circles_intersections(a),
+    "two_circles_intersections": lambda a, b: two_circles_intersections(distance=a),
     "flat_torus": lambda a, b: flat_torus(a, noise=b),
 }
 
@@ -300,9 +301,9 @@ def test_absurd_grid_dimensions_and_complex_corners_are_refused():
     from thesis_lib.meshes.grids import MAX_GRID_DIM, catenoid_freudenthal, hypersphere_freudenthal
 
     with pytest.raises(ValueError, match=f"n must be <= {MAX_GRID_DIM}"):
-        catenoid_freudenthal(1, 2**70)
+        catenoid_freudenthal(step=1, n=2**70)
     with pytest.raises(ValueError, match=f"n must be <= {MAX_GRID_DIM}"):
-        hypersphere_freudenthal(np.pi / 4, 2.0, 2**70)
+        hypersphere_freudenthal(step=np.pi / 4, radius=2.0, n=2**70)
     with pytest.raises(ValueError, match="complex numbers are not coordinates"):
         circumcentric_fractions(np.zeros((1, 3, 2)) + 1j)
 
@@ -317,5 +318,5 @@ def test_dense_expansions_to_a_huge_dimension_are_refused_up_front():
     grid = np.array([[i, j, k] for i in range(4) for j in range(4) for k in range(4)], dtype=float)
     for build in (cech, rips):
         with pytest.raises(ValueError, match="could number up to"):
-            build(grid, 2.0, 2**70)
-        assert len(build(grid, 0.6, 3)) == 208  # the unit-spaced grid's 64 vertices and 144 edges
+            build(grid, max_radius=2.0, max_dim=2**70)
+        assert len(build(grid, max_radius=0.6, max_dim=3)) == 208  # the unit-spaced grid's 64 vertices and 144 edges

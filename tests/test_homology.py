@@ -66,7 +66,7 @@ def gudhi_betti(simplices, p: int) -> list[int]:
 def sympy_homology(simplices) -> list[tuple[int, list[int]]]:
     """Reference: homology over Z from sympy's invariant factors of dense boundary matrices."""
     cx = closure(simplices)
-    mats = boundary_matrices(cx, 0)
+    mats = boundary_matrices(cx, coefficients=0)
     ranks, tors = [0] * (len(cx) + 1), [[] for _ in range(len(cx) + 1)]
     for k in range(1, len(cx)):
         d = mats[k].toarray()
@@ -80,9 +80,9 @@ def sympy_homology(simplices) -> list[tuple[int, list[int]]]:
 
 def test_rp2_example_2_21():
     assert homology(rp2()) == [(1, []), (0, [2]), (0, [])]
-    assert homology(rp2(), 2) == [(1, []), (1, []), (1, [])]
-    assert homology(rp2(), 3) == [(1, []), (0, []), (0, [])]
-    assert betti_numbers(rp2(), 2) == [1, 1, 1]
+    assert homology(rp2(), coefficients=2) == [(1, []), (1, []), (1, [])]
+    assert homology(rp2(), coefficients=3) == [(1, []), (0, []), (0, [])]
+    assert betti_numbers(rp2(), coefficients=2) == [1, 1, 1]
     assert simplex_counts(rp2()) == [6, 15, 10]
 
 
@@ -99,22 +99,22 @@ def test_rp2_matches_the_thesis_boundary_matrix():
     assert np.array_equal(m2, THESIS_M2)
     # and our sorted-orientation matrix differs only by column signs
     cx = closure(rp2())
-    ours = boundary_matrices(cx, 0)[2].toarray()
+    ours = boundary_matrices(cx, coefficients=0)[2].toarray()
     tris = [tuple(t) for t in cx[2].tolist()]
     order = [tris.index(tuple(sorted(t))) for t in rp2(oriented=True)]
     assert np.array_equal(np.abs(ours[:, order]), np.abs(THESIS_M2))
-    red1 = reduce_matrix(boundary_matrices(closure(rp2()), 0)[1])
+    red1 = reduce_matrix(boundary_matrices(closure(rp2()), coefficients=0)[1])
     assert (red1.rank, red1.invariants) == (5, [])  # thesis: M~_1 has five 1s
 
 
 def test_surfaces_and_spheres():
     assert homology(torus()) == [(1, []), (2, []), (1, [])]
-    assert homology(torus(), 2) == [(1, []), (2, []), (1, [])]
+    assert homology(torus(), coefficients=2) == [(1, []), (2, []), (1, [])]
     assert simplex_counts(torus()) == [7, 21, 14]
     assert homology(klein_bottle()) == [(1, []), (1, [2]), (0, [])]
-    assert homology(klein_bottle(3, 5)) == [(1, []), (1, [2]), (0, [])]
-    assert homology(klein_bottle(), 2) == [(1, []), (2, []), (1, [])]
-    assert homology(klein_bottle(), 3) == [(1, []), (1, []), (0, [])]
+    assert homology(klein_bottle(n=3, m=5)) == [(1, []), (1, [2]), (0, [])]
+    assert homology(klein_bottle(), coefficients=2) == [(1, []), (2, []), (1, [])]
+    assert homology(klein_bottle(), coefficients=3) == [(1, []), (1, []), (0, [])]
     assert homology(sphere(0)) == [(2, [])]
     for n in range(1, 5):
         assert homology(sphere(n)) == [(1, [])] + [(0, [])] * (n - 1) + [(1, [])]
@@ -124,13 +124,13 @@ def test_dunce_hat_contractible_not_collapsible():
     faces = dunce_hat()
     assert len(faces) == 17 and len({v for f in faces for v in f}) == 8
     for p in (0, 2, 3):
-        assert homology(faces, p) == [(1, []), (0, []), (0, [])]
+        assert homology(faces, coefficients=p) == [(1, []), (0, []), (0, [])]
     deg = collections.Counter(e for f in faces for e in itertools.combinations(f, 2))
     assert min(deg.values()) >= 2  # no free edge: no elementary collapse is possible
     assert sorted(e for e, d in deg.items() if d == 3) == [(0, 1), (0, 2), (1, 2)]
 
 
-@pytest.mark.parametrize("faces", [torus(), klein_bottle(), klein_bottle(3, 3), rp2()])
+@pytest.mark.parametrize("faces", [torus(), klein_bottle(), klein_bottle(n=3, m=3), rp2()])
 def test_closed_surfaces_are_pseudomanifolds(faces):
     deg = collections.Counter(e for f in faces for e in itertools.combinations(f, 2))
     assert set(deg.values()) == {2} and len(set(faces)) == len(faces)
@@ -144,7 +144,7 @@ def test_closed_surfaces_are_pseudomanifolds(faces):
 def test_matches_gudhi_over_z2_and_z3(seed):
     faces = random_complex(seed)
     for p in (2, 3):
-        assert betti_numbers(faces, p) == gudhi_betti(faces, p)
+        assert betti_numbers(faces, coefficients=p) == gudhi_betti(faces, p)
 
 
 @settings(deadline=None, max_examples=12)
@@ -161,8 +161,8 @@ def test_medium_rips_complex_matches_gudhi():
     assert len(faces) > 2000
     hz = homology(faces)
     for p in (2, 3):
-        assert betti_numbers(faces, p) == gudhi_betti(faces, p)
-        assert betti_numbers(faces, p) == [b for b, _ in hz]  # no torsion here
+        assert betti_numbers(faces, coefficients=p) == gudhi_betti(faces, p)
+        assert betti_numbers(faces, coefficients=p) == [b for b, _ in hz]  # no torsion here
 
 
 def moore_space(k: int, offset: int = 0) -> list[tuple[int, ...]]:
@@ -181,14 +181,14 @@ def test_torsion_of_moore_spaces(k):
     assert homology(moore_space(k)) == [(1, []), (0, [k]), (0, [])]
     for p in (2, 3, 5):
         b = 1 if k % p == 0 else 0
-        assert homology(moore_space(k), p) == [(1, []), (b, []), (b, [])]
+        assert homology(moore_space(k), coefficients=p) == [(1, []), (b, []), (b, [])]
 
 
 def test_torsion_of_disjoint_moore_spaces():
     faces = moore_space(4) + moore_space(6, offset=100) + moore_space(2, offset=200)
     # torsion coefficients are the invariant factors 2 | 2 | 12 (Z/2 ⊕ Z/4 ⊕ Z/6 ≅ Z/2 ⊕ Z/2 ⊕ Z/12)
     assert homology(faces) == [(3, []), (0, [2, 2, 12]), (0, [])]
-    d2 = boundary_matrices(closure(faces), 0)[2]
+    d2 = boundary_matrices(closure(faces), coefficients=0)[2]
     assert reduce_matrix(d2).invariants == [2, 2, 12]
 
 
@@ -197,7 +197,7 @@ def test_sparse_and_dense_stages_agree_on_boundary_matrices():
     # the sparse elimination switching to the dense kernel at once or never
     rng = np.random.default_rng(5)
     tris = [t for t in itertools.combinations(range(14), 3) if rng.random() < 0.25]
-    for d in boundary_matrices(closure(tris), 0)[1:]:
+    for d in boundary_matrices(closure(tris), coefficients=0)[1:]:
         red = reduce_matrix(d)
         full = [1] * (red.rank - len(red.invariants)) + red.invariants
         assert dense_smith_diagonal(d.toarray()) == full
@@ -213,7 +213,7 @@ def test_sparse_and_dense_stages_agree_on_boundary_matrices():
 @settings(deadline=None, max_examples=20)
 @given(st.integers(0, 2**32 - 1), st.sampled_from([0, 2, 3, 5]))
 def test_boundary_of_boundary_is_zero(seed, p):
-    mats = boundary_matrices(closure(random_complex(seed)), p)
+    mats = boundary_matrices(closure(random_complex(seed)), coefficients=p)
     for k in range(2, len(mats)):
         prod = (mats[k - 1] @ mats[k]).toarray()
         assert not np.any(prod % p if p else prod)
@@ -231,7 +231,7 @@ def test_euler_characteristic_and_universal_coefficients(seed):
     assert chi == sum((-1) ** k * b for k, (b, _) in enumerate(hz))
     assert chi == sum((-1) ** k * m for k, m in enumerate(simplex_counts(faces)))
     for p in (2, 3, 5):
-        hp = betti_numbers(faces, p)
+        hp = betti_numbers(faces, coefficients=p)
         assert sum((-1) ** k * b for k, b in enumerate(hp)) == chi
         for k, (b, tors) in enumerate(hz):
             below = hz[k - 1][1] if k else []
@@ -247,20 +247,20 @@ def test_relabelling_invariance(seed, p):
     n = 1 + max(v for f in faces for v in f)
     perm = rng.permutation(n) * 3 + 7  # also spread labels out
     relabelled = [tuple(int(perm[v]) for v in f) for f in faces]
-    assert homology(relabelled, p) == homology(faces, p)
+    assert homology(relabelled, coefficients=p) == homology(faces, coefficients=p)
     # input order and duplicates do not matter either
     shuffled = [faces[i] for i in rng.permutation(len(faces))] + faces[:3]
-    assert homology(shuffled, p) == homology(faces, p)
+    assert homology(shuffled, coefficients=p) == homology(faces, coefficients=p)
 
 
 def test_clearing_does_not_change_ranks():
     faces = random_flag_complex(11, n=12, max_dim=3)
     cx = closure(faces)
     for p in (0, 2):
-        mats = boundary_matrices(cx, p)
-        full = [0] + [reduce_matrix(d, p).rank for d in mats[1:]] + [0]
+        mats = boundary_matrices(cx, coefficients=p)
+        full = [0] + [reduce_matrix(d, coefficients=p).rank for d in mats[1:]] + [0]
         expected = [len(cx[k]) - full[k] - full[k + 1] for k in range(len(cx))]
-        assert betti_numbers(faces, p) == expected
+        assert betti_numbers(faces, coefficients=p) == expected
 
 
 def test_input_forms():
@@ -277,7 +277,7 @@ def test_input_forms():
 @pytest.mark.parametrize("coefficients", [1, 4, 6, -3, 2.0, "2", None, True])
 def test_bad_coefficients(coefficients):
     with pytest.raises(ValueError, match="prime"):
-        homology(rp2(), coefficients)
+        homology(rp2(), coefficients=coefficients)
 
 
 def test_bad_simplices():
@@ -294,8 +294,8 @@ def test_bad_simplices():
     with pytest.raises(ValueError):
         homology("abc")
     with pytest.raises(ValueError, match="empty"):
-        boundary_matrices([], 0)
+        boundary_matrices([], coefficients=0)
     with pytest.raises(ValueError, match=">= 3"):
-        klein_bottle(2, 4)
+        klein_bottle(n=2, m=4)
     with pytest.raises(ValueError, match="non-negative"):
         sphere(-1)

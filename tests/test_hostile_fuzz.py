@@ -41,8 +41,8 @@ def _is_index(v) -> bool:
 
 # ----------------------------------------------------------------------------- barcodes and seeds
 @fuzz_settings(150)
-@given(atol=hostile, dim=hostile, p=hostile, dims=st.one_of(hostile, st.lists(hostile, max_size=3)))
-def test_barcode_arguments(atol, dim, p, dims):
+@given(atol=hostile, dim=hostile, coefficients=hostile, dims=st.one_of(hostile, st.lists(hostile, max_size=3)))
+def test_barcode_arguments(atol, dim, coefficients, dims):
     a, b = Barcode({0: [[0, 1]], 1: [[0.5, 2]]}), Barcode({0: [[0, 1.2]], 1: [[0.5, 2]]})
     ok, value = fuzz_call("hostile-barcode", a.allclose, b, atol=atol)
     if ok:  # only a number >= 0 (inf included) is a tolerance, and it decides by it
@@ -50,10 +50,10 @@ def test_barcode_arguments(atol, dim, p, dims):
         assert value == (atol >= 0.2 - 1e-12)
     ok, _ = fuzz_call("hostile-barcode", Barcode.from_pairs, [(dim, (0.0, 1.0))])
     assert ok == _is_index(dim)
-    ok, bc = fuzz_call("hostile-barcode", Barcode.from_diagrams, [[[0, 1]]], p=p)
+    ok, bc = fuzz_call("hostile-barcode", Barcode.from_diagrams, [[[0, 1]]], coefficients=coefficients)
     if ok:
-        assert p is None or (_is_index(p) and p in (2, 3))
-    ok, dg = fuzz_call("hostile-barcode", a.to_diagrams, dims)
+        assert coefficients is None or (_is_index(coefficients) and coefficients in (2, 3))
+    ok, dg = fuzz_call("hostile-barcode", a.to_diagrams, dims=dims)
     if ok:
         assert dims is None or all(_is_index(d) and d < 10_000 for d in dims)
 
@@ -104,7 +104,7 @@ def test_radii_and_dimensions(radius, max_dim):
 def test_edge_lists_that_cannot_fit_are_refused_quickly(n, d, radius, kind):
     pts = np.random.default_rng(n + d).random((n, d))
     fn = cx.rips if kind == "rips" else cx.cech
-    ok, err = fuzz_call("hostile-size", fn, pts, radius, 1, seconds=20)
+    ok, err = fuzz_call("hostile-size", fn, pts, max_radius=radius, max_dim=1, seconds=20)
     assert not ok and "edges" in str(err) and "more than the limit" in str(err)
 
 
@@ -122,7 +122,7 @@ def test_closures_that_cannot_fit_are_refused_quickly(k, extra, kind):
 @given(n=st.integers(16, 24), d=st.sampled_from([2, 3]))
 def test_cech_work_that_cannot_finish_is_refused(n, d):
     pts = np.random.default_rng(n).random((n, d))
-    ok, err = fuzz_call("hostile-size", cx.cech, pts, np.inf, n - 1, seconds=20)
+    ok, err = fuzz_call("hostile-size", cx.cech, pts, max_radius=np.inf, max_dim=n - 1, seconds=20)
     assert not ok and "steps" in str(err) and "budget" in str(err)
 
 
@@ -173,7 +173,7 @@ def test_corrupt_run_folders_and_results(tmp_path_factory, results, complete):
             (folder / name).mkdir()
         elif text is not None:
             (folder / name).write_text(text, errors="surrogateescape")
-    ok, read = fuzz_call("hostile-lab", runner.read_run, "toy", params, root)
+    ok, read = fuzz_call("hostile-lab", runner.read_run, "toy", params, root=root)
     assert ok and read.status in ("ok", "corrupt")
     if read.status == "ok":
         assert isinstance(json.loads((folder / "complete.json").read_text()), dict)
@@ -183,7 +183,7 @@ def test_corrupt_run_folders_and_results(tmp_path_factory, results, complete):
     if results is None:
         return
     try:
-        table = load("toy", folder)
+        table = load("toy", output_dir=folder)
     except ResultsError as exc:
         assert "results.json" in str(exc) and "restore" in str(exc)
     else:

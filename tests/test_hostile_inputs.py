@@ -29,15 +29,15 @@ def test_invalid_seeds_are_refused_by_name(seed):
     with pytest.raises((ValueError, TypeError), match="seed must be"):
         morse_matching([(0, 1, 2)], seed=seed)
     with pytest.raises((ValueError, TypeError), match="seed must be"):
-        build_filtration("rips", np.zeros((2, 2)), 1.0, 1, seed=seed)
+        build_filtration(np.zeros((2, 2)), complex="rips", max_radius=1.0, max_dim=1, seed=seed)
 
 
 SEEDED = {
     "sample_n_catenoid": lambda seed: sample_n_catenoid(10, seed=seed),
     "random_simplices": lambda seed: random_simplices(2, 3, seed=seed),
     "experiment_complex": lambda seed: experiment_complex("random-flag", seed=seed),
-    "synthetic_range_image": lambda seed: synthetic_range_image(seed, size=(8, 8)),
-    "sample_patches": lambda seed: sample_patches([np.arange(64.0).reshape(8, 8) + 1], 2, size=3, seed=seed),
+    "synthetic_range_image": lambda seed: synthetic_range_image(seed=seed, size=(8, 8)),
+    "sample_patches": lambda seed: sample_patches([np.arange(64.0).reshape(8, 8) + 1], n=2, size=3, seed=seed),
 }
 
 
@@ -101,8 +101,8 @@ def test_weights_whose_orthogonal_spheres_leave_the_float_range_are_refused_by_n
 
 def test_numbers_beyond_the_float_range_are_refused_by_name():
     """max_radius=10**400 is refused with a ValueError, not an OverflowError."""
-    for fn in (lambda r: cx.rips(P2, max_radius=r), lambda r: cx.cech(P2, r, 1),
-               lambda r: cx.witness(P2, [0, 1, 2], r, 1)):
+    for fn in (lambda r: cx.rips(P2, max_radius=r), lambda r: cx.cech(P2, max_radius=r, max_dim=1),
+               lambda r: cx.witness(P2, [0, 1, 2], max_radius=r, max_dim=1)):
         with pytest.raises(ValueError, match=r"max_radius is an integer of 1,329 bits, beyond float64's range.*inf"):
             fn(10**400)
         assert len(fn(10**300)) == len(fn(np.inf))  # a huge integer inside the range is a number
@@ -171,7 +171,7 @@ def test_distance_matrices_of_the_wrong_kind_are_refused_by_name(dm, message):
 def test_edge_lists_beyond_the_limit_are_refused_before_allocating():
     """10⁵ points at ε = ∞ and 6·10⁴ in R³ at radius 10 are refused by size, before any MemoryError."""
     many = RNG.random((100_000, 2))
-    for fn in (lambda: cx.rips(many, max_radius=np.inf, max_dim=1), lambda: cx.cech(many, np.inf, 1),
+    for fn in (lambda: cx.rips(many, max_radius=np.inf, max_dim=1), lambda: cx.cech(many, max_radius=np.inf, max_dim=1),
                lambda: rips_persistence(many, max_dim=1)):
         with pytest.raises(ValueError,
                            match=r"would build 4,999,950,000 edges .* about 112 GiB.*limit of 1,000,000,000"):
@@ -186,7 +186,7 @@ def test_witness_distances_beyond_the_memory_budget_are_refused():
     for fn in (cx.witness, cx.lazy_witness):
         with pytest.raises(ValueError, match=r"about 186 GiB for the witness distances of 50,000 landmarks and "
                                              r"200,000 points, more than the memory budget of 8 GiB"):
-            fn(pts, np.arange(50_000), 1.0, 1)
+            fn(pts, np.arange(50_000), max_radius=1.0, max_dim=1)
     with pytest.raises(ValueError, match="149 GiB"):
         cx.witness_offsets(pts, np.arange(50_000))
 
@@ -207,8 +207,8 @@ def test_closures_beyond_the_memory_budget_are_refused(k, gib):
 
 def test_cech_work_beyond_the_budget_is_refused():
     with pytest.raises(ValueError, match=r"about 7.2e\+11 steps .* budget of 1e\+10"):
-        cx.cech(RNG.random((18, 3)), np.inf, 17)
-    assert len(cx.cech(RNG.random((9, 3)), np.inf, 8)) == 2**9 - 1  # 9 points: every subset, built
+        cx.cech(RNG.random((18, 3)), max_radius=np.inf, max_dim=17)
+    assert len(cx.cech(RNG.random((9, 3)), max_radius=np.inf, max_dim=8)) == 2**9 - 1  # 9 points: every subset, built
 
 
 def test_delaunay_in_high_dimension_beyond_the_budget_is_refused():

@@ -19,12 +19,14 @@ def gudhi_rips(points, eps: float, max_dim: int, p: int) -> Barcode:
     """GUDHI's barcode of the Rips complex (diameter ≤ 2ε), in ε, dimensions 0 .. max_dim − 1."""
     st_ = gudhi.RipsComplex(points=points, max_edge_length=2 * eps).create_simplex_tree(max_dimension=max_dim)
     st_.compute_persistence(homology_coeff_field=p, min_persistence=0, persistence_dim_max=True)
-    return Barcode({d: st_.persistence_intervals_in_dimension(d) / 2 for d in range(max_dim)}, range(max_dim))
+    intervals = {d: st_.persistence_intervals_in_dimension(d) / 2 for d in range(max_dim)}
+    return Barcode(intervals, dimensions=range(max_dim))
 
 
 def ripser_rips(points=None, eps=np.inf, max_dim=2, p=2, **kw) -> Barcode:
     dg = ripser(points if points is not None else kw.pop("dm"), maxdim=max_dim - 1, thresh=2 * eps, coeff=p, **kw)
-    return Barcode({d: np.asarray(dg["dgms"][d], dtype=np.float64) / 2 for d in range(max_dim)}, range(max_dim))
+    intervals = {d: np.asarray(dg["dgms"][d], dtype=np.float64) / 2 for d in range(max_dim)}
+    return Barcode(intervals, dimensions=range(max_dim))
 
 
 @settings(deadline=None, max_examples=25)

@@ -180,11 +180,11 @@ def test_fuzz_manifests(root, tmp_path, text, name):
     if ok:
         for entry in entries.values():  # a relative path with no way up (symlinks are checked where used)
             assert not entry.file.startswith("/") and ".." not in entry.file.split("/")
-    ok, path = fuzz_call("data", data.path, name, manifest)
+    ok, path = fuzz_call("data", data.path, name, manifest_file=manifest)
     if ok:
         assert _inside(path, root / "data") or _inside(path, tmp_path / "shared" / "data")
         assert hashlib.sha256(path.read_bytes()).hexdigest() == data.manifest(manifest)[name].sha256
-    ok, target = fuzz_call("data", data.fetch, name, manifest, timeout=5)
+    ok, target = fuzz_call("data", data.fetch, name, manifest_file=manifest, timeout=5)
     if ok:
         assert _inside(target, root / "data") and target.read_bytes() == PAYLOAD
     assert _outside_snapshot(tmp_path, root) == before, "something was written outside data/"
@@ -197,7 +197,7 @@ def test_fuzz_manifests(root, tmp_path, text, name):
                       .map(lambda d: json.dumps(d).encode())))
 def test_fuzz_stored_results(tmp_path, blob):
     (tmp_path / "results.json").write_bytes(blob)
-    ok, value = fuzz_call("runner", load, "demo", tmp_path)
+    ok, value = fuzz_call("runner", load, "demo", output_dir=tmp_path)
     if ok:
         assert isinstance(value, dict)
         assert all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in value.values())

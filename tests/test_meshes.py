@@ -37,7 +37,7 @@ def _signed_volumes(params, simplices):
 
 
 def test_torus_grid_is_closed_genus_one_and_outward():
-    v, f = torus_grid(20, 10.0, 5.0)
+    v, f = torus_grid(20, R=10.0, r=5.0)
     assert v.shape == (400, 3) and f.shape == (800, 3)
     assert euler_characteristic(f) == 0 and is_closed_pseudomanifold(f)
     assert np.allclose(v[0], [15, 0, 0]) and np.allclose(v[1], [10 + 5 * np.cos(np.pi / 10), 0, 5 * np.sin(np.pi / 10)])
@@ -51,17 +51,17 @@ def test_torus_grid_is_closed_genus_one_and_outward():
     assert datasets.torus_grid is torus_grid
 
 
-def test_chosen_points_epsilon():
-    v, f, uv = torus_chosen_points(np.pi / 50)
+def test_chosen_points_step():
+    v, f, uv = torus_chosen_points(step=np.pi / 50)
     assert len(v) == 100 * 100 and np.isclose(uv[1, 1], np.pi / 50)
     with pytest.raises(ValueError, match="integer"):
-        torus_chosen_points(0.3)
+        torus_chosen_points(step=0.3)
 
 
 @pytest.mark.parametrize("shape,periodic", [((3, 4), False), ((4, 3, 3), False), ((5, 3), (True, False)),
                                             ((3, 3, 3, 3), False), ((4, 5, 3), (False, True, False))])
 def test_freudenthal_tiles_the_box(shape, periodic):
-    s = freudenthal(shape, periodic)
+    s = freudenthal(shape, periodic=periodic)
     n = len(shape)
     per = (periodic,) * n if isinstance(periodic, bool) else periodic
     cells = np.prod([m if p else m - 1 for m, p in zip(shape, per)])
@@ -86,11 +86,11 @@ def test_freudenthal_periodic_torus_is_closed(shape):
 
 @pytest.mark.parametrize("n,k", [(2, 12), (3, 8)])
 def test_hypersphere_freudenthal_is_a_closed_sphere(n, k):
-    v, s, params = hypersphere_freudenthal(np.pi / k, 2.0, n)
+    v, s, params = hypersphere_freudenthal(step=np.pi / k, radius=2.0, n=n)
     assert is_closed_pseudomanifold(s)
     assert euler_characteristic(s) == 1 + (-1) ** n
     assert np.allclose(np.linalg.norm(v, axis=1), 2.0)
-    assert np.allclose(hypersphere_point(params, 2.0), v)
+    assert np.allclose(hypersphere_point(params, radius=2.0), v)
     vol = simplex_hyperareas(v, s).sum()
     exact = {2: 4 * np.pi * 4, 3: 2 * np.pi**2 * 8}[n]
     assert 0.9 * exact < vol < exact
@@ -121,13 +121,13 @@ def test_orientation_helper():
 
 
 def test_catenoid_freudenthal_piece():
-    v, s, params = catenoid_freudenthal(0.1, n=3, v_range=(-1, 1), w_range=(-1, 1))
+    v, s, params = catenoid_freudenthal(step=0.1, n=3, v_range=(-1, 1), w_range=(-1, 1))
     assert v.shape[1] == 4 and s.shape[1] == 4
     assert euler_characteristic(s) == 0  # annulus × interval
     assert np.allclose(catenoid_point(params), v)
     assert set(np.unique(facet_degrees(s))) == {1, 2}
     with pytest.raises(ValueError, match="integer"):
-        catenoid_freudenthal(0.3, v_range=(-1, 1))
+        catenoid_freudenthal(step=0.3, v_range=(-1, 1))
 
 
 def test_merge_coincident_drops_degenerate():
@@ -140,7 +140,7 @@ def test_merge_coincident_drops_degenerate():
 
 @pytest.mark.parametrize("d", [3, 4, 5])
 def test_sphere_hull(d):
-    pts, s = sphere_hull(d, 200, seed=d)
+    pts, s = sphere_hull(n_dims=d, n_points=200, seed=d)
     assert np.allclose(np.linalg.norm(pts, axis=1), 1)
     assert is_closed_pseudomanifold(s)
     assert euler_characteristic(s) == 1 + (-1) ** (d - 1)
@@ -151,7 +151,7 @@ def test_sphere_hull(d):
 
 
 def test_samplers_are_uniform_in_area():
-    pts, uv = sample_torus(20000, 10.0, 5.0, seed=3, return_uv=True)
+    pts, uv = sample_torus(20000, R=10.0, r=5.0, seed=3, return_uv=True)
     assert pts.shape == (20000, 3)
     assert np.allclose(np.hypot(np.hypot(pts[:, 0], pts[:, 1]) - 10, pts[:, 2]), 5)
     # density of v is (R + r cos v) / (2π R): P(cos v > 0) = 1/2 + r/(πR)
@@ -160,27 +160,27 @@ def test_samplers_are_uniform_in_area():
     u, v = torus_uv(pts)
     assert np.allclose(np.cos(v), np.cos(uv[:, 1]))
     assert np.array_equal(sample_torus(50, seed=1), sample_torus(50, seed=1))
-    c = sample_catenoid(5000, (-1, 1), seed=0)
+    c = sample_catenoid(5000, v_range=(-1, 1), seed=0)
     assert np.allclose(np.hypot(c[:, 0], c[:, 1]), np.cosh(c[:, 2]))
-    s = sample_sphere(100, 4, 2.0, seed=0)
+    s = sample_sphere(100, n_dims=4, radius=2.0, seed=0)
     assert np.allclose(np.linalg.norm(s, axis=1), 2.0)
 
 
 def test_cross_star_stencil():
     w = np.array([[0.5, 0.7, 1.0]])
-    v, s, c = cross_stars(lambda a: hypersphere_point(a, 2.0), w, 0.1)
+    v, s, c = cross_stars(lambda a: hypersphere_point(a, radius=2.0), w, step=0.1)
     assert v.shape == (7, 4) and s.shape == (8, 4) and c.tolist() == [0]
     eps = np.pi / 50
     P = grid_parameters(eps * np.arange(5, 45, 10), eps * np.arange(5, 45, 10), eps * np.arange(0, 100, 25))
-    H = neighbour_grid_mean_curvature(lambda a: hypersphere_point(a, 2.0), P, eps)
+    H = neighbour_grid_mean_curvature(lambda a: hypersphere_point(a, radius=2.0), P, step=eps)
     assert np.allclose(H, 0.5, rtol=3e-3)
-    Hc = neighbour_grid_mean_curvature(catenoid_point, np.array([[0.0, 0.0, 0.0], [1.0, -0.9, 0.5]]), 0.05)
+    Hc = neighbour_grid_mean_curvature(catenoid_point, np.array([[0.0, 0.0, 0.0], [1.0, -0.9, 0.5]]), step=0.05)
     assert np.all(Hc < 2e-4)
     # the surface case: |H| of the torus from the 4-neighbour star
     from thesis_lib.curvature.exact import torus_mean_curvature, torus_point
 
     uv = np.array([[0.3, 0.4], [1.0, 2.0]])
-    Ht = neighbour_grid_mean_curvature(lambda a: torus_point(a[:, 0], a[:, 1]), uv, 0.01)
+    Ht = neighbour_grid_mean_curvature(lambda a: torus_point(a[:, 0], a[:, 1]), uv, step=0.01)
     assert np.allclose(Ht, np.abs(torus_mean_curvature(uv[:, 0], uv[:, 1])), rtol=1e-3)
 
 
@@ -195,16 +195,16 @@ def test_bad_input():
         sample_torus(0)
     with pytest.raises(ValueError, match="0 < r < R"):
         sample_torus(10, R=1, r=2)
-    with pytest.raises(ValueError, match="epsilon"):
-        hypersphere_freudenthal(-1.0)
-    with pytest.raises(ValueError, match="π/epsilon"):
-        hypersphere_freudenthal(0.3)
+    with pytest.raises(ValueError, match="step"):
+        hypersphere_freudenthal(step=-1.0)
+    with pytest.raises(ValueError, match="π/step"):
+        hypersphere_freudenthal(step=0.3)
     with pytest.raises(ValueError, match="duplicate"):
         convex_hull_surface(np.vstack([np.eye(3), np.eye(3)[:1], [[0, 0, 0]]]))
-    with pytest.raises(ValueError, match="epsilon"):
-        cross_stars(lambda a: a, np.zeros((2, 2)), 0.0)
+    with pytest.raises(ValueError, match="step"):
+        cross_stars(lambda a: a, np.zeros((2, 2)), step=0.0)
     with pytest.raises(ValueError, match="interval"):
-        sample_catenoid(10, (1, -1))
+        sample_catenoid(10, v_range=(1, -1))
 
 
 def test_hangs_are_refused_up_front():
@@ -216,7 +216,7 @@ def test_hangs_are_refused_up_front():
         with pytest.raises(ValueError, match=r"1,000,000,000 points"):
             call()
     with pytest.raises(ValueError, match="this would build"):
-        hypersphere_freudenthal(1e-300)
+        hypersphere_freudenthal(step=1e-300)
     with pytest.raises(ValueError, match="this would build"):
         torus_grid(10**6)
 
@@ -328,7 +328,7 @@ def test_orientation_is_the_same_at_any_magnitude(scale):
     from thesis_lib.meshes import convex_hull_surface, orient_outward, sample_sphere
 
     for dim in (2, 3, 4):
-        pts = sample_sphere(40, dim, seed=dim)
+        pts = sample_sphere(40, n_dims=dim, seed=dim)
         faces = convex_hull_surface(pts)
         shuffled = faces[:, ::-1].copy()  # every facet reversed: half of them need a flip
         with warnings.catch_warnings():

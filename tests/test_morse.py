@@ -76,14 +76,14 @@ def random_field(seed: int, simplices) -> list:
     rng = np.random.default_rng(seed)
     kind = int(rng.integers(0, 4))
     if kind == 0:
-        return morse_matching(simplices, "coreduction", seed=seed)
+        return morse_matching(simplices, heuristic="coreduction", seed=seed)
     if kind == 1:
-        return morse_matching(simplices, "collapse", seed=seed)
+        return morse_matching(simplices, heuristic="collapse", seed=seed)
     if kind == 2:
         nv = max(v for s in simplices for v in s) + 1
-        return morse_matching(simplices, "lower-star", values=rng.random(nv))
+        return morse_matching(simplices, heuristic="lower-star", values=rng.random(nv))
     # a random discrete Morse function of a random field -> its gradient pairs
-    f = discrete_morse_function(simplices, morse_matching(simplices, "coreduction", seed=seed))
+    f = discrete_morse_function(simplices, morse_matching(simplices, heuristic="coreduction", seed=seed))
     return gradient_pairs(f)
 
 
@@ -101,7 +101,7 @@ def random_any_matching(seed: int, simplices) -> list:
 
 
 def z2_betti(simplices) -> list[int]:
-    return [b for b, _ in homology(simplices, 2)]
+    return [b for b, _ in homology(simplices, coefficients=2)]
 
 
 COMPLEXES = {
@@ -408,8 +408,8 @@ def test_example_4_43_rp2():
     to_sigma = gradient_paths(RP2_FACETS, pairs, (0, 2, 4), (0, 2))
     assert [m for _, m in to_sigma] == [1, 1]  # two paths of multiplicity +1
     assert morse_homology(RP2_FACETS, pairs) == [(1, []), (0, [2]), (0, [])]
-    assert morse_homology(RP2_FACETS, pairs, 2) == [(1, []), (1, []), (1, [])]
-    assert morse_homology(RP2_FACETS, pairs, 3) == [(1, []), (0, []), (0, [])]
+    assert morse_homology(RP2_FACETS, pairs, coefficients=2) == [(1, []), (1, []), (1, [])]
+    assert morse_homology(RP2_FACETS, pairs, coefficients=3) == [(1, []), (0, []), (0, [])]
     # maximal V-paths from c end in a
     ends = {p[-1] for p in vpaths(RP2_FACETS, pairs, (2,))}
     assert ends == {(0,)}
@@ -422,12 +422,12 @@ def test_morse_homology_on_triangulations(name, method):
     cx = COMPLEXES[name]
     nv = max(v for s in cx for v in s) + 1
     values = np.random.default_rng(1).random(nv) if method == "lower-star" else None
-    pairs = morse_matching(cx, method, values=values)
+    pairs = morse_matching(cx, heuristic=method, values=values)
     assert is_acyclic(cx, pairs)
     for p in (0, 2, 3):
-        assert morse_homology(cx, pairs, p) == homology(cx, p)
+        assert morse_homology(cx, pairs, coefficients=p) == homology(cx, coefficients=p)
     counts = critical_counts(cx, pairs)
-    betti = [b for b, _ in homology(cx, 2)]
+    betti = [b for b, _ in homology(cx, coefficients=2)]
     assert all(b <= c for b, c in zip(betti, counts))  # Theorem 4.27
     if method == "coreduction" and name in ("s2", "s3", "torus"):
         assert counts == betti  # perfect on these
@@ -440,8 +440,8 @@ def test_morse_homology_equals_homology_random(seed):
     pairs = random_field(seed, cx)
     assert is_acyclic(cx, pairs)
     p = int(np.random.default_rng(seed).choice([0, 2, 3]))
-    assert morse_homology(cx, pairs, p) == homology(cx, p)
-    crit, mats = morse_boundary(cx, pairs, p)
+    assert morse_homology(cx, pairs, coefficients=p) == homology(cx, coefficients=p)
+    crit, mats = morse_boundary(cx, pairs, coefficients=p)
     for k in range(2, len(mats)):  # ∂̃∂̃ = 0
         prod = (mats[k - 1] @ mats[k]).toarray()
         assert not (prod % p if p else prod).any()
@@ -463,7 +463,7 @@ def test_morse_boundary_is_sum_over_gradient_paths(seed):
 
 def test_morse_boundary_torsion_vs_sympy_snf():
     cx = klein_bottle()
-    pairs = morse_matching(cx, "collapse", seed=3)
+    pairs = morse_matching(cx, heuristic="collapse", seed=3)
     crit, mats = morse_boundary(cx, pairs)
     for k in range(1, len(mats)):
         m = mats[k].toarray()
@@ -482,7 +482,7 @@ def test_chain_complex_homology_errors():
     with pytest.raises(ValueError, match="rows"):
         chain_complex_homology([np.zeros((0, 2)), np.zeros((3, 1))])
     with pytest.raises(ValueError, match="prime"):
-        morse_homology(TRIANGLE, [], 4)
+        morse_homology(TRIANGLE, [], coefficients=4)
 
 
 # ---------------------------------------------------------------------------- §4.2.6 matchings
@@ -493,7 +493,7 @@ def test_weak_and_strong_morse_inequalities(seed):
     pairs = random_field(seed, cx)
     counts = critical_counts(cx, pairs)
     for p in (0, 2):
-        betti = [b for b, _ in homology(cx, p)]
+        betti = [b for b, _ in homology(cx, coefficients=p)]
         assert all(b <= c for b, c in zip(betti, counts))  # Theorem 4.27
         assert sum((-1) ** k * b for k, b in enumerate(betti)) == sum((-1) ** k * c for k, c in enumerate(counts))
         for k in range(len(counts)):  # Theorem 4.28
@@ -506,7 +506,7 @@ def test_weak_and_strong_morse_inequalities(seed):
 @given(seeds)
 def test_coreduction_one_critical_vertex_per_component(seed):
     cx = random_complex(seed)
-    pairs = morse_matching(cx, "coreduction", seed=seed)
+    pairs = morse_matching(cx, heuristic="coreduction", seed=seed)
     assert critical_counts(cx, pairs)[0] == homology(cx)[0][0]
 
 
@@ -516,7 +516,7 @@ def test_lower_star_pairs_stay_in_lower_stars(seed):
     cx = random_complex(seed)
     nv = max(v for s in cx for v in s) + 1
     values = np.round(np.random.default_rng(seed).random(nv), 1)  # ties on purpose
-    pairs = morse_matching(cx, "lower-star", values=values)
+    pairs = morse_matching(cx, heuristic="lower-star", values=values)
     rank = np.lexsort((np.arange(nv), values))
     order = np.empty(nv, int)
     order[rank] = np.arange(nv)
@@ -529,7 +529,7 @@ def test_lower_star_pairs_stay_in_lower_stars(seed):
 def test_lower_star_height_on_sphere_is_perfect():
     cx = sphere(2)
     nv = max(v for s in cx for v in s) + 1
-    pairs = morse_matching(cx, "lower-star", values=np.arange(nv, dtype=float))
+    pairs = morse_matching(cx, heuristic="lower-star", values=np.arange(nv, dtype=float))
     assert critical_counts(cx, pairs)[0] >= 1
     assert morse_homology(cx, pairs) == homology(cx)
 
@@ -537,12 +537,12 @@ def test_lower_star_height_on_sphere_is_perfect():
 @pytest.mark.parametrize(
     "kwargs, message",
     [
-        (dict(method="greedy"), "method"),
-        (dict(method="lower-star"), "needs vertex values"),
-        (dict(method="coreduction", values=[0.0, 1.0, 2.0]), "takes no values"),
-        (dict(method="lower-star", values=[0.0, 1.0]), "cover 2 vertices"),
-        (dict(method="lower-star", values=[0.0, np.nan, 1.0]), "finite"),
-        (dict(method="lower-star", values=[[0.0, 1.0, 2.0]]), "1-D"),
+        (dict(heuristic="greedy"), "heuristic must be"),
+        (dict(heuristic="lower-star"), "needs vertex values"),
+        (dict(heuristic="coreduction", values=[0.0, 1.0, 2.0]), "takes no values"),
+        (dict(heuristic="lower-star", values=[0.0, 1.0]), "cover 2 vertices"),
+        (dict(heuristic="lower-star", values=[0.0, np.nan, 1.0]), "finite"),
+        (dict(heuristic="lower-star", values=[[0.0, 1.0, 2.0]]), "1-D"),
     ],
 )
 def test_matching_bad_input(kwargs, message):
@@ -554,7 +554,7 @@ def test_matching_deterministic_and_seeded():
     cx = torus()
     assert morse_matching(cx) == morse_matching(cx)
     assert morse_matching(cx, seed=5) == morse_matching(cx, seed=5)
-    assert critical_counts(cx, morse_matching(cx, "collapse", seed=2))[0] == 1
+    assert critical_counts(cx, morse_matching(cx, heuristic="collapse", seed=2))[0] == 1
 
 
 def test_public_contract_of_design_md():
@@ -634,7 +634,8 @@ def test_vector_field_functions_given_a_filtration_equal_the_simplex_list(seed):
     simplices = random_complex(seed)
     filt = Filtration.from_simplices(simplices)
     pairs = random_field(seed, simplices)
-    assert morse_matching(filt, "coreduction", seed=seed) == morse_matching(simplices, "coreduction", seed=seed)
+    assert (morse_matching(filt, heuristic="coreduction", seed=seed)
+            == morse_matching(simplices, heuristic="coreduction", seed=seed))
     assert critical_cells(filt, pairs) == critical_cells(simplices, pairs)
     assert morse_homology(filt, pairs) == morse_homology(simplices, pairs) == homology(simplices)
     assert discrete_morse_function(filt, pairs) == discrete_morse_function(simplices, pairs)

@@ -22,7 +22,7 @@ from thesis_lib.morse import (
 
 def test_example_4_2_critical_points_and_indices():
     R, r = 2.0, 0.5
-    crit = torus_critical_points(R, r)
+    crit = torus_critical_points(R=R, r=r)
     assert len(crit) == 4
     assert [c["index"] for c in crit] == [0, 1, 1, 2]  # r, q_1, q_2, p
     assert np.allclose([c["value"] for c in crit], [-(R + r), -(R - r), R - r, R + r])
@@ -32,10 +32,10 @@ def test_example_4_2_critical_points_and_indices():
     uv = sorted((round(c["u"], 6), round(c["v"], 6)) for c in crit)
     assert np.allclose(uv, sorted([(0, 0), (0, np.pi), (np.pi, np.pi), (np.pi, 0)]), atol=1e-6)
     # the Hessians of the thesis
-    assert np.allclose(torus_height_hessian(0, 0, R, r), np.diag([-(R + r), -r]))
-    assert np.allclose(torus_height_hessian(0, np.pi, R, r), np.diag([-R + r, r]))
-    assert np.allclose(torus_height_hessian(np.pi, np.pi, R, r), np.diag([R - r, -r]))
-    assert np.allclose(torus_height_hessian(np.pi, 0, R, r), np.diag([R + r, r]))
+    assert np.allclose(torus_height_hessian(0, 0, R=R, r=r), np.diag([-(R + r), -r]))
+    assert np.allclose(torus_height_hessian(0, np.pi, R=R, r=r), np.diag([-R + r, r]))
+    assert np.allclose(torus_height_hessian(np.pi, np.pi, R=R, r=r), np.diag([R - r, -r]))
+    assert np.allclose(torus_height_hessian(np.pi, 0, R=R, r=r), np.diag([R + r, r]))
     # β_k = Crit_k for the torus (§4.1.1): counts 1, 2, 1
     counts = np.bincount([c["index"] for c in crit], minlength=3).tolist()
     assert counts == [1, 2, 1]
@@ -47,20 +47,22 @@ def test_example_4_2_critical_points_and_indices():
 def test_height_derivatives_match_finite_differences(R, ratio, u, v):
     r = R * ratio
     h = 1e-6
-    g = torus_height_gradient(u, v, R, r)
-    fd = [(torus_height(u + h, v, R, r) - torus_height(u - h, v, R, r)) / (2 * h),
-          (torus_height(u, v + h, R, r) - torus_height(u, v - h, R, r)) / (2 * h)]
+    g = torus_height_gradient(u, v, R=R, r=r)
+    fd = [(torus_height(u + h, v, R=R, r=r) - torus_height(u - h, v, R=R, r=r)) / (2 * h),
+          (torus_height(u, v + h, R=R, r=r) - torus_height(u, v - h, R=R, r=r)) / (2 * h)]
     assert np.allclose(g, fd, atol=1e-5)
-    H = torus_height_hessian(u, v, R, r)
-    fdh = np.column_stack([(torus_height_gradient(u + h, v, R, r) - torus_height_gradient(u - h, v, R, r)) / (2 * h),
-                           (torus_height_gradient(u, v + h, R, r) - torus_height_gradient(u, v - h, R, r)) / (2 * h)])
+    H = torus_height_hessian(u, v, R=R, r=r)
+    def grad(a, b):
+        return torus_height_gradient(a, b, R=R, r=r)
+
+    fdh = np.column_stack([(grad(u + h, v) - grad(u - h, v)) / (2 * h), (grad(u, v + h) - grad(u, v - h)) / (2 * h)])
     assert np.allclose(H, fdh, atol=1e-4)
 
 
 @settings(deadline=None, max_examples=6)
 @given(st.floats(1.0, 4.0), st.floats(0.1, 0.9))
 def test_critical_points_for_any_radii(R, ratio):
-    crit = torus_critical_points(R, R * ratio, grid=6)
+    crit = torus_critical_points(R=R, r=R * ratio, grid=6)
     assert [c["index"] for c in crit] == [0, 1, 1, 2]
 
 
@@ -73,9 +75,9 @@ def test_morse_index_and_errors():
     with pytest.raises(ValueError, match="symmetric"):
         morse_index(np.array([[1.0, 2.0], [0.0, 1.0]]))
     with pytest.raises(ValueError, match="R > r > 0"):
-        torus_critical_points(1.0, 2.0)
+        torus_critical_points(R=1.0, r=2.0)
     with pytest.raises(ValueError, match="R > r > 0"):
-        torus_height(0.0, 0.0, np.nan, 1.0)
+        torus_height(0.0, 0.0, R=np.nan, r=1.0)
     with pytest.raises(ValueError, match="grid"):
         torus_critical_points(grid=1)
     with pytest.raises(ValueError, match="non-negative"):

@@ -243,7 +243,7 @@ def test_the_mathematics_computes_without_extras():
         thesis = compute_intervals(example_filtration())
         implicit = rips_persistence(square, max_dim=2)
         explicit = persistence(rips(square, max_dim=2))
-        v, f = sphere_hull(3, 300, 0)
+        v, f = sphere_hull(n_dims=3, n_points=300, seed=0)
         tv, tf = torus_grid(12)
         print(json.dumps({
             "thesis": [thesis.intervals(d).tolist() for d in (0, 1)],
@@ -274,7 +274,7 @@ def test_using_an_extra_says_which_to_install():
         from thesis_lib.persistence import Barcode, plot_barcode, rips_persistence
 
         barcode = rips_persistence(np.array([[0.0, 0.0], [1.0, 0.0]]), max_dim=1)
-        v, f = sphere_hull(3, 60, 0)
+        v, f = sphere_hull(n_dims=3, n_points=60, seed=0)
         calls = {
             "plot_barcode": lambda: plot_barcode(barcode),
             "style.apply": style.apply,

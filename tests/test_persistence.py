@@ -21,7 +21,7 @@ from thesis_lib.simplicial import boundary_matrix, closure
 def gudhi_barcode(f: Filtration, p: int) -> Barcode:
     stree = f.to_simplex_tree()
     pairs = stree.persistence(homology_coeff_field=p, min_persistence=0.0, persistence_dim_max=True)
-    return Barcode.from_pairs(pairs, range(f.dimension + 1))
+    return Barcode.from_pairs(pairs, dimensions=range(f.dimension + 1))
 
 
 def rips_filtration(points: np.ndarray, max_edge: float, max_dim: int) -> Filtration:
@@ -92,7 +92,7 @@ def dense_boundary(f: Filtration, d: int, p: int) -> np.ndarray:
         rows = f.simplices[d - 1].shape[0] if 1 <= d <= f.dimension + 1 else 0
         cols = f.simplices[d].shape[0] if 0 <= d <= f.dimension else 0
         return np.zeros((rows, cols), dtype=np.int64)
-    return boundary_matrix(f.simplices[d - 1], f.simplices[d], p).toarray()
+    return boundary_matrix(f.simplices[d - 1], f.simplices[d], coefficients=p).toarray()
 
 
 def persistent_betti_by_rank(f: Filtration, dim: int, l: float, k: float, p: int) -> int:
@@ -164,10 +164,10 @@ def test_example_2_41_trace():
 
 def test_example_2_36_persistent_betti():
     b = Barcode({0: [[0, math.inf], [1, math.inf], [2, 4]]})
-    assert b.persistent_betti(0, 0, 0) == 1
-    assert b.persistent_betti(2, 1, 0) == 3
-    assert b.persistent_betti(2, 2, 0) == 2  # (2, 4) does not span [2, 4]
-    assert b.betti(3.5, 0) == 3 and b.betti(4, 0) == 2
+    assert b.persistent_betti(0, 0, dim=0) == 1
+    assert b.persistent_betti(2, 1, dim=0) == 3
+    assert b.persistent_betti(2, 2, dim=0) == 2  # (2, 4) does not span [2, 4]
+    assert b.betti(3.5, dim=0) == 3 and b.betti(4, dim=0) == 2
 
 
 # ----------------------------------------------------------------------------- cross-checks with GUDHI
@@ -250,7 +250,7 @@ def test_persistent_betti_is_the_rank_of_the_persistent_group(seed, p):
     for dim in range(f.dimension + 1):
         for l in grid:
             for k in (0.0, 1.0, 2.0):
-                assert b.persistent_betti(l, k, dim) == persistent_betti_by_rank(f, dim, l, k, p), (dim, l, k)
+                assert b.persistent_betti(l, k, dim=dim) == persistent_betti_by_rank(f, dim, l, k, p), (dim, l, k)
 
 
 def test_persistent_betti_on_the_example():
@@ -259,7 +259,7 @@ def test_persistent_betti_on_the_example():
     for dim in (0, 1):
         for l in range(5):
             for k in range(4):
-                assert b.persistent_betti(l, k, dim) == persistent_betti_by_rank(f, dim, l, k, 2)
+                assert b.persistent_betti(l, k, dim=dim) == persistent_betti_by_rank(f, dim, l, k, 2)
 
 
 # ----------------------------------------------------------------------------- representatives
@@ -303,7 +303,7 @@ def test_long_bar_representative_on_a_circle():
     pts = np.column_stack([np.cos(theta), np.sin(theta)])
     f = rips_filtration(pts, 1.2, 2)
     b = persistence(f)
-    (i,) = b.longest(1, 1)
+    (i,) = b.longest(1, n=1)
     cycle = b.representative(1, int(i))
     assert len(cycle) == 12  # the whole circle
     assert {v for s, _ in cycle for v in s} == set(range(12))
@@ -338,7 +338,7 @@ def test_unvalidated_filtrations_take_the_fused_path(seed, p):
     from thesis_lib.complexes import rips
 
     pts = np.random.default_rng(seed).random((int(8 + seed % 12), 2))
-    f = rips(pts, 0.45, 3)
+    f = rips(pts, max_radius=0.45, max_dim=3)
     assert "_facet_cache" not in f.__dict__
     ref = gudhi_barcode(f, p)
     assert persistence(f, coefficients=p).difference(ref) is None
@@ -362,7 +362,7 @@ def test_trace_matrices_of_example_2_41():
 
     trace: list = []
     compute_intervals(example_filtration(), coefficients=3, trace=trace)
-    before, after = trace_matrices(trace, p=3, names="abcde")
+    before, after = trace_matrices(trace, coefficients=3, names="abcde")
     header = before[0]
     assert header == ["*", "a", "b", "c", "d", "e", "ab", "cd", "ad", "bc", "de", "ce", "cde"]
     col = {row[0]: row[header.index("cde")] for row in before[1:]}
@@ -371,4 +371,4 @@ def test_trace_matrices_of_example_2_41():
     assert {row[0] for row in after[1:]} == {"a", "b", "c", "d", "e", "bc", "ce"}  # marked rows only
     assert [row[header.index("ad")] for row in after[1:4]] == ["-t^2", "0", "t"]  # da reduced: a, c
     with pytest.raises(ValueError, match="trace"):
-        trace_matrices([], p=3)
+        trace_matrices([], coefficients=3)

@@ -55,10 +55,10 @@ def test_barcode_queries_and_coefficients(coef, dim, n):
     iv = _clear(lambda: bc.intervals(dim))
     if iv is not None:
         assert iv.ndim == 2 and iv.shape[1] == 2
-    idx = _clear(lambda: bc.longest(0, n))
+    idx = _clear(lambda: bc.longest(0, n=n))
     if idx is not None:
         assert len(idx) == min(int(n), len(bc.intervals(0)))
-    b = _clear(lambda: bc.betti(dim, 0))
+    b = _clear(lambda: bc.betti(dim, dim=0))
     if b is not None:
         assert b >= 0
 

@@ -24,7 +24,7 @@ def test_the_long_bar_figure_draws_its_cycle_and_the_positive_bars():
     fig = plot_long_bar(points, bars, min_length=1e-9)
     try:
         cycle_ax, barcode_ax, diagram_ax = fig.axes
-        longest = int(bars.longest(1, 1)[0])
+        longest = int(bars.longest(1, n=1)[0])
         cycle = bars.representative(1, longest)
         assert len(cycle_ax.lines) == len(cycle)  # one segment per edge of the cycle
         assert cycle_ax.get_title() == f"the long bar's cycle ({len(cycle)} edges)"

@@ -209,18 +209,18 @@ def test_discretise_intervals_on_a_grid():
     from thesis_lib.applications.proteins import discretise_intervals
 
     iv = np.array([[0.01, 0.015], [0.01, 0.05], [-0.3, 0.07], [0.12, np.inf], [0.6, 0.9], [0.2, 0.61]])
-    out = discretise_intervals(iv, 0.02, window=(0.0, 0.5))
+    out = discretise_intervals(iv, increment=0.02, window=(0.0, 0.5))
     # [0.01, 0.015) falls between samples 0.00 and 0.02: gone.  [-0.3, 0.07) is clipped to [0, 0.08).
     np.testing.assert_allclose(out, [[0.02, 0.06], [0.0, 0.08], [0.12, 0.5], [0.2, 0.5]])
-    unbounded = discretise_intervals(iv, 0.05)
+    unbounded = discretise_intervals(iv, increment=0.05)
     assert np.isinf(unbounded).sum() == 1
     np.testing.assert_allclose(unbounded, [[0.0, 0.1], [0.15, np.inf], [0.6, 0.9], [0.2, 0.65]])
     with pytest.raises(ValueError, match="increment"):
-        discretise_intervals(iv, 0.0)
+        discretise_intervals(iv, increment=0.0)
     with pytest.raises(ValueError, match="window"):
-        discretise_intervals(iv, 0.1, window=(1.0, 0.5))
+        discretise_intervals(iv, increment=0.1, window=(1.0, 0.5))
     with pytest.raises(ValueError, match="birth <= death"):
-        discretise_intervals([[1.0, 0.5]], 0.1)
+        discretise_intervals([[1.0, 0.5]], increment=0.1)
 
 
 def test_bondi_radii_equal_mantina_for_protein_elements_and_fall_back_for_iron():
@@ -242,17 +242,19 @@ def test_sampled_barcodes_invisible_bars_and_readings():
 
     iv = np.array([[0.01, 0.015], [0.021, 0.039], [0.011, 0.05], [0.3, np.inf]])
     # On the 0.02 grid only [0.011, 0.05) and [0.3, ...) hold a sample; on the 0.005 grid all four do.
-    assert invisible_bars(iv, 0.02, 0.005, (0.0, 0.5)) == 2
-    assert invisible_bars(iv[2:], 0.02, 0.005, (0.0, 0.5)) == 0
-    assert invisible_bars(iv, 0.02, 0.02, (0.0, 0.5)) == 0
+    assert invisible_bars(iv, increment=0.02, finer=0.005, window=(0.0, 0.5)) == 2
+    assert invisible_bars(iv[2:], increment=0.02, finer=0.005, window=(0.0, 0.5)) == 0
+    assert invisible_bars(iv, increment=0.02, finer=0.02, window=(0.0, 0.5)) == 0
     with pytest.raises(ValueError, match="increment"):
-        invisible_bars(iv, 0.02, 0.0, (0.0, 0.5))
+        invisible_bars(iv, increment=0.02, finer=0.0, window=(0.0, 0.5))
     # Radius grid: steps of 0.1 in ε = sqrt(ε²); [0.01, 0.04) in ε² is [0.1, 0.2) in ε.
-    np.testing.assert_allclose(sample_barcode([[0.01, 0.04]], 0.1, (0.0, 1.0), grid="radius"), [[0.01, 0.04]])
-    assert len(sample_barcode([[0.012, 0.015]], 0.1, (0.0, 1.0), grid="radius")) == 0
-    np.testing.assert_array_equal(sample_barcode(iv, 0.02, (0.0, 0.5)), discretise_intervals(iv, 0.02, (0.0, 0.5)))
+    np.testing.assert_allclose(sample_barcode([[0.01, 0.04]], increment=0.1, window=(0.0, 1.0), grid="radius"),
+                               [[0.01, 0.04]])
+    assert len(sample_barcode([[0.012, 0.015]], increment=0.1, window=(0.0, 1.0), grid="radius")) == 0
+    np.testing.assert_array_equal(sample_barcode(iv, increment=0.02, window=(0.0, 0.5)),
+                                  discretise_intervals(iv, increment=0.02, window=(0.0, 0.5)))
     with pytest.raises(ValueError, match="grid"):
-        sample_barcode(iv, 0.02, (0.0, 0.5), grid="log")
+        sample_barcode(iv, increment=0.02, window=(0.0, 0.5), grid="log")
     rows = void_count_readings(iv, [0.5, 1.0], increments=(0.02, 0.005, 0.05), min_length=0.03)
     assert len(rows) == 2 * 2 * 2
     first = rows[0]
@@ -272,8 +274,8 @@ def test_protein_filtration_of_gramicidin_is_connected_at_vdw_radii():
     # Every weighted vertex enters at -w = r_c^2 - r^2.
     np.testing.assert_allclose(np.sort(f.values[0]), np.sort(0.25 - r**2))
     bars = persistence(f)
-    assert bars.betti(0.25, 0) == 1  # the union of the van der Waals balls is connected
-    assert bars.betti(0.25, 1) > 10  # many rings (the thesis reports 30 with its radii)
+    assert bars.betti(0.25, dim=0) == 1  # the union of the van der Waals balls is connected
+    assert bars.betti(0.25, dim=1) > 10  # many rings (the thesis reports 30 with its radii)
     with pytest.raises(ValueError, match="negative weights"):
         protein_filtration(atoms, r, r_c=2.0)
 

@@ -248,10 +248,10 @@ def test_findings_list_what_is_not_reproduced_with_badges():
         {"section": "thesis", "where": "Figure 3.5", "status": "reproduced", "thesis": 1, "ours": 1, "note": ""},
     ]
     rows[0]["compared_as"] = "= 1"
-    lines = findings(rows, "2").splitlines()
+    lines = findings(rows, chapter="2").splitlines()
     assert lines[:2] == ["| thesis place | thesis — compared as | ours | status | why |", "|---|---|---|---|---|"]
     assert lines[2:] == ["| Example 2.36 | 1 — *compared as* = 1 | (2, 3.5) | {bdg-danger}`differs` | a \\| b c |"]
-    assert findings(rows, "3") == "Every claim of this chapter is reproduced."
+    assert findings(rows, chapter="3") == "Every claim of this chapter is reproduced."
 
 
 @pytest.mark.parametrize(
@@ -361,7 +361,7 @@ def test_an_identity_gives_its_reason_and_is_never_reproduced(registry):
     row = registry(_claim(compare="eq", thesis=288100, by_construction="the count is fixed by the parameters"))[0]
     assert row["status"] == "identity" and row["note"] == "" and row["compared_as"] == "= 288100"
     assert report.why(row) == "By construction: the count is fixed by the parameters."
-    assert "{bdg-success-line}`identity`" in report.findings([row], "2")
+    assert "{bdg-success-line}`identity`" in report.findings([row], chapter="2")
 
 
 def test_errata_show_the_text_as_printed_the_correction_and_the_check(registry):

@@ -34,8 +34,8 @@ def test_example_2_21_m2():
     # Thesis: diagonal (1, ..., 1, 2, 0, ...) with 10 nonzero terms, k_2 = 10.
     assert smith_normal_form(THESIS_M2).tolist() == [1] * 9 + [2]
     assert smith_normal_form(sp.csc_matrix(THESIS_M2)).tolist() == [1] * 9 + [2]
-    assert rank_mod_p(THESIS_M2, 2) == 9
-    assert rank_mod_p(THESIS_M2, 3) == 10
+    assert rank_mod_p(THESIS_M2, coefficients=2) == 9
+    assert rank_mod_p(THESIS_M2, coefficients=3) == 10
 
 
 def test_known_small_cases():
@@ -70,7 +70,7 @@ def test_matches_sympy_on_random_matrices(m, n, seed, bound, density):
         assert staged_invariants(a, density) == ref
     # rank over Z/p = number of invariant factors prime to p
     for p in (2, 3, 5):
-        assert rank_mod_p(a, p) == sum(1 for x in ref if x % p)
+        assert rank_mod_p(a, coefficients=p) == sum(1 for x in ref if x % p)
 
 
 @settings(deadline=None, max_examples=15)
@@ -105,14 +105,14 @@ def test_large_sparse_unit_matrix_and_skip():
     skip = np.zeros(n - 1, bool)
     skip[::2] = True
     assert reduce_matrix(a, skip_columns=skip).rank == (n - 1) // 2
-    assert reduce_matrix(a, 7, skip_columns=skip).rank == (n - 1) // 2
+    assert reduce_matrix(a, coefficients=7, skip_columns=skip).rank == (n - 1) // 2
 
 
 def test_large_prime_reads_the_rank_off_the_integer_smith_form():
     p = 2147483659  # the first prime above 2**31: too big for the word-size kernels
-    assert rank_mod_p(THESIS_M2, p) == 10
-    assert rank_mod_p([[p, 0], [0, 1]], p) == 1
-    assert rank_mod_p([[p, 0], [0, 1]], 2**31 - 1) == 2
+    assert rank_mod_p(THESIS_M2, coefficients=p) == 10
+    assert rank_mod_p([[p, 0], [0, 1]], coefficients=p) == 1
+    assert rank_mod_p([[p, 0], [0, 1]], coefficients=2**31 - 1) == 2
 
 
 @pytest.mark.parametrize(
@@ -141,7 +141,7 @@ def test_uint64_entries_beyond_int64_are_exact():
     assert [int(x) for x in smith_normal_form(b)] == sympy_invariants(b.astype(object))
     c = np.array([[-(2**63), 0], [0, 2]], dtype=np.int64)  # |int64 min| does not fit in int64
     assert [int(x) for x in smith_normal_form(c)] == [2, 2**63]
-    assert rank_mod_p(a, 3) == 0 and rank_mod_p(a, 5) == 2
+    assert rank_mod_p(a, coefficients=3) == 0 and rank_mod_p(a, coefficients=5) == 2
     with pytest.raises(ValueError, match="int64"):
         smith_normal_form(sp.csc_matrix(np.array([[2**63]], dtype=np.uint64)))
 
@@ -208,7 +208,7 @@ def test_dense_core_of_a_random_2_complex_matches_pari(density):
     n = 60
     tris = np.array([t for t in itertools.combinations(range(n), 3) if rng.random() < 4 / n])
     cx = closure(tris)
-    d2 = boundary_matrix(cx[1], cx[2], 0)
+    d2 = boundary_matrix(cx[1], cx[2], coefficients=0)
     rank, _, (core, _, _) = markowitz_eliminate(d2.indptr, d2.indices, d2.data, d2.shape[0],
                                                 np.zeros(d2.shape[1], bool), 0, density=density, finish=False)
     assert core.shape[0] > 100
@@ -219,11 +219,11 @@ def test_dense_core_of_a_random_2_complex_matches_pari(density):
 
 def test_bad_coefficients_and_masks():
     with pytest.raises(ValueError, match="prime"):
-        rank_mod_p(THESIS_M2, 4)
+        rank_mod_p(THESIS_M2, coefficients=4)
     with pytest.raises(ValueError, match="prime"):
-        rank_mod_p(THESIS_M2, 0)
+        rank_mod_p(THESIS_M2, coefficients=0)
     with pytest.raises(ValueError, match="prime"):
-        reduce_matrix(THESIS_M2, 1)
+        reduce_matrix(THESIS_M2, coefficients=1)
     with pytest.raises(ValueError, match="skip_columns"):
         reduce_matrix(THESIS_M2, skip_columns=np.zeros(3, bool))
     with pytest.raises(ValueError, match="2-D"):

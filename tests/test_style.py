@@ -94,7 +94,7 @@ def test_png_carries_the_size_and_is_deterministic(fig):
 
 def test_recorder_savefig_writes_the_chunk(fig, tmp_path):
     fig.axes[0].tick_params(labelsize=8)
-    path = Recorder("style-test", tmp_path).savefig(fig, "figure")
+    path = Recorder("style-test", output_dir=tmp_path).savefig(fig, "figure")
     assert png_text(path.read_bytes()) == {TEXT_PX_KEY: f"{_px(8, 110):.2f}"}
 
 

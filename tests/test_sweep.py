@@ -42,10 +42,10 @@ def test_kept_sweeps_are_stored_with_the_default_run_without_times(root):
     sweep("toy", {"n": [2]}, progress=False, keep=True)
     (table,) = stored_sweeps("toy")
     assert "| 2 | ok |" in table and "seconds" not in table and "worker" not in table
-    (narrow,) = stored_sweeps("toy", ["n", "square"])
+    (narrow,) = stored_sweeps("toy", columns=["n", "square"])
     assert narrow.splitlines()[2:] == ["| n | square |", "|---|---|", "| 2 | 4 |"]
     with pytest.raises(ValueError, match="has no columns"):
-        stored_sweeps("toy", ["nothing"])
+        stored_sweeps("toy", columns=["nothing"])
 
 
 def test_sweep_in_parallel_gives_the_same_table(root):

@@ -31,7 +31,7 @@ def traced(filtration, p):
 
 def simplex(name):
     """The ascending simplex a thesis name stands for and the sign of the thesis's orientation."""
-    ((s, sign),) = named_chain({name.strip("()"): 1}, EXAMPLE_NAMES).items()
+    ((s, sign),) = named_chain({name.strip("()"): 1}, names=EXAMPLE_NAMES).items()
     return s, sign
 
 

@@ -21,7 +21,11 @@ from __future__ import annotations
 import math
 import numbers
 import operator
+import os
+import sys
+import warnings
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
@@ -31,6 +35,8 @@ __all__ = [
     "as_points",
     "Points",
     "parse_points",
+    "looks_like_distance_matrix",
+    "warn_user",
     "power_of_two_scale",
     "scale_points",
     "Edges",
@@ -40,6 +46,9 @@ __all__ = [
     "parse_field",
     "check_radius",
     "check_max_dim",
+    "check_min_persistence",
+    "SCALES",
+    "check_scale",
     "check_weights",
     "check_int",
     "check_seed",
@@ -224,6 +233,31 @@ def check_radius(max_radius, name: str = "max_radius") -> float:
     return r
 
 
+def check_min_persistence(min_persistence) -> float:
+    """The ``min_persistence`` option of the barcodes: a finite number >= 0; bars with
+    death − birth <= it are dropped (0: only the zero-length ones, as always).
+
+    Thesis: §2.3 (short bars are noise; a bar of length 0 is no class at all).
+    """
+    return check_real(min_persistence, "min_persistence", minimum=0.0)
+
+
+#: the choices of the ``scale`` option of the persistence diagrams and the factor each multiplies a
+#: barcode's values by: ε (the thesis's Rips radius, Definition 2.11; "radius" is the same) or the
+#: diameter 2ε (the values of ripser.py, giotto-ph and persim)
+SCALES = {"epsilon": 1.0, "radius": 1.0, "diameter": 2.0}
+
+
+def check_scale(scale) -> float:
+    """The factor of a ``scale`` option (:data:`SCALES`), or a ``ValueError`` naming the choices.
+
+    Thesis: Definition 2.11 (ε, with diameter ≤ 2ε).
+    """
+    if not isinstance(scale, str) or scale not in SCALES:
+        raise ValueError(f"scale must be one of {', '.join(map(repr, SCALES))}, got {scale!r}")
+    return SCALES[scale]
+
+
 def check_max_dim(max_dim, name: str = "max_dim", *, maximum: int | None = None) -> int:
     """A largest simplex dimension: an integer >= 0 (and <= ``maximum`` when given, e.g.
     :data:`MAX_DIM` where every dimension up to it is allocated)."""
@@ -331,12 +365,45 @@ class Points:
         return int(self.array.shape[0])
 
 
-def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> Points:
+#: the folder of the package: :func:`warn_user` names the first frame outside it
+_PACKAGE_DIR = str(Path(__file__).resolve().parent) + os.sep
+
+
+def warn_user(message: str, category: type[Warning] = UserWarning) -> None:
+    """``warnings.warn(message, category)`` attributed to the first caller outside ``thesis_lib``.
+
+    A public function warns through this whatever its depth of internal calls, so the warning
+    names the user's line (and the default filter shows it once per such line).
+    """
+    frame, level = sys._getframe(0), 1
+    while frame is not None and str(Path(frame.f_code.co_filename).resolve()).startswith(_PACKAGE_DIR):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, category, stacklevel=level)
+
+
+def looks_like_distance_matrix(arr: np.ndarray) -> bool:
+    """Whether a checked ``(n, d)`` point array is also a distance matrix: n = d >= 2, symmetric,
+    a zero diagonal and no negative entry (what a user meaning ``distance_matrix=`` would pass)."""
+    n, d = arr.shape
+    return bool(n == d >= 2 and not np.diagonal(arr).any() and np.all(arr >= 0)
+                and np.allclose(arr, arr.T, rtol=1e-12, atol=0))
+
+
+def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points",
+                 warn_square: bool = False) -> Points:
     """``points`` checked by :func:`as_points` and scaled by a power of two, as a :class:`Points`.
 
     Thesis: §2.1.2 (a point set X in R^d, up to similarity).
+
+    ``warn_square=True`` (the front doors ``rips``, ``rips_persistence``, ``RipsDiagrams`` and
+    ``cech``) warns, once, when the array :func:`looks_like_distance_matrix`: it is read as n points
+    in R^n (as ripser.py reads it, with a warning too), and a distance matrix has its own keyword.
     """
     arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
+    if warn_square and looks_like_distance_matrix(arr):
+        n = arr.shape[0]
+        warn_user(f"{name} is a square ({n}, {n}) array, symmetric with a zero diagonal: it is read as {n} points "
+                  f"in R^{n}; a distance matrix goes to distance_matrix= (rips, rips_persistence)")
     e = power_of_two_scale(arr)
     return Points(arr, e, arr if e == 0 else np.ascontiguousarray(scale_points(arr, e, name)))
 
@@ -393,7 +460,7 @@ def parse_rips_input(points, distance_matrix, *, sparse: bool = False) -> Points
     if (points is None) == (distance_matrix is None):
         raise ValueError("give exactly one of points and distance_matrix")
     if distance_matrix is None:
-        return parse_points(points)
+        return parse_points(points, warn_square=True)
     if sparse and hasattr(distance_matrix, "tocoo"):
         return parse_sparse_distances(distance_matrix)
     return as_distance_matrix(distance_matrix)

@@ -52,7 +52,7 @@ class Filtration:
         if len(simplices) != len(values):
             raise ValueError("simplices and values must have one array per dimension each")
         if validate:
-            self.simplices = [as_simplex_array(s, d) for d, s in enumerate(simplices)]
+            self.simplices = [as_simplex_array(s, dim=d) for d, s in enumerate(simplices)]
         else:
             self.simplices = [np.asarray(s, dtype=np.int64) for s in simplices]
         self.values = [np.asarray(v, dtype=np.float64).reshape(-1) for v in values]

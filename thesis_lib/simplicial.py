@@ -28,7 +28,7 @@ __all__ = [
 ]
 
 
-def as_simplex_array(rows: np.ndarray | Sequence[Sequence[int]], dim: int | None = None) -> np.ndarray:
+def as_simplex_array(rows: np.ndarray | Sequence[Sequence[int]], *, dim: int | None = None) -> np.ndarray:
     """Return ``rows`` as an ``(m, dim + 1)`` int64 array with every row sorted ascending.
 
     Thesis: Definition 2.1 (a p-simplex has p + 1 distinct vertices).
@@ -106,7 +106,7 @@ def group_by_dimension(simplices: Iterable[Sequence[int]]) -> list[np.ndarray]:
     if not by_dim:
         return []
     top = max(by_dim)
-    return [as_simplex_array(by_dim.get(d, np.empty((0, d + 1), np.int64)), d) for d in range(top + 1)]
+    return [as_simplex_array(by_dim.get(d, np.empty((0, d + 1), np.int64)), dim=d) for d in range(top + 1)]
 
 
 def facets(arr: np.ndarray) -> np.ndarray:
@@ -240,7 +240,7 @@ def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.nd
         If there are no simplices, or a simplex is not valid (see :func:`as_simplex_array`).
     """
     if isinstance(simplices, list) and simplices and all(isinstance(a, np.ndarray) and a.ndim == 2 for a in simplices):
-        groups = [as_simplex_array(a, d) for d, a in enumerate(simplices)]
+        groups = [as_simplex_array(a, dim=d) for d, a in enumerate(simplices)]
     else:
         groups = group_by_dimension(simplices)
     if not groups:
@@ -255,7 +255,7 @@ def closure(simplices: Iterable[Sequence[int]] | list[np.ndarray]) -> list[np.nd
     return out
 
 
-def boundary_matrix(lower: np.ndarray, upper: np.ndarray, coefficients: int = 0) -> sp.csc_matrix:
+def boundary_matrix(lower: np.ndarray, upper: np.ndarray, *, coefficients: int = 0) -> sp.csc_matrix:
     """Signed boundary matrix of ``upper`` (k-simplices) in the basis ``lower`` ((k-1)-simplices).
 
     Thesis: Definition 2.18, ∂[x_0, ..., x_p] = Σ_i (-1)^i [x_0, ..., x̂_i, ..., x_p].

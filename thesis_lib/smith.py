@@ -154,7 +154,7 @@ def _symmetric(mat: sp.csc_matrix, p: int) -> sp.csc_matrix:
     return out
 
 
-def reduce_matrix(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, coefficients: int = 0,
+def reduce_matrix(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, *, coefficients: int = 0,
                   skip_columns: npt.ArrayLike | None = None) -> Reduction:
     """Rank and torsion invariants of an integer matrix: sparse unit-pivot elimination, then an exact dense core.
 
@@ -186,14 +186,14 @@ def reduce_matrix(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, coefficients
     field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
     mat = _as_matrix(matrix)
     if skip_columns is None:
-        return reduce_checked(mat, field)
+        return reduce_checked(mat, field=field)
     skip = np.asarray(skip_columns, dtype=np.bool_)
     if skip.shape != (mat.shape[1],):
         raise ValueError(f"skip_columns must be a boolean mask of length {mat.shape[1]}, got shape {skip.shape}")
-    return reduce_checked(mat, field, skip)
+    return reduce_checked(mat, field=field, skip_columns=skip)
 
 
-def reduce_checked(matrix: sp.csc_matrix | np.ndarray, field: Field,
+def reduce_checked(matrix: sp.csc_matrix | np.ndarray, *, field: Field,
                    skip_columns: np.ndarray | None = None) -> Reduction:
     """:func:`reduce_matrix` on checked input (a boundary matrix the library built, or one parsed by it).
 
@@ -221,7 +221,7 @@ def reduce_checked(matrix: sp.csc_matrix | np.ndarray, field: Field,
         if p:  # over Z/p the residues are small: back to the sparse kernels
             mat = sp.csc_matrix((dense % p).astype(np.int64))
             mat.sort_indices()
-            return reduce_checked(mat, field)
+            return reduce_checked(mat, field=field)
         return _dense_reduction(dense, p)
     mat = matrix
     if p > MAX_PRIME:
@@ -261,7 +261,7 @@ def smith_normal_form(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray) -> np.nd
     ValueError
         If the matrix is not 2-D or has non-integer, NaN or infinite entries.
     """
-    red = reduce_checked(_as_matrix(matrix), Field(0))
+    red = reduce_checked(_as_matrix(matrix), field=Field(0))
     values = [1] * (red.rank - len(red.invariants)) + list(red.invariants)
     if any(v >= 2**63 for v in values):
         return np.array(values, dtype=object)
@@ -297,7 +297,7 @@ def dense_smith_diagonal(matrix: npt.ArrayLike) -> list[int]:
     return dense_invariants(_checked_entries(a))
 
 
-def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, p: int) -> int:
+def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, *, coefficients: int) -> int:
     """Rank of an integer matrix over the field Z/p (p prime) by sparse elimination mod p.
 
     Thesis: §2.2.1 (working over Z_p, where every nonzero pivot is invertible).
@@ -306,8 +306,8 @@ def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, p: int) -> int:
     ----------
     matrix : array_like or scipy sparse matrix, shape (m, n)
         Integer entries (as for :func:`reduce_matrix`).
-    p : int
-        The prime.
+    coefficients : int
+        The prime p.
 
     Returns
     -------
@@ -317,9 +317,9 @@ def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, p: int) -> int:
     Raises
     ------
     ValueError
-        If ``p`` is not a prime, or the matrix is not a 2-D integer matrix.
+        If ``coefficients`` is not a prime, or the matrix is not a 2-D integer matrix.
     """
-    field = parse_field(p, max_prime=MAX_EXACT_PRIME)
+    field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
     if not field.is_field:
         raise ValueError("rank_mod_p needs a prime p, got 0")
-    return reduce_checked(_as_matrix(matrix), field).rank
+    return reduce_checked(_as_matrix(matrix), field=field).rank

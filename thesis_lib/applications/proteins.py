@@ -217,6 +217,7 @@ def _normalise(text: str, source: str) -> tuple[str, int]:
 
 def read_pdb(
     path_or_name: str | Path,
+    *,
     model: int = 1,
     hetero: bool = True,
     waters: bool = False,
@@ -321,7 +322,7 @@ def _element_radii(elements: np.ndarray, table) -> np.ndarray:
 
 
 def vdw_radii(
-    atoms: Atoms, set: str = "protor", return_fallback: bool = False
+    atoms: Atoms, *, set: str = "protor", return_fallback: bool = False
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """Van der Waals radius (Å) of every atom.
 
@@ -387,7 +388,7 @@ def vdw_radii(
 
 
 def weighted_points(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike,
-                    r_c: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
+                    *, r_c: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """Centres and alpha-complex weights w = r² − r_c² of the atoms' balls.
 
     Thesis: §2.4.2 (w = r² − r_c², so the filtration value ε² = r_c² gives every atom its radius r;
@@ -431,7 +432,7 @@ def weighted_points(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike,
 
 
 # --------------------------------------------------------------------------- filtrations and bars
-def protein_filtration(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike, r_c: float = 0.0) -> Filtration:
+def protein_filtration(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike, *, r_c: float = 0.0) -> Filtration:
     """Weighted alpha filtration of the atoms' balls with weights w = r² − r_c² (values ε²).
 
     Thesis: §2.2.2 and §2.4.2 (the union of the balls B(x, sqrt(w + ε²)) is homotopy equivalent to
@@ -465,7 +466,7 @@ def protein_filtration(atoms: Atoms | npt.ArrayLike, radii: npt.ArrayLike, r_c: 
     if r_c * r_c == np.inf:
         raise ValueError(f"r_c = {r_c:.3g} is too large: r_c² leaves float64's range (about 1.8e308); "
                          "r_c must be at most the smallest radius")
-    points, weights = weighted_points(atoms, radii, r_c)
+    points, weights = weighted_points(atoms, radii, r_c=r_c)
     if np.any(weights < 0):
         raise ValueError(f"r_c = {r_c} exceeds the smallest radius {float(np.min(radii)):.3f}: negative weights")
     return alpha(points, weights)
@@ -491,7 +492,7 @@ def _snap(intervals: np.ndarray, increment: float, window: tuple[float, float]) 
 
 
 def discretise_intervals(
-    intervals: np.ndarray, increment: float, window: tuple[float, float] = (0.0, np.inf)
+    intervals: np.ndarray, *, increment: float, window: tuple[float, float] = (0.0, np.inf)
 ) -> np.ndarray:
     """Intervals of the filtration sampled at ``lo, lo + increment, lo + 2·increment, ...`` within a window.
 
@@ -528,7 +529,7 @@ def discretise_intervals(
 
 
 def sample_barcode(
-    intervals: np.ndarray, increment: float, window: tuple[float, float], *, grid: str = "squared"
+    intervals: np.ndarray, *, increment: float, window: tuple[float, float], grid: str = "squared"
 ) -> np.ndarray:
     """Bars of an alpha filtration (values ε²) sampled every ``increment`` of ε² or of ε, in ε² units.
 
@@ -561,18 +562,18 @@ def sample_barcode(
         An unknown ``grid``, or as :func:`discretise_intervals`.
     """
     if grid == "squared":
-        return discretise_intervals(intervals, increment, window)
+        return discretise_intervals(intervals, increment=increment, window=window)
     if grid != "radius":
         raise ValueError(f"grid must be 'squared' or 'radius', got {grid!r}")
     iv = np.asarray(intervals, dtype=np.float64).reshape(-1, 2)
     lo, hi = float(window[0]), float(window[1])
     root = np.sqrt(np.clip(iv, 0.0, None))
-    sampled = discretise_intervals(root, increment, (np.sqrt(max(lo, 0.0)), np.sqrt(max(hi, 0.0))))
+    sampled = discretise_intervals(root, increment=increment, window=(np.sqrt(max(lo, 0.0)), np.sqrt(max(hi, 0.0))))
     return sampled**2
 
 
 def invisible_bars(
-    intervals: np.ndarray, increment: float, finer: float, window: tuple[float, float]
+    intervals: np.ndarray, *, increment: float, finer: float, window: tuple[float, float]
 ) -> int:
     """Number of bars seen when sampling every ``finer`` but not when sampling every ``increment``.
 
@@ -650,12 +651,13 @@ def void_count_readings(
         for unit in ("squared", "radius"):
             for t in np.asarray(window_ends, dtype=np.float64):
                 row: dict[str, float | int | str] = {"grid": grid, "length": unit, "window_end": float(t)}
-                sampled = {inc: sample_barcode(intervals, inc, (lo, float(t)), grid=grid) for inc in increments}
+                sampled = {inc: sample_barcode(intervals, increment=inc, window=(lo, float(t)), grid=grid)
+                           for inc in increments}
                 for inc in increments:
                     row[f"n_{inc:g}"] = len(sampled[inc])
                 last = sampled[increments[-1]]
                 shown = last if unit == "squared" else np.sqrt(np.clip(last, 0.0, None))
-                row["long"] = int(len(long_bars(Barcode({2: shown}), 2, min_length)))
+                row["long"] = int(len(long_bars(Barcode({2: shown}), dim=2, min_length=min_length)))
                 rows.append(row)
     return rows
 
@@ -668,6 +670,7 @@ ELEMENT_COLORS = {"C": "#8c8c8c", "N": "#3050f8", "O": "#ff0d0d", "S": "#e6c619"
 def space_filling_image(
     atoms: Atoms,
     radii: np.ndarray,
+    *,
     scale: float = 1.0,
     window_size: tuple[int, int] = (600, 600),
     resolution: int = 16,

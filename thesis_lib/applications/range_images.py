@@ -125,6 +125,7 @@ def _rotation(yaw, pitch=0.0, roll=0.0):
 
 
 def synthetic_range_image(
+    *,
     seed: int,
     size: tuple[int, int] = (192, 256),
     n_boxes: int = 2,
@@ -274,7 +275,7 @@ def _check_size(size) -> tuple[int, int]:
 
 
 # =========================================================================== patches
-def patches(image: npt.ArrayLike, size: int = 5, log: bool = True) -> np.ndarray:
+def patches(image: npt.ArrayLike, *, size: int = 5, log: bool = True) -> np.ndarray:
     """All ``size × size`` patches of a range image as rows of length size² (row-major pixels).
 
     Thesis: §2.4.3 (5 × 5 patches thought of as vectors in R^25; Adams–Carlsson 2009 use the
@@ -324,7 +325,7 @@ def _valid_windows(image: np.ndarray, size: int, log: bool) -> tuple[np.ndarray,
     return img, count == 0
 
 
-def sample_patches(images: Sequence[npt.ArrayLike], n: int, size: int = 5, seed: int = 0,
+def sample_patches(images: Sequence[npt.ArrayLike], *, n: int, size: int = 5, seed: int = 0,
                    log: bool = True) -> np.ndarray:
     """``n`` patches drawn uniformly without replacement from the valid patches of all ``images``.
 
@@ -426,7 +427,7 @@ def contrast_norm(X: npt.ArrayLike) -> np.ndarray:
     return np.sqrt(np.sum(dh * dh, axis=(1, 2)) + np.sum(dv * dv, axis=(1, 2)))
 
 
-def high_contrast(X: npt.ArrayLike, top: float = 0.2) -> np.ndarray:
+def high_contrast(X: npt.ArrayLike, *, top: float = 0.2) -> np.ndarray:
     """The fraction ``top`` of patches with the largest D-norm (ties broken by position).
 
     Thesis: §2.4.3 (high-contrast patches; Adams–Carlsson keep the top 20 %).
@@ -486,7 +487,7 @@ def normalise(X: npt.ArrayLike) -> np.ndarray:
 
 
 # =========================================================================== density
-def kth_neighbour_distance(X: npt.ArrayLike, k: int) -> np.ndarray:
+def kth_neighbour_distance(X: npt.ArrayLike, *, k: int) -> np.ndarray:
     """ρ_k(x): the distance from each point to its k-th nearest other point.
 
     Thesis: §2.4.3 (density is determined by the distance to the k-th closest neighbour).
@@ -546,7 +547,7 @@ def _check_percent(percent) -> float:
 
 
 def density_filter(
-    X: npt.ArrayLike, k: int, percent: float, return_index: bool = False
+    X: npt.ArrayLike, *, k: int, percent: float, return_index: bool = False
 ) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """X(k, percent): the ``percent`` % of points with the smallest distance to their k-th nearest neighbour.
 
@@ -577,7 +578,7 @@ def density_filter(
         A ``percent`` outside (0, 100], or as :func:`kth_neighbour_distance`.
     """
     percent = _check_percent(percent)
-    rho = kth_neighbour_distance(X, k)
+    rho = kth_neighbour_distance(X, k=k)
     m = max(1, int(round(percent / 100 * rho.shape[0])))
     idx = np.sort(np.argsort(rho, kind="stable")[:m])
     out = np.asarray(X, dtype=np.float64)[idx]
@@ -585,7 +586,7 @@ def density_filter(
 
 
 # =========================================================================== DCT
-def dct_basis(size: int = 5) -> np.ndarray:
+def dct_basis(*, size: int = 5) -> np.ndarray:
     """Orthonormal 2-D DCT-II basis of size × size patches: row ``i*size + j`` is c_i ⊗ c_j.
 
     Thesis: §2.4.3 (normalised discrete cosine transform, Figure 2.23).  ``c_k(m) =
@@ -623,9 +624,9 @@ def dct_basis_5x5() -> np.ndarray:
     Returns
     -------
     numpy.ndarray of float64, shape (25, 25)
-        ``dct_basis(5)``.
+        ``dct_basis(size=5)``.
     """
-    return dct_basis(5)
+    return dct_basis(size=5)
 
 
 def gradient_projection(X: npt.ArrayLike) -> np.ndarray:
@@ -646,13 +647,14 @@ def gradient_projection(X: npt.ArrayLike) -> np.ndarray:
         (horizontal, vertical) coordinates of each patch.
     """
     arr, size = _as_patch_rows(X)
-    basis = dct_basis(size)
+    basis = dct_basis(size=size)
     return arr @ basis[[1, size]].T
 
 
 # =========================================================================== pipeline
 def range_patch_space(
     images: Sequence[npt.ArrayLike],
+    *,
     n_patches: int,
     k: int = 300,
     percent: float = 30.0,
@@ -693,7 +695,7 @@ def range_patch_space(
         As the steps above.
     """
     percent = _check_percent(percent)
-    raw = sample_patches(images, n_patches, size=size, seed=seed)
+    raw = sample_patches(images, n=n_patches, size=size, seed=seed)
     high = normalise(high_contrast(raw, top=top))
-    dense = density_filter(high, k, percent)
+    dense = density_filter(high, k=k, percent=percent)
     return {"patches": raw, "high": high, "dense": dense}

@@ -6,12 +6,12 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import miniball
-from .._validate import MAX_WORK, as_points, check_max_dim, check_radius
+from .._validate import MAX_WORK, check_max_dim, check_radius, parse_points
 from ..filtration import Filtration
 from ..simplicial import facets, find_rows
 from ._flag import check_expansion, edges_within, expand_level, upper_csr
 from .rips import check_edges
-from .scaling import scaled, unscale_values
+from .scaling import unscale_values
 
 __all__ = ["cech"]
 
@@ -35,7 +35,7 @@ def _check_work(indptr: np.ndarray, max_dim: int) -> None:
                          f"budget of {MAX_WORK:.0e} (about half a minute): lower max_radius or max_dim")
 
 
-def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
+def cech(points: npt.ArrayLike, *, max_radius: float, max_dim: int) -> Filtration:
     """Čech filtration: σ enters at the radius of the smallest ball enclosing its vertices.
 
     Thesis: Definition 2.9, C(X, ε) = {σ : ∩_{x∈σ} B(x, ε) ≠ ∅}; the balls meet iff σ fits in a
@@ -53,6 +53,12 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
         Values are the radii of the smallest enclosing balls (vertices 0, an edge half its
         length); points are scaled by a power of two first, so any magnitude works.
 
+    Warns
+    -----
+    UserWarning
+        ``points`` square, symmetric, with a zero diagonal and no negative entry (it looks like a
+        distance matrix, but it is read as n points in R^n).
+
     Notes
     -----
     Candidates come from the Rips complex R(X, ε) ⊇ C(X, ε) (a set of diameter > 2ε fits in no
@@ -61,7 +67,8 @@ def cech(points: npt.ArrayLike, max_radius: float, max_dim: int) -> Filtration:
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)
-    pts, e = scaled(as_points(points))  # power-of-two scaling: no overflow/underflow of squares
+    cloud = parse_points(points, warn_square=True)  # scaled by a power of two: no overflow/underflow of squares
+    pts, e = cloud.scaled, cloud.exponent
     with np.errstate(over="ignore"):
         eps = float(np.ldexp(eps, e))
     n = pts.shape[0]

@@ -18,7 +18,7 @@ def _check_count(points: np.ndarray, n) -> int:
     return n
 
 
-def random_landmarks(points: npt.ArrayLike, n: int, seed: int) -> np.ndarray:
+def random_landmarks(points: npt.ArrayLike, *, n: int, seed: int) -> np.ndarray:
     """Indices of ``n`` landmarks drawn uniformly without replacement.
 
     Thesis: Definition 2.16 and §2.1.2 (the random method).
@@ -39,7 +39,7 @@ def random_landmarks(points: npt.ArrayLike, n: int, seed: int) -> np.ndarray:
     return np.sort(np.random.default_rng(check_seed(seed)).choice(pts.shape[0], size=n, replace=False))
 
 
-def maxmin_landmarks(points: npt.ArrayLike, n: int, seed: int) -> np.ndarray:
+def maxmin_landmarks(points: npt.ArrayLike, *, n: int, seed: int) -> np.ndarray:
     """Indices of ``n`` landmarks chosen by the sequential maxmin method, in the order chosen.
 
     Thesis: §2.1.2: the i-th landmark maximises the distance to the first i - 1 landmarks;

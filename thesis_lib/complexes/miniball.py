@@ -78,7 +78,7 @@ def _mtf(points: np.ndarray, end: int, support: list[np.ndarray], dim: int, tol:
     return centre, r2
 
 
-def smallest_enclosing_ball(points: npt.ArrayLike, seed: int = 0) -> tuple[np.ndarray, float]:
+def smallest_enclosing_ball(points: npt.ArrayLike, *, seed: int = 0) -> tuple[np.ndarray, float]:
     """Centre and radius of the smallest closed ball containing ``points`` (any dimension).
 
     Thesis: §2.1.2, the Miniball Algorithm [Gär99] deciding membership in C(X, ε) (Definition 2.9).

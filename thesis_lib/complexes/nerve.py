@@ -12,7 +12,7 @@ __all__ = ["nerve", "MAX_NERVE_SIMPLICES"]
 MAX_NERVE_SIMPLICES = 10**6
 
 
-def nerve(cover: Sequence[Iterable], max_dim: int | None = None) -> list[tuple[int, ...]]:
+def nerve(cover: Sequence[Iterable], *, max_dim: int | None = None) -> list[tuple[int, ...]]:
     """Simplices J (index tuples into ``cover``) whose sets have a common element.
 
     Thesis: Definition 2.7, N(U) = {J ⊆ I : ∩_{j∈J} U_j ≠ ∅} (the empty simplex is left out).

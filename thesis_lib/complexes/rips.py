@@ -2,12 +2,19 @@
 
 from __future__ import annotations
 
-import warnings
-
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import MAX_SIMPLICES, Edges, Points, check_max_dim, check_radius, check_size, parse_rips_input
+from .._validate import (
+    MAX_SIMPLICES,
+    Edges,
+    Points,
+    check_max_dim,
+    check_radius,
+    check_size,
+    parse_rips_input,
+    warn_user,
+)
 from ..filtration import Filtration
 from ._flag import edges_within, flag_levels, matrix_edges
 from .scaling import unscale_values
@@ -125,9 +132,9 @@ def rips_edges(source: Points | np.ndarray | Edges,
     ends = np.maximum(diagonal[edges[:, 0]], diagonal[edges[:, 1]])
     below = int(np.count_nonzero(lengths < ends))
     if below:
-        warnings.warn(f"distance_matrix: {below} entries are below the diagonal entry (the birth) of one of their "
-                      "vertices; an edge cannot enter before its vertices, so they are read as that birth "
-                      "(ripser.py keeps them as they are and reports another barcode)", UserWarning, stacklevel=4)
+        warn_user(f"distance_matrix: {below} entries are below the diagonal entry (the birth) of one of their "
+                  "vertices; an edge cannot enter before its vertices, so they are read as that birth "
+                  "(ripser.py keeps them as they are and reports another barcode)")
     lengths = np.maximum(lengths, ends)
     keep = lengths <= threshold
     return n, edges[keep], lengths[keep], np.where(diagonal <= threshold, diagonal, np.inf)
@@ -162,7 +169,7 @@ def rips_filtration(source: Points | np.ndarray, max_radius: float, max_dim: int
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)
 
 
-def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_dim: int = 2, *,
+def rips(points: npt.ArrayLike | None = None, *, max_radius: float = np.inf, max_dim: int = 2,
          distance_matrix: npt.ArrayLike | None = None) -> Filtration:
     """Vietoris–Rips filtration: σ enters at ε = (largest distance between its vertices) / 2.
 
@@ -170,7 +177,9 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
 
     Parameters
     ----------
-    points : (n, d) array of points (or give ``distance_matrix`` instead).
+    points : (n, d) array of points (or give ``distance_matrix`` instead).  Duplicate points are
+        allowed: each row is a vertex, joined to its copies at ε = 0 (their H0 bars have length
+        zero and are left out of barcodes).
     max_radius : largest ε kept (simplices of diameter ≤ 2 · max_radius); ``inf`` keeps all.
     max_dim : largest simplex dimension built (>= 0).
     distance_matrix : (n, n) symmetric array of pairwise distances (keyword only).  A non-zero
@@ -186,6 +195,13 @@ def rips(points: npt.ArrayLike | None = None, max_radius: float = np.inf, max_di
         Points of any magnitude are scaled by a power of two first (exactly), so coordinates near
         1e160 or 1e-170 give correct values; the edges are those of ``rips_edges``, the same
         as the implicit engine's (:func:`~thesis_lib.persistence.rips_persistence`).
+
+    Warns
+    -----
+    UserWarning
+        ``points`` square, symmetric, with a zero diagonal and no negative entry: it looks like a
+        distance matrix but is read as n points in R^n (ripser.py warns too); give a distance
+        matrix as ``distance_matrix=``.
 
     Examples
     --------

@@ -45,7 +45,7 @@ def _check_nu(nu, n_landmarks: int) -> int:
     return nu
 
 
-def witness_offsets(points: npt.ArrayLike, landmarks: npt.ArrayLike, nu: int = 1) -> np.ndarray:
+def witness_offsets(points: npt.ArrayLike, landmarks: npt.ArrayLike, *, nu: int = 1) -> np.ndarray:
     """The matrix ``D[i, x] = |l_i − x| − m(x)`` (landmark i, point x) both complexes are built from.
 
     Thesis: §2.1.2, m_k(x) = distance to the (k + 1)-th closest landmark, with ν = k + 1.
@@ -88,7 +88,7 @@ def _offsets(points, landmarks, nu, per_pair: int) -> np.ndarray:
 _SORTED_LIMIT = 20_000_000  # largest L × N for which the per-landmark sorted witness lists are kept
 
 
-def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, *, max_radius: float, max_dim: int,
             nu: int = 1) -> Filtration:
     """Witness filtration W(X, L, ε) with the thesis's (strong, un-squared) rule.
 
@@ -135,7 +135,7 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, 
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)
 
 
-def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, max_radius: float, max_dim: int,
+def lazy_witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, *, max_radius: float, max_dim: int,
                  nu: int = 1) -> Filtration:
     """Lazy witness filtration (JavaPlex): the witness rule on edges, then the flag complex.
 

@@ -61,14 +61,14 @@ def check_area(area: object) -> str:
     return area
 
 
-def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
+def circumcentric_fractions(corners: npt.ArrayLike) -> np.ndarray:
     """Signed fraction of each simplex's hyperarea in each vertex's circumcentric cell.
 
     Thesis: §3.3.2 (Voronoi regions; the 3-simplex corner remark of §3.4.2).
 
     Parameters
     ----------
-    p : ndarray, shape (m, n + 1, d)
+    corners : ndarray, shape (m, n + 1, d)
         Vertex coordinates of m non-degenerate n-simplices.
 
     Returns
@@ -81,28 +81,28 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
     Raises
     ------
     ValueError
-        If ``p`` is not an (m, n + 1, d) array of finite numbers with d >= n.
+        If ``corners`` is not an (m, n + 1, d) array of finite numbers with d >= n.
     """
-    if np.iscomplexobj(p):
+    if np.iscomplexobj(corners):
         raise InvalidTypeError("complex numbers are not coordinates")
     try:
-        p = np.asarray(p, dtype=np.float64)
+        corners = np.asarray(corners, dtype=np.float64)
     except (TypeError, ValueError) as err:
-        raise ValueError(f"p must be an (m, n + 1, d) array of numbers: {err}") from None
-    if p.ndim != 3 or p.shape[1] < 1 or p.shape[2] < p.shape[1] - 1:
-        raise ValueError(f"p must have shape (m, n + 1, d) with d >= n, got {p.shape}")
-    if not np.isfinite(p).all():
-        raise ValueError("p has a NaN or infinite coordinate")
-    m, w, _ = p.shape
+        raise ValueError(f"corners must be an (m, n + 1, d) array of numbers: {err}") from None
+    if corners.ndim != 3 or corners.shape[1] < 1 or corners.shape[2] < corners.shape[1] - 1:
+        raise ValueError(f"corners must have shape (m, n + 1, d) with d >= n, got {corners.shape}")
+    if not np.isfinite(corners).all():
+        raise ValueError("corners have a NaN or infinite coordinate")
+    m, w, _ = corners.shape
     full = (1 << w) - 1
-    ill = _ill_rows(p)
+    ill = _ill_rows(corners)
     frac: dict[int, np.ndarray] = {1 << i: np.ones((m, w)) for i in range(w)}
     masks = sorted(range(1, full + 1), key=lambda s: bin(s).count("1"))
     for mask in masks:
         members = [i for i in range(w) if mask >> i & 1]
         if len(members) < 2:
             continue
-        q = p[:, members, :]
+        q = corners[:, members, :]
         x = q[:, 1:, :] - q[:, :1, :]
         g = np.einsum("mia,mja->mij", x, x)
         a = np.linalg.solve(g, 0.5 * np.einsum("mii->mi", g)[..., None])[..., 0]
@@ -116,7 +116,7 @@ def circumcentric_fractions(p: npt.ArrayLike) -> np.ndarray:
     out = frac[full]
     for k in ill.tolist():
         try:
-            out[k] = _exact_circumcentric_fractions(p[k])
+            out[k] = _exact_circumcentric_fractions(corners[k])
         except ZeroDivisionError:
             raise ValueError(f"simplex {k} is degenerate: its vertices are affinely dependent") from None
     return out
@@ -212,7 +212,7 @@ def vertex_areas_of_mesh(mesh: Mesh, area: str = "mixed") -> np.ndarray:
     return np.bincount(s.ravel(), weights=share.ravel(), minlength=nv)
 
 
-def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str = "mixed") -> np.ndarray:
+def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, area: str = "mixed") -> np.ndarray:
     """Area (hyperarea) of each vertex's region: mixed, Voronoi (circumcentric) or barycentric.
 
     Thesis: §3.3.2 (Voronoi and barycentric regions, the formula for A_vor).

@@ -374,7 +374,7 @@ def principal_curvatures_from_mean_and_gaussian(
         On an invalid mesh (see :func:`thesis_lib.curvature.vertex_areas`) or an unknown area.
     """
     vec = mean_curvature_vector(vertices, faces)
-    H = np.einsum("ia,ia->i", vec, vertex_normals(vertices, faces)) / (2 * vertex_areas(vertices, faces, area))
+    H = np.einsum("ia,ia->i", vec, vertex_normals(vertices, faces)) / (2 * vertex_areas(vertices, faces, area=area))
     K = gaussian_curvature(vertices, faces, area=area)
     root = np.sqrt(np.clip(H * H - K, 0.0, None))
     return H - root, H + root

@@ -356,7 +356,7 @@ def mean_curvature_integral(X: Param, normal: Param, lam: Param, params: ArrayLi
         As :func:`thesis_lib.curvature.exact.fundamental_forms`.
     """
     params, weights = np.asarray(params, dtype=np.float64), np.asarray(weights, dtype=np.float64)
-    g, B = fundamental_forms(X, params, h)
+    g, B = fundamental_forms(X, params, h=h)
     n = g.shape[-1]
     sign = np.sign(np.einsum("...a,...a->...", hypersurface_normal(parametric_jacobian(X, params)), normal(params)))
     H = sign * np.trace(np.linalg.solve(g, B), axis1=-2, axis2=-1) / n
@@ -409,7 +409,7 @@ def gauss_map_area_ratio(X: Param, w0: ArrayLike, radius: float, *, nodes: int =
     JX, JN = parametric_jacobian(X, w, h=h), parametric_jacobian(N, w, h=1e3 * h)
     area_X = np.sum(W * np.linalg.norm(np.cross(JX[..., 0], JX[..., 1]), axis=-1))
     area_N = np.sum(W * np.linalg.norm(np.cross(JN[..., 0], JN[..., 1]), axis=-1))
-    g, B = fundamental_forms(X, w0[None], 1e-4)
+    g, B = fundamental_forms(X, w0[None], h=1e-4)
     return float(area_N / area_X / abs(np.linalg.det(np.linalg.solve(g, B))[0]))
 
 
@@ -493,7 +493,7 @@ def gauss_map_pullback_ratio(X: Param, w: ArrayLike, *, h: float = 1e-5) -> NDAr
     JX, JN = parametric_jacobian(X, w, h=h), parametric_jacobian(N, w, h=1e3 * h)
     num = np.linalg.det(np.concatenate([n0[..., None], JN], axis=-1))
     den = np.linalg.det(np.concatenate([n0[..., None], JX], axis=-1))
-    g, B = fundamental_forms(X, w, 1e-4)
+    g, B = fundamental_forms(X, w, h=1e-4)
     return num / (den * np.linalg.det(np.linalg.solve(g, B)))
 
 

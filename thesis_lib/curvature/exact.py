@@ -82,7 +82,7 @@ def _finite(name: str, x) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------------------- torus
-def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Points X(u, v) = ((R + r cos v) cos u, (R + r cos v) sin u, r sin v) of the torus, shape (..., 3).
 
     Thesis: §3.4.1 (parametrisation of the torus in R³).
@@ -115,7 +115,7 @@ def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 
     return np.stack([rho * np.cos(u), rho * np.sin(u), r * np.sin(v)], axis=-1)
 
 
-def torus_uv(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
+def torus_uv(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
     """Parameters (u, v) in [0, 2π) of points on (or near) the torus: the nearest point's parameters.
 
     Thesis: §3.4.1 (inverse of the torus parametrisation, used to compare estimates at samples).
@@ -147,7 +147,7 @@ def torus_uv(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> tuple[np
     return u, v
 
 
-def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Shape operator in the basis (X_u, X_v): diag(-cos v / (R + r cos v), -1/r), shape (..., 2, 2).
 
     Thesis: §3.4.1 (S(X_u) = -cos v/(R + r cos v) X_u, S(X_v) = -X_v / r).
@@ -180,7 +180,7 @@ def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r:
     return out
 
 
-def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Principal curvatures κ₁ ≤ κ₂ (eigenvalues of S), shape (..., 2).
 
     Thesis: Definition 3.3 and §3.4.1.
@@ -204,12 +204,12 @@ def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10
     ValueError
         As :func:`torus_shape_operator`.
     """
-    S = torus_shape_operator(u, v, R, r)
+    S = torus_shape_operator(u, v, R=R, r=r)
     k = np.stack([S[..., 0, 0], S[..., 1, 1]], axis=-1)
     return np.sort(k, axis=-1)
 
 
-def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Signed mean curvature H = -(R + 2r cos v) / (2r (R + r cos v)) (outward normal).
 
     Thesis: §3.4.1 (H = tr(S)/2, Definition 3.4).
@@ -239,7 +239,7 @@ def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r:
     return -(R + 2 * r * c) / (2 * r * (R + r * c))
 
 
-def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Gaussian curvature K = cos v / (r (R + r cos v)).
 
     Thesis: §3.4.1 (K = det S, Definition 3.4).
@@ -269,7 +269,7 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 10.0
     return c / (r * (R + r * c))
 
 
-def torus_mean_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_mean_curvature_at(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Signed mean curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
 
     Thesis: §3.4.1, Figure 3.11 (exact |H| at the sampled points).
@@ -292,10 +292,10 @@ def torus_mean_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5
     ValueError
         As :func:`torus_uv`.
     """
-    return torus_mean_curvature(*torus_uv(points, R, r), R, r)
+    return torus_mean_curvature(*torus_uv(points, R=R, r=r), R=R, r=r)
 
 
-def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_principal_curvatures_at(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Principal curvatures κ₁ ≤ κ₂ of the torus at the parameters of ``points``, shape (..., 2).
 
     Thesis: Definition 3.3 and §3.4.1.
@@ -317,10 +317,10 @@ def torus_principal_curvatures_at(points: npt.ArrayLike, R: float = 10.0, r: flo
     ValueError
         If ``points`` is not (..., 3) or not finite, or the radii are invalid (:func:`torus_uv`).
     """
-    return torus_principal_curvatures(*torus_uv(points, R, r), R, r)
+    return torus_principal_curvatures(*torus_uv(points, R=R, r=r), R=R, r=r)
 
 
-def torus_gaussian_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float = 5.0) -> np.ndarray:
+def torus_gaussian_curvature_at(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> np.ndarray:
     """Gaussian curvature of the torus at the parameters of ``points`` (see :func:`torus_uv`).
 
     Thesis: §3.4.1, Figures 3.6–3.7.
@@ -342,11 +342,11 @@ def torus_gaussian_curvature_at(points: npt.ArrayLike, R: float = 10.0, r: float
     ValueError
         As :func:`torus_uv`.
     """
-    return torus_gaussian_curvature(*torus_uv(points, R, r), R, r)
+    return torus_gaussian_curvature(*torus_uv(points, R=R, r=r), R=R, r=r)
 
 
 # ---------------------------------------------------------------------------------- hypersphere
-def hypersphere_point(angles: npt.ArrayLike, radius: float = 2.0) -> np.ndarray:
+def hypersphere_point(angles: npt.ArrayLike, *, radius: float = 2.0) -> np.ndarray:
     """Hyperspherical coordinates: angles (..., n) = (ψ₁, ..., ψ_{n-1}, φ) to points (..., n+1) on S^n(ρ).
 
     x₁ = ρ cos ψ₁, x₂ = ρ sin ψ₁ cos ψ₂, ..., x_{n+1} = ρ sin ψ₁ ⋯ sin ψ_{n-1} sin φ; for n = 3 these are
@@ -386,7 +386,7 @@ def hypersphere_point(angles: npt.ArrayLike, radius: float = 2.0) -> np.ndarray:
     return radius * out
 
 
-def hypersphere_mean_curvature(radius: float = 2.0, n: int = 3) -> float:
+def hypersphere_mean_curvature(*, radius: float = 2.0, n: int = 3) -> float:
     """|H| = 1/ρ of the n-sphere of radius ρ in R^{n+1} (every principal curvature is ±1/ρ).
 
     Thesis: §3.4.2 (mean curvature of the 3-sphere equals 1/r).
@@ -555,7 +555,7 @@ def _step(h: float) -> float:
 
 
 def fundamental_forms(
-    X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, h: float = 1e-4
+    X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, *, h: float = 1e-4
 ) -> tuple[np.ndarray, np.ndarray]:
     """First and second fundamental forms g_ij = <X_i, X_j>, B_ij = <N, X_ij> by central differences.
 
@@ -609,7 +609,7 @@ def fundamental_forms(
 
 
 def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike,
-                              h: float = 1e-4) -> np.ndarray:
+                              *, h: float = 1e-4) -> np.ndarray:
     """Shape operator S = g⁻¹ B of a parametrisation X: (..., n) -> (..., n+1), by central differences.
 
     g_ij = <X_i, X_j> (first fundamental form), B_ij = <N, X_ij> = <S X_i, X_j> (second), so the
@@ -635,11 +635,11 @@ def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w: npt.Arra
     ValueError
         As :func:`fundamental_forms`.
     """
-    g, B = fundamental_forms(X, w, h)
+    g, B = fundamental_forms(X, w, h=h)
     return np.linalg.solve(g, B)
 
 
-def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, nodes: int = 64,
+def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayLike, *, nodes: int = 64,
                             h: float = 1e-4) -> np.ndarray:
     """Normal curvature II(t)/I(t) of a surface (n = 2) at parameters w in the unit tangent directions
     t(θ_k) = cos θ_k e₁ + sin θ_k e₂, θ_k = 2πk/nodes, with (e₁, e₂) the orthonormal frame that
@@ -670,7 +670,7 @@ def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayL
     ValueError
         As :func:`fundamental_forms`; also if n ≠ 2 or ``nodes`` is not an integer >= 3.
     """
-    g, B = fundamental_forms(X, w, h)
+    g, B = fundamental_forms(X, w, h=h)
     if g.shape[-1] != 2:
         raise ValueError(f"normal_curvature_circle needs a surface (n = 2), got n = {g.shape[-1]}")
     if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 3:
@@ -683,7 +683,7 @@ def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayL
     return np.einsum("ik,...ij,jk->...k", c, S_orth, c)
 
 
-def hypersphere_quadrature(n: int, nodes: int = 16) -> tuple[np.ndarray, np.ndarray]:
+def hypersphere_quadrature(n: int, *, nodes: int = 16) -> tuple[np.ndarray, np.ndarray]:
     """Quadrature over the hyperspherical parameters (ψ₁, ..., ψ_{n−1}, φ) ∈ (0, π)^{n−1} × [0, 2π).
 
     Gauss–Legendre with ``nodes`` points in each ψ, the trapezoid rule with 2·nodes points in φ
@@ -751,14 +751,14 @@ def ellipsoid_point(angles: npt.ArrayLike, axes: npt.ArrayLike) -> np.ndarray:
     a = _finite("axes", axes)
     if a.ndim != 1 or np.any(a <= 0):
         raise ValueError(f"axes must be a 1-D array of positive semi-axes, got {a!r}")
-    y = hypersphere_point(angles, 1.0)
+    y = hypersphere_point(angles, radius=1.0)
     if y.shape[-1] != len(a):
         raise ValueError(f"{len(a)} semi-axes for points in R^{y.shape[-1]}")
     return y * a
 
 
 def total_gauss_kronecker_curvature(
-    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, weights: npt.ArrayLike, h: float = 1e-4
+    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, weights: npt.ArrayLike, *, h: float = 1e-4
 ) -> float:
     """∫_X K dVol ≈ Σ weights · det S · sqrt(det g) over quadrature nodes ``params`` (k, n).
 
@@ -790,13 +790,13 @@ def total_gauss_kronecker_curvature(
         match ``params``.
     """
     w = _finite("weights", weights)
-    g, B = fundamental_forms(X, params, h)
+    g, B = fundamental_forms(X, params, h=h)
     if w.shape != g.shape[:-2]:
         raise ValueError(f"weights {w.shape} do not match params {g.shape[:-2]}")
     return float(np.sum(w * np.linalg.det(B) / np.sqrt(np.linalg.det(g))))
 
 
-def hypersphere_volume(n: int, nodes: int = 64) -> float:
+def hypersphere_volume(n: int, *, nodes: int = 64) -> float:
     """Volume of the unit n-sphere, 2π ∏_{k=1}^{n−1} ∫_0^π sin^k ψ dψ, by Gauss–Legendre quadrature.
 
     Computed from the volume element of hyperspherical coordinates, independently of the closed
@@ -853,7 +853,7 @@ def gauss_bonnet_chern_constant(n: int) -> float:
     return float(np.pi**m * 2**n * factorial(m) / factorial(n))
 
 
-def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
+def torus_outer_inner_ratio(*, R: float = 10.0, r: float = 5.0) -> float:
     """Mean |H| over the outer half of the torus (cos v > 0) over that of the inner half, by area.
 
     With dA = r (R + r cos v) du dv and |H| = |R + 2r cos v| / (2r (R + r cos v)) the ratio is
@@ -891,7 +891,7 @@ def torus_outer_inner_ratio(R: float = 10.0, r: float = 5.0) -> float:
     return mean_abs_h(-np.pi / 2, np.pi / 2) / mean_abs_h(np.pi / 2, 3 * np.pi / 2)
 
 
-def relative_error(estimate: npt.ArrayLike, exact: npt.ArrayLike, zero_tol: float = 1e-3) -> np.ndarray:
+def relative_error(estimate: npt.ArrayLike, exact: npt.ArrayLike, *, zero_tol: float = 1e-3) -> np.ndarray:
     """|estimate - exact| / |exact| (pass |H| for H, signed K for K), NaN where |exact| < zero_tol · max|exact|.
 
     The thesis plots |real - estimate| / real (Figure 3.5); the real value vanishes on whole circles

@@ -22,7 +22,7 @@ def _angle_defects(mesh: Mesh) -> np.ndarray:
     return defect
 
 
-def angle_defects(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> np.ndarray:
+def angle_defects(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> np.ndarray:
     """Angle defect 2π − Σ_j θ_j at every vertex: the integrated Gaussian curvature.
 
     Thesis: Equation (3.20) (∫_A K dA = 2π − Σ θ_j over a vertex's region).
@@ -30,7 +30,7 @@ def angle_defects(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> np.ndarray:
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3)
+    simplices : array_like of int, shape (m, 3)
         A simplicial pseudo-manifold (checked: no doubled face, no pinched vertex).
 
     Returns
@@ -39,10 +39,10 @@ def angle_defects(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> np.ndarray:
         NaN on boundary and pinched vertices (there the defect would be π − Σ θ_j plus the boundary's turning)
         and on isolated vertices.  On a closed mesh the sum is 2πχ (Theorem 3.8).
     """
-    return _angle_defects(checked_mesh(vertices, faces))
+    return _angle_defects(checked_mesh(vertices, simplices))
 
 
-def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str = "mixed") -> np.ndarray:
+def gaussian_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, area: str = "mixed") -> np.ndarray:
     """Discrete Gaussian curvature K = (2π − Σ_j θ_j) / area at every vertex.
 
     Thesis: Definition 3.21 (Voronoi (3.21) or barycentric (3.22) region; "mixed" = Meyer et al.).
@@ -50,7 +50,7 @@ def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str 
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3)
+    simplices : array_like of int, shape (m, 3)
     area : {"mixed", "voronoi", "barycentric"}
         Vertex area, see :func:`thesis_lib.curvature.vertex_areas`.
 
@@ -58,7 +58,13 @@ def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str 
     -------
     ndarray, shape (nv,)
         NaN on boundary, pinched and isolated vertices and where the vertex area is not positive (possible
-        with the signed ``"voronoi"`` area).  Independent of the faces' orientation.
+        with the signed ``"voronoi"`` area).  Independent of the triangles' orientation.
+
+    Warns
+    -----
+    UserWarning
+        Boundary vertices at exactly the coordinates of other vertices (a triangle soup): as
+        :func:`~thesis_lib.curvature.mean_curvature`.
 
     Raises
     ------
@@ -66,7 +72,7 @@ def gaussian_curvature(vertices: npt.ArrayLike, faces: npt.ArrayLike, area: str 
         On an invalid mesh, an unknown area kind, or a hypersurface with n ≠ 2.
     """
     area = check_area(area)
-    mesh = checked_mesh(vertices, faces)
+    mesh = checked_mesh(vertices, simplices)
     defect = _angle_defects(mesh)
     a = vertex_areas_of_mesh(mesh, area)
     with np.errstate(divide="ignore", invalid="ignore"):

@@ -18,6 +18,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import pseudomanifold as _pseudomanifold_core
+from .._validate import warn_user
 from .validate import Mesh, validate_mesh
 
 __all__ = ["check_pseudomanifold", "checked_mesh", "pinched_vertices"]
@@ -135,6 +136,13 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
         The validated mesh, its ``boundary`` counted; ``mesh.pinched`` marks the vertices whose star
         is not one fan.
 
+    Warns
+    -----
+    UserWarning
+        Boundary vertices at exactly the coordinates of another vertex (not merged: a triangle
+        soup, or a mesh read from a textured OBJ file, split at its seams): the curvature is NaN
+        there; ``thesis_lib.meshes.merge_coincident(vertices, simplices)`` merges them.
+
     Raises
     ------
     ValueError
@@ -147,4 +155,24 @@ def checked_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> Mesh:
     except ValueError:
         validate_mesh(vertices, simplices)  # a ridge in three or more simplices: its own message first
         raise
+    _warn_unmerged(mesh.vertices, boundary, ~mesh.isolated)
     return mesh._replace(boundary=boundary, pinched=pinched)
+
+
+def _warn_unmerged(vertices: np.ndarray, boundary: np.ndarray, used: np.ndarray) -> None:
+    """Warn when boundary vertices coincide (exactly) with other vertices of the simplices, found by
+    one sort of the rows of the used vertices whose first coordinate is a boundary vertex's."""
+    if not boundary.any():
+        return
+    candidates = np.flatnonzero(used & np.isin(vertices[:, 0], vertices[boundary, 0]))
+    rows = vertices[candidates]
+    order = np.lexsort(rows.T[::-1])
+    same = np.all(rows[order[1:]] == rows[order[:-1]], axis=1)
+    hit = np.zeros(len(rows), dtype=bool)
+    hit[order[1:][same]] = hit[order[:-1][same]] = True
+    count = int(np.count_nonzero(hit & boundary[candidates]))
+    if count:
+        warn_user(f"{count} boundary vertices lie at exactly the coordinates of another vertex, not shared by "
+                  "the simplices (a triangle soup, or a mesh read from an OBJ file split at its texture seams): "
+                  "the curvature is NaN on a boundary; merge them first with "
+                  "vertices, simplices, _ = thesis_lib.meshes.merge_coincident(vertices, simplices)")

@@ -170,7 +170,7 @@ def _mean_curvature_vector(mesh: Mesh, method: str) -> np.ndarray:
     raise AssertionError(method)  # pragma: no cover - checked by the callers
 
 
-def mean_curvature_vector(vertices: npt.ArrayLike, simplices: npt.ArrayLike, method: str = "gram") -> np.ndarray:
+def mean_curvature_vector(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, method: str = "gram") -> np.ndarray:
     """Discrete mean curvature vector ∇_p (total hyperarea) at every vertex, integrated over its area.
 
     Thesis: Definition 3.15 (computed by Theorem 3.18 or Corollary 3.19).
@@ -220,7 +220,7 @@ def total_hyperarea(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> float:
     return float(checked_mesh(vertices, simplices).areas.sum())
 
 
-def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str = "mixed",
+def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, area: str = "mixed",
                    method: str = "gram") -> np.ndarray:
     """Absolute mean curvature |H| = ‖∇_p area M‖ / (n · area(p)) at every vertex.
 
@@ -242,6 +242,13 @@ def mean_curvature(vertices: npt.ArrayLike, simplices: npt.ArrayLike, area: str 
         measures the boundary's length variation, Theorem 3.9), on isolated vertices, and where the
         vertex area is not positive (possible with the signed ``"voronoi"`` area on badly shaped
         meshes).
+
+    Warns
+    -----
+    UserWarning
+        Boundary vertices at exactly the coordinates of other vertices: a triangle soup (a mesh
+        read from a textured OBJ file is split at its seams), NaN there; merge them first with
+        ``thesis_lib.meshes.merge_coincident(vertices, simplices)`` (``checked_mesh``).
     """
     area = check_area(area)
     method = _check_method(method)

@@ -99,9 +99,9 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights:
     return ShapeOperator(tensor, basis, normal)
 
 
-def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16,
+def knn_curvature(points: npt.ArrayLike, *, curvature: str = "mean", k: int = 16,
                   neighbour_weights: str = "uniform") -> np.ndarray:
-    """|H| = |tr S| / n (``kind="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
+    """|H| = |tr S| / n (``curvature="mean"``) or K = det S (``"gaussian"``, n = 2) at every point, from
     :func:`knn_shape_operator`.
 
     Thesis: §3.3.4 (the shape operator's trace and determinant: H = tr S / n, K = det S).
@@ -110,7 +110,7 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16,
     ----------
     points : array_like, shape (N, n + 1)
         Samples of a hypersurface (n >= 1), at least 3, finite, no duplicates.
-    kind : {"mean", "gaussian"}, default "mean"
+    curvature : {"mean", "gaussian"}, default "mean"
         Which curvature; ``"gaussian"`` needs n = 2.
     k : int, default 16
         Number of neighbours, as in :func:`knn_shape_operator`.
@@ -125,17 +125,17 @@ def knn_curvature(points: npt.ArrayLike, *, kind: str = "mean", k: int = 16,
     Raises
     ------
     ValueError
-        As :func:`knn_shape_operator`; also on an unknown ``kind`` or ``"gaussian"`` with n ≠ 2.
+        As :func:`knn_shape_operator`; also on an unknown ``curvature`` or ``"gaussian"`` with n ≠ 2.
     """
     so = knn_shape_operator(points, k=k, neighbour_weights=neighbour_weights)
     n = so.tensor.shape[1]
-    if kind == "mean":
+    if curvature == "mean":
         return np.abs(np.trace(so.tensor, axis1=1, axis2=2)) / n
-    if kind == "gaussian":
+    if curvature == "gaussian":
         if n != 2:
             raise ValueError(f"the Gaussian curvature det S is for surfaces in R^3 (n = 2), got n = {n}")
         return np.linalg.det(so.tensor)
-    raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
+    raise ValueError(f"curvature must be 'mean' or 'gaussian', got {curvature!r}")
 
 
 def neighbour_mean(points: npt.ArrayLike, values: npt.ArrayLike, *, k: int = 16) -> np.ndarray:

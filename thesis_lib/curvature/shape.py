@@ -51,8 +51,8 @@ class PrincipalCurvatures(NamedTuple):
     d2: np.ndarray  #: (nv, 3) direction of k2
 
 
-def _oriented_mesh(vertices, faces) -> Mesh:
-    mesh = checked_mesh(vertices, faces)
+def _oriented_mesh(vertices, simplices) -> Mesh:
+    mesh = checked_mesh(vertices, simplices)
     if mesh.n != 2:
         raise ValueError(f"the shape operator is implemented for triangle meshes in R^3 (n = 2), got n = {mesh.n}")
     check_orientation(mesh.simplices)
@@ -90,7 +90,7 @@ def _check_edge_weights(edge_weights) -> str:
     return edge_weights
 
 
-def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str = "max") -> np.ndarray:
+def vertex_normals(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, normals: str = "max") -> np.ndarray:
     """Unit vertex normals from the oriented face normals (Max's weights or area weights).
 
     Thesis: §3.3.4 (the normal n at x_i used in equation (3.24)).
@@ -103,7 +103,7 @@ def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str =
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    simplices : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
     normals : {"max", "area"}
 
     Returns
@@ -117,7 +117,7 @@ def vertex_normals(vertices: npt.ArrayLike, faces: npt.ArrayLike, normals: str =
         On an invalid or incoherently oriented mesh.
     """
     normals = _check_normals(normals)
-    return _normals(_oriented_mesh(vertices, faces), normals)
+    return _normals(_oriented_mesh(vertices, simplices), normals)
 
 
 def _edges_with_weights(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
@@ -136,8 +136,8 @@ def _edges_with_weights(mesh: Mesh) -> tuple[np.ndarray, np.ndarray]:
     return edges, weights
 
 
-def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike,
-                      normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
+def normal_curvatures(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
+                      *, normals: str = "max") -> tuple[np.ndarray, np.ndarray]:
     """Normal curvature estimate κ_ij = 2 (x_i − x_j)·n_i / ‖x_i − x_j‖² along every directed edge.
 
     Thesis: Equation (3.24) (circle through x_i and x_j tangent to the plane ⊥ n_i; κ = 1/R).
@@ -145,7 +145,7 @@ def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike,
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    simplices : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
     normals : {"max", "area"}
         Vertex normals, see :func:`vertex_normals`.
 
@@ -156,7 +156,7 @@ def normal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike,
         estimate at vertex i in the direction of x_j.  Signs as in the module docstring.
     """
     normals = _check_normals(normals)
-    mesh = _oriented_mesh(vertices, faces)
+    mesh = _oriented_mesh(vertices, simplices)
     nrm = _normals(mesh, normals)
     und, _ = _edges_with_weights(mesh)
     edges = np.concatenate([und, und[:, ::-1]])
@@ -175,7 +175,7 @@ def _tangent_basis(nrm: np.ndarray) -> np.ndarray:
     return np.stack([t1, t2], axis=1)
 
 
-def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str = "voronoi",
+def shape_operator(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, edge_weights: str = "voronoi",
                    normals: str = "max") -> ShapeOperator:
     """Weighted least-squares shape operator at every vertex of a triangle mesh.
 
@@ -192,7 +192,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     Parameters
     ----------
     vertices : array_like, shape (nv, 3)
-    faces : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
+    simplices : array_like of int, shape (m, 3), coherently oriented pseudo-manifold
     edge_weights : {"voronoi", "uniform"}, default "voronoi"
         The thesis's Voronoi weights w_ij, or all w_ij = 1.
     normals : {"max", "area"}
@@ -211,7 +211,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     """
     edge_weights = _check_edge_weights(edge_weights)
     normals = _check_normals(normals)
-    mesh = _oriented_mesh(vertices, faces)
+    mesh = _oriented_mesh(vertices, simplices)
     v = mesh.vertices
     nv = len(v)
     nrm = _normals(mesh, normals)
@@ -245,7 +245,7 @@ def shape_operator(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: 
     return ShapeOperator(tensor, basis, nrm)
 
 
-def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_weights: str = "voronoi",
+def principal_curvatures(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, edge_weights: str = "voronoi",
                          normals: str = "max") -> PrincipalCurvatures:
     """Principal curvatures κ1 ≤ κ2 and directions: eigenpairs of the least-squares shape operator.
 
@@ -253,7 +253,7 @@ def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_wei
 
     Parameters
     ----------
-    vertices, faces, edge_weights, normals
+    vertices, simplices, edge_weights, normals
         As in :func:`shape_operator`.
 
     Returns
@@ -262,7 +262,7 @@ def principal_curvatures(vertices: npt.ArrayLike, faces: npt.ArrayLike, edge_wei
         ``k1``, ``k2`` (nv,) and unit directions ``d1``, ``d2`` (nv, 3) in the tangent plane; NaN where
         :func:`shape_operator` is NaN.  Signs as in the module docstring.
     """
-    so = shape_operator(vertices, faces, edge_weights, normals)
+    so = shape_operator(vertices, simplices, edge_weights=edge_weights, normals=normals)
     nv = len(so.tensor)
     k = np.full((nv, 2), np.nan)
     vec = np.full((nv, 2, 2), np.nan)

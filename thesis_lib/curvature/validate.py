@@ -375,7 +375,7 @@ def ridges(simplices: npt.ArrayLike, nv: int) -> tuple[np.ndarray, np.ndarray]:
     return _rows(keys, nv, simplices.shape[1] - 1, integral), counts
 
 
-def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
+def boundary_vertices(simplices: npt.ArrayLike, n_vertices: int) -> np.ndarray:
     """Boolean mask of the vertices on a boundary ridge (a ridge lying in one top simplex).
 
     Thesis: §3.1.2 (Theorem 3.5: surfaces with boundary carry a boundary term).
@@ -384,16 +384,16 @@ def boundary_vertices(simplices: npt.ArrayLike, nv: int) -> np.ndarray:
     ----------
     simplices : array_like of int, shape (m, n + 1)
         Top simplices of a validated mesh (trusted, as in ``ridges``).
-    nv : int
+    n_vertices : int
         Number of vertices: the length of the mask.
 
     Returns
     -------
-    ndarray of bool, shape (nv,)
+    ndarray of bool, shape (n_vertices,)
         True at the vertices of the ridges that lie in exactly one top simplex.
     """
-    r, counts = ridges(np.asarray(simplices, dtype=np.int64), nv)
-    mask = np.zeros(nv, dtype=bool)
+    r, counts = ridges(np.asarray(simplices, dtype=np.int64), n_vertices)
+    mask = np.zeros(n_vertices, dtype=bool)
     mask[r[counts == 1].ravel()] = True
     return mask
 

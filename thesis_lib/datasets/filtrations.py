@@ -87,7 +87,7 @@ def _permutation_sign(order: Iterable[int]) -> int:
     return -1 if inversions % 2 else 1
 
 
-def named_chain(terms: Mapping[str, int], names: str = EXAMPLE_NAMES) -> dict[tuple[int, ...], int]:
+def named_chain(terms: Mapping[str, int], *, names: str = EXAMPLE_NAMES) -> dict[tuple[int, ...], int]:
     """A chain written with the thesis's vertex names, as ``{ascending simplex: integer coefficient}``.
 
     Thesis: Definition 2.17 ([x_0, ..., x_p] = −[x_τ(0), ..., x_τ(p)] for an odd permutation τ).
@@ -154,7 +154,7 @@ def simplex_labels(simplices: Sequence[Sequence[int]], *, names: str | None = No
     return ["".join(names[v] for v in s) if names else ",".join(map(str, s)) for s in simplices]
 
 
-def module_filtration(summands: Iterable[tuple[int, int | None]], dim: int = 1) -> Filtration:
+def module_filtration(summands: Iterable[tuple[int, int | None]], *, dim: int = 1) -> Filtration:
     """A filtration whose dimension-``dim`` persistence module is ⊕ Σ^α F[t] ⊕ Σ^γ F[t]/(t^n).
 
     Thesis: Theorem 2.33 and Corollary 2.35 (finite sets of P-intervals and graded F[t]-modules

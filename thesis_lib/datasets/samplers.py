@@ -20,7 +20,7 @@ def _check_noise(noise) -> float:
     return check_real(noise, "noise", minimum=0.0)
 
 
-def noisy_circle(n: int, noise: float = 0.1, seed: int = 0, radius: float = 1.0) -> np.ndarray:
+def noisy_circle(n: int, *, noise: float = 0.1, seed: int = 0, radius: float = 1.0) -> np.ndarray:
     """``n`` points at uniform angles on a circle plus Gaussian noise of deviation ``noise``.
 
     Thesis: Figure 2.9 (point set sampled with noise from the unit circle).
@@ -44,7 +44,7 @@ def noisy_circle(n: int, noise: float = 0.1, seed: int = 0, radius: float = 1.0)
     return pts + rng.normal(scale=_check_noise(noise), size=pts.shape)
 
 
-def two_circles(n_per_circle: int, seed: int = 0, noise: float = 0.0, distance: float = 1.0) -> np.ndarray:
+def two_circles(n_per_circle: int, *, seed: int = 0, noise: float = 0.0, distance: float = 1.0) -> np.ndarray:
     """Uniform random points on two unit circles with centres ``(0, 0)`` and ``(distance, 0)``.
 
     Thesis: §2.4.1, Figure 2.13 (two circles meeting in exactly two points, β₀ = 1, β₁ = 3).
@@ -73,7 +73,7 @@ def two_circles(n_per_circle: int, seed: int = 0, noise: float = 0.0, distance: 
     return pts + rng.normal(scale=_check_noise(noise), size=pts.shape)
 
 
-def two_circles_intersections(distance: float = 1.0) -> np.ndarray:
+def two_circles_intersections(*, distance: float = 1.0) -> np.ndarray:
     """The two points where the circles of :func:`two_circles` meet (green in Figure 2.13).
 
     Thesis: §2.4.1, Figure 2.13.
@@ -94,7 +94,7 @@ def two_circles_intersections(distance: float = 1.0) -> np.ndarray:
     return np.array([[x, y], [x, -y]])
 
 
-def flat_torus(k: int, noise: float = 0.0, seed: int = 0) -> np.ndarray:
+def flat_torus(k: int, *, noise: float = 0.0, seed: int = 0) -> np.ndarray:
     """``k²`` points of a regular ``k × k`` grid on the flat torus S¹ × S¹ ⊂ R⁴, plus Gaussian noise.
 
     Thesis: §2.4.1, Figure 2.16 (100² points from the flat torus with noise).

@@ -20,7 +20,7 @@ RP2_LABELS = "abcdef"
 _RP2_ORIENTED = ("abd", "adf", "afc", "bcd", "ced", "cae", "abe", "bfe", "bcf", "def")
 
 
-def rp2(oriented: bool = False) -> list[tuple[int, ...]]:
+def rp2(*, oriented: bool = False) -> list[tuple[int, ...]]:
     """The 6-vertex triangulation of the real projective plane (10 triangles), a..f = 0..5.
 
     Thesis: Example 2.21 / Figure 2.7 (columns abd, adf, afc, bcd, ced, cae, abe, bfe, bcf, def).
@@ -72,7 +72,7 @@ def _grid_surface(n: int, m: int, twist: bool) -> list[tuple[int, ...]]:
     return sorted(tris)
 
 
-def klein_bottle(n: int = 4, m: int = 4) -> list[tuple[int, ...]]:
+def klein_bottle(*, n: int = 4, m: int = 4) -> list[tuple[int, ...]]:
     """A triangulated Klein bottle: an ``n × m`` grid of split squares with one side pair reversed.
 
     Thesis: §2.2.1, "Arbitrary Coefficients" (H_1 = Z ⊕ Z_2 has torsion; over Z_2, β = 1, 2, 1).

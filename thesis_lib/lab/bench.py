@@ -184,7 +184,7 @@ def provenance(topic: str) -> str:
     return text
 
 
-def markdown(topic: str, columns: list[str] | None = None, cases: list[str] | None = None, *,
+def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] | None = None,
              where: Callable[[dict], bool] | None = None,
              headers: bool | Mapping[str, str] = False) -> str:
     """One benchmark as a Markdown table.
@@ -278,7 +278,7 @@ def targets(specs: Sequence[Mapping[str, Any]]) -> str:
     return markdown_table(["target", "cases", "worst", "bound", "met", "rounds"], lines, digits=3)
 
 
-def ratios(topic: str, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:
+def ratios(topic: str, *, cases: list[str] | None = None) -> list[tuple[str, str, float, int]]:
     """``(case, peer, ratio, rounds)`` for every ``ratio_<peer>`` of the stored rows (or of ``cases``).
 
     Parameters
@@ -328,7 +328,7 @@ def fit_exponent(x: npt.ArrayLike, y: npt.ArrayLike) -> float:
     return float(np.polyfit(np.log(x), np.log(y), 1)[0])
 
 
-def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | None = None,
+def ratio_figure(topic: str, *, cases: list[str] | None = None, peers: list[str] | None = None,
                  ax: Axes | None = None) -> Figure:
     """Horizontal bars of ours / peer per workload (log scale, 1 marked): one group per case.
 
@@ -361,7 +361,7 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
 
     from ..graphics.style import COLORS
 
-    data = [r for r in ratios(topic, cases) if peers is None or r[1] in peers]
+    data = [r for r in ratios(topic, cases=cases) if peers is None or r[1] in peers]
     if not data:
         raise ValueError(f"benchmark {topic!r} has no ratio_* figures to draw")
     names = list(dict.fromkeys(r[0] for r in data))
@@ -394,7 +394,7 @@ def ratio_figure(topic: str, cases: list[str] | None = None, peers: list[str] | 
     return ax.figure
 
 
-def scaling_figure(topic: str, prefix: str, tools: dict[str, str], *,
+def scaling_figure(topic: str, *, prefix: str, tools: dict[str, str],
                    x_key: str = "n_per_circle") -> tuple[Figure, dict[str, tuple[float, float]]]:
     """Time and memory against ``x_key`` for the rows whose case starts with ``prefix``, log–log,
     one line per tool (one legend below the panels; the fitted exponents are returned).

@@ -91,7 +91,7 @@ def _cmd_sweep(args) -> int:
     common = dict(progress=progress, keep=args.keep, shard=args.shard, retries=args.retries,
                   max_output_mb=args.max_output_mb, jobs=args.jobs)
     if args.executor == "dask":
-        with dask_client(args.scheduler, jobs=args.jobs, retries=args.retries, log=_err) as client:
+        with dask_client(scheduler=args.scheduler, jobs=args.jobs, retries=args.retries, log=_err) as client:
             runs, table = sweep(args.experiment, grid, executor=client, **common)
     else:
         if args.scheduler:

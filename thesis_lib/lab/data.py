@@ -142,7 +142,7 @@ def manifest(manifest_file: str | Path | None = None) -> dict[str, Entry]:
         a ``file`` outside ``data/``, a repeated name).
     """
     path = Path(manifest_file) if manifest_file else manifest_path()
-    items = read_tables(path, "file", DataError)
+    items = read_tables(path, key="file", error=DataError)
     entries: dict[str, Entry] = {}
     for item in items:
         entry = _validated(item, path)
@@ -214,7 +214,7 @@ def check(entry: Entry, file: Path) -> Path:
     return file
 
 
-def path(name: str, manifest_file: str | Path | None = None) -> Path:
+def path(name: str, *, manifest_file: str | Path | None = None) -> Path:
     """Local path of data set ``name`` after checking its sha256.
 
     Parameters
@@ -269,13 +269,13 @@ def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]
     rows = []
     for name in sorted(manifest(manifest_file)):
         try:
-            rows.append((name, "ok", str(path(name, manifest_file))))
+            rows.append((name, "ok", str(path(name, manifest_file=manifest_file))))
         except DataError as exc:
             rows.append((name, "error", str(exc)))
     return rows
 
 
-def fetch(name: str, manifest_file: str | Path | None = None, timeout: float = 60.0) -> Path:
+def fetch(name: str, *, manifest_file: str | Path | None = None, timeout: float = 60.0) -> Path:
     """Download data set ``name`` from its public source into ``data/<file>`` and check its sha256.
 
     The download goes to a temporary file beside the target and replaces it only once its sha256

@@ -20,7 +20,7 @@ import tempfile
 import threading
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ParamSpec, TypeVar
 
@@ -72,6 +72,7 @@ class RunSpec:
     name: str
     params: dict
     notebook: bytes
+    _: KW_ONLY
     timeout: int = 3600
     max_output_mb: float = DEFAULT_MAX_OUTPUT_MB
     #: a project folder the kernel may use in place (same machine), or None for a self-contained scratch project
@@ -83,6 +84,7 @@ class RunOutput:
     """What comes back from a run: status, error text, wall time, worker and the output files' bytes."""
 
     status: str  # "ok" or "failed"
+    _: KW_ONLY
     error: str = ""
     seconds: float = 0.0
     worker: str = ""
@@ -144,7 +146,7 @@ class LabKernelManager(AsyncKernelManager):
         await super().cleanup_resources(restart=restart)
 
 
-def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | None = None) -> Config:
+def kernel_config(*, extra_env: dict[str, str] | None = None, log: str | Path | None = None) -> Config:
     """traitlets configuration for a notebook client: :class:`LabKernelManager` with encryption.
 
     ipykernel warns ``Kernel is running over TCP without encryption`` when its manager gives it no
@@ -179,7 +181,7 @@ def kernel_config(extra_env: dict[str, str] | None = None, log: str | Path | Non
     return cfg
 
 
-def cancel_runs(cancelled: bool = True) -> None:
+def cancel_runs(*, cancelled: bool = True) -> None:
     """Refuse (``cancelled``) or allow again new kernel starts in this process.
 
     Parameters
@@ -244,13 +246,13 @@ def cancellable(fn: Callable[_P, _T], *args: _P.args, **kwargs: _P.kwargs) -> _T
             except cf.TimeoutError:
                 continue
     except BaseException:
-        cancel_runs(True)
+        cancel_runs(cancelled=True)
         try:
             kill_kernels()
             pool.shutdown(wait=True, cancel_futures=True)
             kill_kernels()
         finally:
-            cancel_runs(False)
+            cancel_runs(cancelled=False)
         raise
     finally:
         pool.shutdown(wait=True)
@@ -314,7 +316,7 @@ def _error_text(exc: BaseException) -> str:
     return f"{type(exc).__name__}: {text.splitlines()[-1] if text else ''}"
 
 
-def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False) -> RunOutput:
+def execute(spec: RunSpec, *, bundle: dict | None = None, progress: bool = False) -> RunOutput:
     """Execute one run in a scratch folder and return its outputs as bytes.
 
     Parameters
@@ -362,7 +364,7 @@ def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False
                 execution_timeout=spec.timeout,
                 resources={"metadata": {"path": str(project / "experiments")}},
                 kernel_manager_class=LabKernelManager,
-                config=kernel_config(env, log=scratch / "kernel.log"),
+                config=kernel_config(extra_env=env, log=scratch / "kernel.log"),
             )
         except Exception as exc:  # papermill re-raises the notebook's error; keep its message
             result.status = "failed"
@@ -384,7 +386,7 @@ def execute(spec: RunSpec, bundle: dict | None = None, *, progress: bool = False
     return result
 
 
-def missing_on_worker(modules: tuple[str, ...] = ("thesis_lib", "papermill", "ipykernel", "nbformat")) -> list[str]:
+def missing_on_worker(*, modules: tuple[str, ...] = ("thesis_lib", "papermill", "ipykernel", "nbformat")) -> list[str]:
     """Modules a worker needs that do not import there, and ``kernel python3`` if it has no such kernel.
 
     Sent to every Dask worker before a sweep (by value: it must run where thesis_lib is missing).

@@ -8,7 +8,7 @@ from pathlib import Path
 __all__ = ["read_tables"]
 
 
-def read_tables(path: Path, key: str, error: type[Exception]) -> list:
+def read_tables(path: Path, *, key: str, error: type[Exception]) -> list:
     """The ``[[key]]`` tables of the TOML file ``path``.
 
     Parameters

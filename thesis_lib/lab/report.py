@@ -29,7 +29,7 @@ import math
 import re
 from collections import Counter
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import KW_ONLY, dataclass
 from pathlib import Path
 
 from .paths import project_root, shared_dir
@@ -68,6 +68,7 @@ class Claim:
     result: tuple[str, ...]
     compare: str
     source: str
+    _: KW_ONLY
     value: object = None
     correct: object = None
     rtol: float = 0.0
@@ -85,7 +86,7 @@ class Claim:
     corrected: str | None = None
     check: str | None = None
 
-    def reference(self, which: str = "thesis") -> list[float]:
+    def reference(self, *, which: str = "thesis") -> list[float]:
         """The numbers the comparison uses, one per result key.
 
         Parameters
@@ -234,14 +235,14 @@ def load_claims(directory: Path | None = None) -> list[Claim]:
     """
     claims: list[Claim] = []
     for file in sorted((directory or claims_dir()).glob("*.toml")):
-        items = read_tables(file, "claim", ClaimError)
+        items = read_tables(file, key="claim", error=ClaimError)
         claims += [_parse(item, file.name) for item in items]
     ids = [c.id for c in claims]
     dup = {i for i in ids if ids.count(i) > 1}
     if dup:
         raise ClaimError(f"claim ids must be unique; repeated: {sorted(dup)}")
     index = _thesis_index()
-    return sorted(claims, key=lambda c: place_line(c.where, index))
+    return sorted(claims, key=lambda c: place_line(c.where, index=index))
 
 
 # ---------------------------------------------------------------------------- thesis order
@@ -291,7 +292,7 @@ def _thesis_index() -> dict[tuple[str, str], int]:
         return {}
 
 
-def place_line(where: str, index: dict[tuple[str, str], int] | None = None) -> tuple[float, ...]:
+def place_line(where: str, *, index: dict[tuple[str, str], int] | None = None) -> tuple[float, ...]:
     """Sort key of a thesis place: the line where its first reference is defined in the thesis text
     (``Figure 3.5`` → its caption, ``Example 2.36`` → its statement, ``§3.4.2`` → its heading), else
     the heading of its section (``Figure 9.1`` → ``9.1``), else its numbers; places with none go last.
@@ -396,7 +397,7 @@ def _status(claim: Claim, ours: list[float] | None) -> str:
     reference = None if claim.compare == "between" else claim.reference()
     if _holds(claim, ours, reference):
         return "identity" if claim.by_construction else "consistent" if claim.own_tolerance else "reproduced"
-    if claim.correct is not None and _holds(claim, ours, claim.reference("correct")):
+    if claim.correct is not None and _holds(claim, ours, claim.reference(which="correct")):
         return "erratum"
     return "differs"
 
@@ -497,7 +498,7 @@ def compared_as(claim: Claim) -> str:
             if claim.correct is None:
                 text = _condition(claim, thesis)
             else:
-                corrected = _condition(claim, claim.reference("correct"))
+                corrected = _condition(claim, claim.reference(which="correct"))
                 text = f"{_condition(claim, thesis, tolerance=False)}; corrected {corrected}"
         except ClaimError:
             return "—"
@@ -505,7 +506,7 @@ def compared_as(claim: Claim) -> str:
 
 
 # ---------------------------------------------------------------------------- rows
-def evaluate(claim: Claim, cache: dict[str, dict] | None = None) -> dict[str, object]:
+def evaluate(claim: Claim, *, cache: dict[str, dict] | None = None) -> dict[str, object]:
     """The report row of one claim.
 
     Parameters
@@ -567,7 +568,7 @@ def report(directory: Path | None = None) -> list[dict[str, object]]:
         If the registry is malformed or a claim that is not reproduced has no note.
     """
     cache: dict[str, dict] = {}
-    return [evaluate(c, cache) for c in load_claims(directory)]
+    return [evaluate(c, cache=cache) for c in load_claims(directory)]
 
 
 # ---------------------------------------------------------------------------- counts
@@ -888,7 +889,7 @@ PROVENANCE_LEGEND = {
 }
 
 
-def findings(rows: list[dict[str, object]] | None, chapter: str) -> str:
+def findings(rows: list[dict[str, object]] | None, *, chapter: str) -> str:
     """The thesis's claims of one chapter that are not simply reproduced, as a Markdown table.
 
     Parameters

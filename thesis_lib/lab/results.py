@@ -138,7 +138,7 @@ class Recorder:
         Starting a recorder clears the previous ``results.json``.
     """
 
-    def __init__(self, name: str, output_dir: str | Path | None = ""):
+    def __init__(self, name: str, *, output_dir: str | Path | None = ""):
         self.name = check_name(name)
         redirect = os.environ.get(DEFAULT_RUN_ENV)
         default = Path(redirect) / name if redirect else results_dir(name)
@@ -185,7 +185,7 @@ class Recorder:
         times.update({k: round(float(v), 4) for k, v in seconds.items()})
         atomic.write_text(file, json.dumps(times, indent=1, sort_keys=True) + "\n")
 
-    def savefig(self, fig: Figure, stem: str, dpi: int = 110) -> Path:
+    def savefig(self, fig: Figure, stem: str, *, dpi: int = 110) -> Path:
         """Save a matplotlib figure as ``<stem>.png`` with no time stamp (byte-identical on re-runs).
 
         Parameters
@@ -315,7 +315,7 @@ def check_table(data: object, path: str | Path) -> dict[str, float | int]:
     return data
 
 
-def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | int]:
+def load(name: str, *, output_dir: str | Path | None = None) -> dict[str, float | int]:
     """Read the results of experiment ``name`` (default: its stored default run).
 
     Parameters
@@ -351,7 +351,7 @@ def load(name: str, output_dir: str | Path | None = None) -> dict[str, float | i
         raise ResultsError(f"{exc}; {restore}") from None
 
 
-def figure(name: str, stem: str, width: int = 640) -> Image:
+def figure(name: str, stem: str, *, width: int = 640) -> Image:
     """A stored figure of experiment ``name``'s default run, for display in a notebook.
 
     Parameters

@@ -19,7 +19,7 @@ import os
 import shutil
 import sys
 import tempfile
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 from pathlib import Path
 
 from .._optional import require
@@ -79,6 +79,7 @@ class RunResult:
     params: dict[str, object]
     path: Path
     status: str  # "ok", "skipped" (already complete), "failed", "corrupt" or "missing" (no run folder)
+    _: KW_ONLY
     results: dict[str, float] = field(default_factory=dict)
     error: str = ""
     seconds: float = 0.0
@@ -89,7 +90,7 @@ def _json(value: object) -> str:
     return json.dumps(value, indent=1, sort_keys=True, allow_nan=False) + "\n"
 
 
-def read_run(name: str, params: dict[str, object], root: Path | None = None) -> RunResult:
+def read_run(name: str, params: dict[str, object], *, root: Path | None = None) -> RunResult:
     """What ``runs/<name>/<hash>/`` holds for these resolved parameters: ok, failed, corrupt or missing.
 
     An interrupted replacement of the folder is undone first (``atomic.recover``).  A folder whose
@@ -168,7 +169,7 @@ def _relative_file(rel: str) -> str:
     return rel
 
 
-def write_run(name: str, params: dict[str, object], output: RunOutput, root: Path | None = None) -> RunResult:
+def write_run(name: str, params: dict[str, object], output: RunOutput, *, root: Path | None = None) -> RunResult:
     """Write a run's outputs into ``runs/<name>/<hash>/`` in one step (see the module docstring).
 
     A failed run never replaces a complete one: its outputs go to ``runs/<name>/<hash>.failed/``.
@@ -344,7 +345,7 @@ def run(
     params = resolve_parameters(name, overrides)
     check_paths(params)
     atomic.clean_stale((root or runs_dir()) / name)
-    previous = read_run(name, params, root)
+    previous = read_run(name, params, root=root)
     if previous.status == "ok" and not force:
         previous.status = "skipped"
         return previous
@@ -353,7 +354,7 @@ def run(
     if progress is None:
         progress = sys.stderr.isatty()
     output = cancellable(execute, local_spec(name, params, timeout=timeout), progress=progress)
-    return write_run(name, params, output, root)
+    return write_run(name, params, output, root=root)
 
 
 def _store_target(target: str | Path) -> Path:
@@ -373,7 +374,7 @@ def _store_target(target: str | Path) -> Path:
     return path
 
 
-def store(path: str | Path, timeout: int = 3600) -> Path:
+def store(path: str | Path, *, timeout: int = 3600) -> Path:
     """Execute a notebook in place with its own defaults (the stored default run), outputs kept.
 
     ``path`` is an experiment name or a notebook path (book chapters).  Cells run in the notebook's
@@ -420,7 +421,7 @@ def store(path: str | Path, timeout: int = 3600) -> Path:
             kernel_name="python3",
             resources={"metadata": {"path": str(nb_path.parent)}},
             kernel_manager_class=LabKernelManager,
-            config=kernel_config(env, log=staging_root / "kernel.log"),
+            config=kernel_config(extra_env=env, log=staging_root / "kernel.log"),
         )
         try:
             cancellable(client.execute)

@@ -163,14 +163,15 @@ def data_bundle() -> dict[str, object]:
 def _by_value(fn: Callable) -> Callable:
     """A copy of ``fn`` that cloudpickle sends by value (so it runs where thesis_lib is missing)."""
     clone = types.FunctionType(fn.__code__, {"__builtins__": builtins}, fn.__name__, fn.__defaults__)
+    clone.__kwdefaults__ = fn.__kwdefaults__  # the defaults of keyword-only parameters are kept apart
     clone.__module__ = "__main__"
     return clone
 
 
 @contextlib.contextmanager
 def dask_client(
-    scheduler: str | None = None,
     *,
+    scheduler: str | None = None,
     jobs: int = 2,
     retries: int = 2,
     timeout: float = 10.0,
@@ -407,7 +408,7 @@ def sweep(
     base = root or runs_dir()
     (base / name).mkdir(parents=True, exist_ok=True)
     atomic.clean_stale(base / name)
-    results: list[RunResult | None] = [read_run(name, p, base) for p in points]
+    results: list[RunResult | None] = [read_run(name, p, root=base) for p in points]
     bar = _Progress(len(points), f"sweep {name}", progress)
     todo = []
     for i, r in enumerate(results):
@@ -433,12 +434,12 @@ def sweep(
     try:
         for i in todo:
             spec = local_spec(name, points[i], timeout=timeout, max_output_mb=max_output_mb, self_contained=not owned)
-            pending[pool.submit(execute, spec, bundle)] = i
+            pending[pool.submit(execute, spec, bundle=bundle)] = i
         while pending:
             finished, _ = cf.wait(pending, timeout=0.5, return_when=cf.FIRST_COMPLETED)
             for fut in finished:
                 i = pending.pop(fut)
-                results[i] = write_run(name, points[i], _outcome(fut), base)
+                results[i] = write_run(name, points[i], _outcome(fut), root=base)
                 bar.done(results[i].status)
             bar.running(_running(pending, client))
     except BaseException:
@@ -455,7 +456,7 @@ def sweep(
 
 def _cancel(pending: dict, pool: cf.Executor | None) -> None:
     """Cancel a sweep: nothing pending starts, running kernels are killed, threads are joined."""
-    cancel_runs(True)
+    cancel_runs(cancelled=True)
     try:
         for fut in pending:
             fut.cancel()
@@ -464,7 +465,7 @@ def _cancel(pending: dict, pool: cf.Executor | None) -> None:
             pool.shutdown(wait=True, cancel_futures=True)
         kill_kernels()
     finally:
-        cancel_runs(False)
+        cancel_runs(cancelled=False)
 
 
 def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = None,
@@ -493,14 +494,14 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
     """
     points = expand_grid(name, grid)
     base = root or runs_dir()
-    rows = [read_run(name, p, base) for p in points]
+    rows = [read_run(name, p, root=base) for p in points]
     for r in rows:
         if r.status == "corrupt":
             report_corrupt(r, "its row is marked corrupt (run the sweep again to replace it)")
     return rows, _write_tables(name, list(grid), points, rows, base, keep)
 
 
-def stored_sweeps(name: str, columns: list[str] | None = None) -> list[str]:
+def stored_sweeps(name: str, *, columns: list[str] | None = None) -> list[str]:
     """Markdown tables of the sweeps stored with experiment ``name`` (``sweep(..., keep=True)``).
 
     Parameters

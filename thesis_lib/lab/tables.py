@@ -12,7 +12,7 @@ from collections.abc import Iterable, Sequence
 __all__ = ["cell", "header", "row", "markdown_table", "labelled_grid", "show_table"]
 
 
-def cell(value: object, digits: int = 6) -> str:
+def cell(value: object, *, digits: int = 6) -> str:
     """One cell's text: floats to ``digits`` significant digits (``:g``), ``None`` empty, ``|`` escaped.
 
     Parameters
@@ -52,7 +52,7 @@ def header(titles: Sequence[object]) -> str:
     return "| " + " | ".join(cell(t) for t in titles) + " |\n|" + "---|" * len(titles)
 
 
-def row(cells: Sequence[object], digits: int = 6) -> str:
+def row(cells: Sequence[object], *, digits: int = 6) -> str:
     """One line of a Markdown table (no final newline); strings are taken as already formatted.
 
     Parameters
@@ -67,10 +67,10 @@ def row(cells: Sequence[object], digits: int = 6) -> str:
     str
         The line, ``| a | b | ... |``.
     """
-    return "| " + " | ".join(cell(c, digits) for c in cells) + " |"
+    return "| " + " | ".join(cell(c, digits=digits) for c in cells) + " |"
 
 
-def markdown_table(titles: Sequence[object], rows: Iterable[Sequence[object]], digits: int = 6) -> str:
+def markdown_table(titles: Sequence[object], rows: Iterable[Sequence[object]], *, digits: int = 6) -> str:
     """A whole Markdown table, ending with a newline.
 
     Parameters
@@ -96,7 +96,7 @@ def markdown_table(titles: Sequence[object], rows: Iterable[Sequence[object]], d
     for cells in rows:
         if len(cells) != len(titles):
             raise ValueError(f"a table row has {len(cells)} cells for {len(titles)} columns: {list(cells)!r}")
-        lines.append(row(cells, digits))
+        lines.append(row(cells, digits=digits))
     return "\n".join(lines) + "\n"
 
 
@@ -171,4 +171,4 @@ def show_table(rows: Sequence[Sequence[object]], *, digits: int = 6) -> None:
 
     if not rows:
         raise ValueError("a table needs at least its header row")
-    display(Markdown(markdown_table(rows[0], rows[1:], digits).rstrip("\n")))
+    display(Markdown(markdown_table(rows[0], rows[1:], digits=digits).rstrip("\n")))

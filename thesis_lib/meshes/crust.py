@@ -68,7 +68,7 @@ def _delaunay(pts: np.ndarray) -> Delaunay:
         raise ValueError("the samples lie in a plane (or a line): the Crust needs a surface sampled in R³") from None
 
 
-def poles(points: npt.ArrayLike, far: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+def poles(points: npt.ArrayLike, *, far: float | None = None) -> tuple[np.ndarray, np.ndarray]:
     """The poles p⁺ and p⁻ of every sample (ABK98, §4).
 
     Thesis: §3.4, "Triangulations" (Crust algorithm [ABK98]).
@@ -151,7 +151,7 @@ def _flat_tetrahedra(pts: np.ndarray, tri: Delaunay, cc: np.ndarray, ok: np.ndar
     return centre, keep, across
 
 
-def crust_candidates(points: npt.ArrayLike, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
+def crust_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
     """Steps 1–4 of the Crust: Delaunay triangles of S ∪ P with sample vertices, filtered by normal.
 
     Thesis: §3.4, "Triangulations" ([ABK98]).
@@ -183,7 +183,7 @@ def crust_candidates(points: npt.ArrayLike, theta: float = np.pi / 4, far: float
     return filtered_faces(pts, tri, theta, _far(pts, far, e), resolve_flat=_flat_tetrahedra)[0]
 
 
-def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: bool = True) -> tuple[np.ndarray, int]:
+def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, *, prune: bool = True) -> tuple[np.ndarray, int]:
     """Trimming step of the Crust: sharp-edge removal, then the outer walk from an outer triangle.
 
     Thesis: §3.4, "Triangulations" ([ABK98], manifold extraction).
@@ -220,7 +220,8 @@ def extract_manifold(points: npt.ArrayLike, triangles: npt.ArrayLike, prune: boo
     return outer_walk(pts, tris.astype(np.int64), prune=prune)
 
 
-def crust(points: npt.ArrayLike, theta: float = np.pi / 4, prune: bool = True, far: float | None = None) -> np.ndarray:
+def crust(points: npt.ArrayLike, *, theta: float = np.pi / 4, prune: bool = True,
+          far: float | None = None) -> np.ndarray:
     """Triangulate a point cloud sampled from a surface in R³ with the Crust algorithm [ABK98].
 
     Thesis: §3.4, "Triangulations" (the Crust algorithm [ABK98], used for Figures 3.8–3.11).
@@ -252,7 +253,7 @@ def crust(points: npt.ArrayLike, theta: float = np.pi / 4, prune: bool = True, f
     ValueError
         As :func:`crust_candidates`, or when no triangle survives the filtering.
     """
-    cand = crust_candidates(points, theta, far)
+    cand = crust_candidates(points, theta=theta, far=far)
     pts, _ = _samples(points)
     if len(cand) == 0:
         raise ValueError("no triangle survived the Crust's filtering")

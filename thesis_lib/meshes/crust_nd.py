@@ -126,7 +126,7 @@ class CrustResult(NamedTuple):
 class ReconstructionError(ValueError):
     """The Crust did not produce a closed manifold; ``report`` says what failed."""
 
-    def __init__(self, message: str, report: ManifoldReport | None = None, pole_ratio: float | None = None):
+    def __init__(self, message: str, *, report: ManifoldReport | None = None, pole_ratio: float | None = None):
         super().__init__(message)
         self.report = report
         self.pole_ratio = pole_ratio
@@ -359,7 +359,7 @@ def _defects(s: np.ndarray, npts: int) -> tuple[dict, np.ndarray, np.ndarray]:
     return counts, bad, on_boundary
 
 
-def manifold_vertices(simplices: npt.ArrayLike, n_points: int | None = None) -> np.ndarray:
+def manifold_vertices(simplices: npt.ArrayLike, *, n_points: int | None = None) -> np.ndarray:
     """Mask of the vertices whose star is a manifold n-ball: interior (on no boundary ridge) and at
     no defect (:func:`manifold_report`).  Curvature estimated there uses a complete, clean star.
     Thesis: Definition 3.15 (the discrete mean curvature at p uses the simplices around p).
@@ -384,7 +384,7 @@ def manifold_vertices(simplices: npt.ArrayLike, n_points: int | None = None) -> 
     return used & ~bad & ~on_boundary
 
 
-def manifold_report(simplices: npt.ArrayLike, n_points: int | None = None) -> ManifoldReport:
+def manifold_report(simplices: npt.ArrayLike, *, n_points: int | None = None) -> ManifoldReport:
     """Check that n-simplices form a (closed) coherently oriented combinatorial n-manifold.
 
     Ridges ((n-1)-faces) in one simplex are boundary (holes), in three or more singular; the link of
@@ -485,16 +485,16 @@ def crust_nd(
             "the sample may be too sparse or too noisy for its curvature")
     if len(faces) == 0:
         raise ReconstructionError(f"no {pts.shape[1] - 1}-simplex survived the Crust's filtering; {hint}",
-                                  None, ratio)
+                                  report=None, pole_ratio=ratio)
     try:
         out, _ = extract_manifold_nd(pts, faces, closed=closed)
     except ValueError as err:
-        raise ReconstructionError(f"{err}; {hint}", None, ratio) from None
-    report = manifold_report(out, len(pts))
-    if not closed and not manifold_vertices(out, len(pts)).any():
+        raise ReconstructionError(f"{err}; {hint}", report=None, pole_ratio=ratio) from None
+    report = manifold_report(out, n_points=len(pts))
+    if not closed and not manifold_vertices(out, n_points=len(pts)).any():
         raise ReconstructionError(f"no vertex of the reconstruction has a manifold star: {report.describe()}; {hint}",
-                                  report, ratio)
+                                  report=report, pole_ratio=ratio)
     if closed and not report.is_closed_manifold:
         raise ReconstructionError(f"the Crust did not produce a closed manifold: {report.describe()}; {hint}",
-                                  report, ratio)
+                                  report=report, pole_ratio=ratio)
     return CrustResult(out, report, ratio)

@@ -64,7 +64,7 @@ def _permutation_sign(perm: tuple[int, ...]) -> int:
     return sign
 
 
-def freudenthal(shape: Sequence[int] | int, periodic: bool | Sequence[bool] = False) -> np.ndarray:
+def freudenthal(shape: Sequence[int] | int, *, periodic: bool | Sequence[bool] = False) -> np.ndarray:
     """Freudenthal/Kuhn subdivision of an n-dimensional vertex grid into n-simplices.
 
     Thesis: §3.4.2–3.4.3 (triangulating hypersurfaces given by parametrised grids).
@@ -145,7 +145,7 @@ def grid_parameters(*axes: npt.ArrayLike) -> np.ndarray:
     return np.stack(np.meshgrid(*arrs, indexing="ij"), axis=-1).reshape(-1, len(arrs))
 
 
-def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
+def torus_grid(n: int, *, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.ndarray]:
     """Periodic n × n grid on the torus, u_i = 2πi/n, v_j = 2πj/n, with one diagonal per square.
 
     Thesis: §3.4.1, "Torus 1: chosen points" (ε = 2π/n).
@@ -173,7 +173,7 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
     check_size(2 * n * n, "faces")
     t = 2 * np.pi * np.arange(n) / n
     uv = grid_parameters(t, t)
-    vertices = torus_point(uv[:, 0], uv[:, 1], R, r)
+    vertices = torus_point(uv[:, 0], uv[:, 1], R=R, r=r)
     i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
     a = (i * n + j).ravel()
     b = (((i + 1) % n) * n + j).ravel()
@@ -183,7 +183,7 @@ def torus_grid(n: int, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, np.
     return vertices, faces
 
 
-def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
+def torus_chosen_points(*, step: float = np.pi / 50, R: float = 10.0,
                         r: float = 5.0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The thesis's "chosen points" (u, v) ∈ {0, ε, ..., 2π - ε}² on the torus, triangulated.
 
@@ -191,7 +191,7 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
 
     Parameters
     ----------
-    epsilon : float, default π/50
+    step : float, default π/50
         The grid step ε; 2π/ε must be an integer n >= 3 (up to a relative 1e-9).
     R, r : float
         Radii of the torus, 0 < r < R (default 10 and 5, as in the thesis).
@@ -206,21 +206,21 @@ def torus_chosen_points(epsilon: float = np.pi / 50, R: float = 10.0,
     Raises
     ------
     ValueError
-        If ``epsilon`` is not positive or 2π/ε not an integer >= 3, or on invalid radii.
+        If ``step`` is not positive or 2π/ε not an integer >= 3, or on invalid radii.
     """
-    epsilon = check_real(epsilon, "epsilon", positive=True)
-    m = _steps(2 * np.pi, epsilon, "u")
+    step = check_real(step, "step", positive=True)
+    m = _steps(2 * np.pi, step, "u")
     n = int(round(m))
     if abs(m - n) > 1e-9 * m or n < 3:
-        raise ValueError(f"2π/epsilon must be an integer >= 3, got {m!r}")
+        raise ValueError(f"2π/step must be an integer >= 3, got {m!r}")
     check_size(2 * n * n, "faces")
-    vertices, faces = torus_grid(n, R, r)
+    vertices, faces = torus_grid(n, R=R, r=r)
     t = 2 * np.pi * np.arange(n) / n
     return vertices, faces, grid_parameters(t, t)
 
 
 def merge_coincident(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
-                     tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                     *, tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Identify vertices closer than ``tol``, then drop degenerate and repeated simplices.
 
     Thesis: §3.4.2 (grid points at the poles of hyperspherical coordinates coincide).
@@ -274,11 +274,11 @@ def merge_coincident(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
     return v[kept], s2, kept
 
 
-def _steps(span: float, epsilon: float, name: str) -> float:
-    """span / epsilon, refused when it is not finite or would build a grid of more than 10⁹ points."""
-    steps = span / epsilon
+def _steps(span: float, step: float, name: str) -> float:
+    """span / step, refused when it is not finite or would build a grid of more than 10⁹ points."""
+    steps = span / step
     if not np.isfinite(steps):
-        raise ValueError(f"{name}: the grid step {epsilon!r} is too small (the grid would be infinite)")
+        raise ValueError(f"{name}: the grid step {step!r} is too small (the grid would be infinite)")
     check_size(steps, f"grid points on the {name} axis")
     return steps
 
@@ -291,16 +291,16 @@ def _pair(value, name: str) -> tuple:
     return low, high
 
 
-def _grid_axis(name: str, low: float, high: float, epsilon: float) -> np.ndarray:
+def _grid_axis(name: str, low: float, high: float, step: float) -> np.ndarray:
     low, high = check_real(low, f"{name} low"), check_real(high, f"{name} high")
-    steps = _steps(high - low, epsilon, name)
+    steps = _steps(high - low, step, name)
     k = int(round(steps))
     if k < 1 or abs(steps - k) > 1e-6 * max(1.0, steps):
-        raise ValueError(f"{name}: (high - low)/epsilon must be a positive integer, got {steps!r}")
-    return low + epsilon * np.arange(k + 1)
+        raise ValueError(f"{name}: (high - low)/step must be a positive integer, got {steps!r}")
+    return low + step * np.arange(k + 1)
 
 
-def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
+def hypersphere_freudenthal(*, step: float = np.pi / 50, radius: float = 2.0,
                             n: int = 3) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of the n-sphere of radius ρ in R^{n+1} in hyperspherical coordinates.
 
@@ -313,7 +313,7 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
 
     Parameters
     ----------
-    epsilon : float, default π/50
+    step : float, default π/50
         The grid step ε; π/ε must be an integer >= 2.
     radius : float, default 2.0
         The radius ρ > 0 (the thesis's 3-sphere has ρ = 2).
@@ -332,28 +332,28 @@ def hypersphere_freudenthal(epsilon: float = np.pi / 50, radius: float = 2.0,
     Raises
     ------
     ValueError
-        If ``epsilon`` or ``radius`` is not positive, π/ε is not an integer >= 2, ``n`` is out of
+        If ``step`` or ``radius`` is not positive, π/ε is not an integer >= 2, ``n`` is out of
         range, or the grid would be too large.
     """
-    epsilon = check_real(epsilon, "epsilon", positive=True)
+    step = check_real(step, "step", positive=True)
     radius = check_real(radius, "radius", positive=True)
     n = check_int(n, "n", minimum=1, maximum=MAX_GRID_DIM)
-    m = _steps(np.pi, epsilon, "ψ")
+    m = _steps(np.pi, step, "ψ")
     if abs(m - round(m)) > 1e-9 * m or round(m) < 2:
-        raise ValueError(f"π/epsilon must be an integer >= 2, got {m!r}")
+        raise ValueError(f"π/step must be an integer >= 2, got {m!r}")
     k = int(round(m))
     _check_grid((k + 1,) * (n - 1) + (2 * k,), (False,) * (n - 1) + (True,))
     ang = np.pi * np.arange(k + 1) / k
     phi = np.pi * np.arange(2 * k) / k
     params = grid_parameters(*([ang] * (n - 1) + [phi]))
     simplices = freudenthal((k + 1,) * (n - 1) + (2 * k,), periodic=(False,) * (n - 1) + (True,))
-    vertices = hypersphere_point(params, radius)
+    vertices = hypersphere_point(params, radius=radius)
     vertices, simplices, kept = merge_coincident(vertices, simplices, tol=1e-9 * radius)
     return vertices, simplices, params[kept]
 
 
 def catenoid_freudenthal(
-    epsilon: float = 0.05, n: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
+    *, step: float = 0.05, n: int = 3, v_range: tuple[float, float] = (-1.0, 1.0),
     w_range: tuple[float, float] = (-1.0, 1.0), n_u: int | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Freudenthal triangulation of a piece of the n-catenoid (catenoid × R^{n-2}) in R^{n+1}.
@@ -362,7 +362,7 @@ def catenoid_freudenthal(
 
     Parameters
     ----------
-    epsilon : float, default 0.05
+    step : float, default 0.05
         Grid step of v and w (the ranges must be whole multiples of it).
     n : int, default 3
         Dimension of the catenoid, n >= 2.
@@ -386,16 +386,16 @@ def catenoid_freudenthal(
     Raises
     ------
     ValueError
-        On a non-positive ``epsilon``, ``n`` outside 2 to the largest grid dimension, a range that
+        On a non-positive ``step``, ``n`` outside 2 to the largest grid dimension, a range that
         is not a pair or not a whole number of steps, fewer than 3 u-steps, or a grid too large.
     """
-    epsilon = check_real(epsilon, "epsilon", positive=True)
+    step = check_real(step, "step", positive=True)
     n = check_int(n, "n", minimum=2, maximum=MAX_GRID_DIM)
-    n_u = int(round(_steps(2 * np.pi, epsilon, "u"))) if n_u is None else check_int(n_u, "n_u", minimum=3)
+    n_u = int(round(_steps(2 * np.pi, step, "u"))) if n_u is None else check_int(n_u, "n_u", minimum=3)
     if n_u < 3:
-        raise ValueError(f"the u axis needs at least 3 steps (epsilon <= 2π/3), got epsilon = {epsilon}")
-    v_axis = _grid_axis("v_range", *_pair(v_range, "v_range"), epsilon)
-    w_axis = _grid_axis("w_range", *_pair(w_range, "w_range"), epsilon) if n > 2 else np.zeros(0)
+        raise ValueError(f"the u axis needs at least 3 steps (step <= 2π/3), got step = {step}")
+    v_axis = _grid_axis("v_range", *_pair(v_range, "v_range"), step)
+    w_axis = _grid_axis("w_range", *_pair(w_range, "w_range"), step) if n > 2 else np.zeros(0)
     _check_grid((n_u, len(v_axis)) + (len(w_axis),) * (n - 2), (True,) + (False,) * (n - 1))
     axes = [2 * np.pi * np.arange(n_u) / n_u, v_axis] + [w_axis] * (n - 2)
     params = grid_parameters(*axes)

@@ -14,7 +14,7 @@ __all__ = ["orient_outward", "convex_hull_surface", "sphere_hull"]
 
 
 def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
-                   centre: npt.ArrayLike | None = None) -> np.ndarray:
+                   *, centre: npt.ArrayLike | None = None) -> np.ndarray:
     """Reorder each facet so that det[v_1 - v_0, ..., v_n - v_0, v_0 - centre] > 0 (outward normal).
 
     Thesis: eq. (3.9) (orientation of N = X_{u_1} ∧ ... ∧ X_{u_n}/W).
@@ -89,10 +89,10 @@ def convex_hull_surface(points: npt.ArrayLike) -> np.ndarray:
     except QhullError:
         raise ValueError(f"the points span less than R^{d} (all on a hyperplane), so their convex hull "
                          "is not a closed hypersurface") from None
-    return orient_outward(pts, hull.simplices, pts.mean(axis=0))
+    return orient_outward(pts, hull.simplices, centre=pts.mean(axis=0))
 
 
-def sphere_hull(n_dims: int = 3, n_points: int = 1000, seed: int = 0,
+def sphere_hull(*, n_dims: int = 3, n_points: int = 1000, seed: int = 0,
                 radius: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
     """Random uniform points on S^{n_dims-1}(radius) ⊂ R^{n_dims} and their convex-hull triangulation.
 
@@ -123,5 +123,5 @@ def sphere_hull(n_dims: int = 3, n_points: int = 1000, seed: int = 0,
     """
     n_dims = check_int(n_dims, "n_dims", minimum=2)
     n_points = check_int(n_points, "n_points", minimum=n_dims + 1)
-    pts = sample_sphere(n_points, n_dims, radius, seed)
+    pts = sample_sphere(n_points, n_dims=n_dims, radius=radius, seed=seed)
     return pts, convex_hull_surface(pts)

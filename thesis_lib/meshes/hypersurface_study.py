@@ -45,7 +45,7 @@ def sample_hypersurface(surface: str, n_samples: int, seed: int = 0) -> tuple[np
         On an unknown ``surface`` or an invalid ``n_samples`` (or ``seed``, for the sphere).
     """
     if surface == "sphere":
-        return sample_sphere(n_samples, 4, SPHERE_RADIUS, seed), None
+        return sample_sphere(n_samples, n_dims=4, radius=SPHERE_RADIUS, seed=seed), None
     if surface == "catenoid":
         return sample_n_catenoid(n_samples, dimension=3, seed=seed, return_params=True)
     raise ValueError(f"surface must be one of {HYPERSURFACES}, got {surface!r}")
@@ -105,7 +105,7 @@ def crust_curvature_errors(surface: str, n_samples: int, *, seed: int = 0, area:
     pts, params = sample_hypersurface(surface, n_samples, seed)
     res = crust_nd(pts, theta=theta, closed=(surface == "sphere"))
     H = mean_curvature(pts, res.simplices, area=area)
-    good = manifold_vertices(res.simplices, len(pts)) & np.isfinite(H)
+    good = manifold_vertices(res.simplices, n_points=len(pts)) & np.isfinite(H)
     H = np.where(good, H, np.nan)
     err = _errors(surface, H, params, good)
     out = dict(points=pts, params=params, simplices=res.simplices, H=H, report=res.report,

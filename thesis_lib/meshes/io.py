@@ -2,7 +2,7 @@
 
 So that users can bring their own surfaces to the curvature estimates of chapter 3 (and take ours
 to ParaView or any VTK tool), meshes convert to and from pyvista, whose readers and writers cover
-the common formats; the library's own form is the pair ``(vertices (nv, 3), faces (m, 3))``.
+the common formats; the library's own form is the pair ``(vertices (nv, 3), simplices (m, 3))``.
 pyvista (the ``[mesh]`` extra) is imported on first use (it is slow to import).
 """
 
@@ -33,7 +33,7 @@ def _pyvista():
         return require("pyvista", extra="mesh", purpose="mesh files and pyvista meshes")
 
 
-def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyData:
+def to_pyvista(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> pyvista.PolyData:
     """A pyvista ``PolyData`` of a triangle mesh.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
@@ -42,7 +42,7 @@ def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyDat
     ----------
     vertices : array_like, shape (nv, 3)
         The points, finite (float64 is kept).
-    faces : array_like of int, shape (m, 3)
+    simplices : array_like of int, shape (m, 3)
         Vertex indices of the triangles (the row order is the orientation, kept).
 
     Returns
@@ -55,19 +55,19 @@ def to_pyvista(vertices: npt.ArrayLike, faces: npt.ArrayLike) -> pyvista.PolyDat
     ImportError
         If pyvista is not installed (the ``[mesh]`` extra).
     ValueError
-        On invalid vertices, vertices not in R³, or faces that are not (m, 3) indices of vertices.
+        On invalid vertices, vertices not in R³, or simplices that are not (m, 3) indices of vertices.
     """
     v = as_points(vertices, name="vertices")
     if v.shape[1] != 3:
         raise ValueError(f"pyvista meshes live in R³; vertices have {v.shape[1]} coordinates")
-    f = check_simplices(faces, len(v), "faces", width=3)
+    f = check_simplices(simplices, len(v), "simplices", width=3)
     pv = _pyvista()
     cells = np.column_stack([np.full(len(f), 3, dtype=np.int64), f]).ravel()
     return pv.PolyData(v.copy(), cells)
 
 
 def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
-    """``(vertices, faces)`` of a pyvista mesh; polygons and other cells are triangulated first.
+    """``(vertices, simplices)`` of a pyvista mesh; polygons and other cells are triangulated first.
 
     Thesis: §3.4 (the triangulated surfaces of the experiments).
 
@@ -80,7 +80,7 @@ def from_pyvista(mesh: pyvista.DataSet) -> tuple[np.ndarray, np.ndarray]:
     -------
     vertices : ndarray of float64, shape (nv, 3)
         The mesh's points.
-    faces : ndarray of int64, shape (m, 3)
+    simplices : ndarray of int64, shape (m, 3)
         The triangles, in the mesh's vertex order (lines and points are dropped).
 
     Raises
@@ -129,7 +129,7 @@ def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
     -------
     vertices : ndarray of float64, shape (nv, 3)
         The points of the file's surface.
-    faces : ndarray of int64, shape (m, 3)
+    simplices : ndarray of int64, shape (m, 3)
         Its triangles (polygons triangulated), as :func:`from_pyvista` gives them.
 
     Raises
@@ -154,14 +154,15 @@ def read_mesh(path: str | os.PathLike) -> tuple[np.ndarray, np.ndarray]:
     return from_pyvista(mesh)
 
 
-def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.ArrayLike, *, binary: bool = True) -> Path:
+def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, simplices: npt.ArrayLike, *,
+               binary: bool = True) -> Path:
     """Write a triangle mesh; the format follows the suffix (``.vtk``, ``.vtp``, ``.ply``, ``.stl``, ...).
 
     Thesis: §3.4 (the reconstructed surfaces, for viewing in other tools).
 
     Written to a temporary file beside ``path`` first and renamed on success, so an interrupted
     write never leaves a half-written mesh.  ``.vtk``/``.vtp`` keep float64 coordinates; ``.ply``
-    and ``.stl`` store float32, and STL stores each face's corners (vertices shared by faces are
+    and ``.stl`` store float32, and STL stores each face's corners (vertices shared by triangles are
     merged again when read).
 
     Parameters
@@ -170,7 +171,7 @@ def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.Arra
         Destination file, with a suffix naming the format (its folder must exist).
     vertices : array_like, shape (nv, 3)
         The points, as in :func:`to_pyvista`.
-    faces : array_like of int, shape (m, 3)
+    simplices : array_like of int, shape (m, 3)
         The triangles, as in :func:`to_pyvista`.
     binary : bool, default True
         Binary rather than ASCII where the format allows both.
@@ -194,7 +195,7 @@ def write_mesh(path: str | os.PathLike, vertices: npt.ArrayLike, faces: npt.Arra
         raise ValueError(f"give the file a suffix naming its format (.vtk, .vtp, .ply, .stl, ...): {p}")
     if not p.parent.is_dir():
         raise FileNotFoundError(f"no folder {p.parent} to write {p.name} into")
-    mesh = to_pyvista(vertices, faces)
+    mesh = to_pyvista(vertices, simplices)
     fd, tmp = tempfile.mkstemp(prefix=f".{p.stem}-", suffix=p.suffix, dir=p.parent)
     os.close(fd)
     try:

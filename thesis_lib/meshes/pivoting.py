@@ -12,7 +12,7 @@ from ..complexes.scaling import scaled
 __all__ = ["estimate_normals", "ball_pivoting"]
 
 
-def estimate_normals(points: npt.ArrayLike, k: int = 10) -> np.ndarray:
+def estimate_normals(points: npt.ArrayLike, *, k: int = 10) -> np.ndarray:
     """Unit normals from PCA of the ``k`` nearest neighbours, oriented away from the centroid.
 
     Thesis: §3.3.1 (there is no canonical normal for discrete data; here a local plane fit).
@@ -53,7 +53,7 @@ def estimate_normals(points: npt.ArrayLike, k: int = 10) -> np.ndarray:
 
 
 def ball_pivoting(points: npt.ArrayLike, normals: npt.ArrayLike | None = None,
-                  radii: npt.ArrayLike | None = None) -> np.ndarray:
+                  *, radii: npt.ArrayLike | None = None) -> np.ndarray:
     """Triangulate ``points`` in R³ by pymeshlab's ball pivoting.
 
     Thesis: §3.4, "Triangulations" (an alternative to the Crust [ABK98]).

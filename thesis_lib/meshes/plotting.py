@@ -18,8 +18,9 @@ __all__ = ["render_mesh", "mesh_figure"]
 
 def render_mesh(
     vertices: npt.ArrayLike,
-    faces: npt.ArrayLike,
+    simplices: npt.ArrayLike,
     scalars: npt.ArrayLike | None = None,
+    *,
     clim: Sequence[float] | None = None,
     cmap: str = "viridis",
     points_only: bool = False,
@@ -39,7 +40,7 @@ def render_mesh(
     ----------
     vertices : array_like, shape (nv, 3)
         The points.
-    faces : array_like of int, shape (m, 3)
+    simplices : array_like of int, shape (m, 3)
         The triangles (unused with ``points_only``; not validated).
     scalars : array_like, shape (nv,), optional
         One value per vertex to colour by (NaN drawn in ``nan_color``); None: a plain grey mesh.
@@ -73,7 +74,7 @@ def render_mesh(
     v = np.asarray(vertices, dtype=np.float64)
     if v.ndim != 2 or v.shape[1] != 3:
         raise ValueError(f"vertices must be (n, 3) to render, got shape {v.shape}")
-    f = np.asarray(faces, dtype=np.int64)
+    f = np.asarray(simplices, dtype=np.int64)
     from ..graphics.render import pyvista_offscreen
 
     pv = pyvista_offscreen()
@@ -105,7 +106,7 @@ def render_mesh(
     return np.asarray(img)
 
 
-def mesh_figure(images: Iterable[npt.ArrayLike], titles: Sequence[str] | None = None,
+def mesh_figure(images: Iterable[npt.ArrayLike], *, titles: Sequence[str] | None = None,
                 clim: Sequence[float] | None = None, cmap: str = "viridis", label: str = "",
                 figsize: tuple[float, float] | None = None) -> Figure:
     """A matplotlib figure showing rendered ``images`` side by side with one shared colour bar.

@@ -19,9 +19,9 @@ __all__ = ["point_curvature", "CURVATURE_ESTIMATORS"]
 CURVATURE_ESTIMATORS = ("knn", "crust")
 
 
-def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", kind: str = "mean", k: int = 16,
+def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", curvature: str = "mean", k: int = 16,
                     area: str = "mixed") -> np.ndarray:
-    """Estimated curvature at every point: |H| (``kind="mean"``) or K (``"gaussian"``, surfaces in R³).
+    """Estimated curvature at every point: |H| (``curvature="mean"``) or K (``"gaussian"``, surfaces in R³).
 
     Thesis: §3.3.1–§3.3.3 (mean curvature, Theorem 3.18; Gaussian curvature, Definition 3.21) on a
     Crust reconstruction (§3.4), or §3.3.4 (least-squares shape operator) on k-neighbourhoods.
@@ -36,7 +36,7 @@ def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", kind: str 
         :func:`~thesis_lib.meshes.crust_nd.crust_nd` otherwise) and apply the discrete formulas of
         §3.3 at its vertices; ``"knn"``: the least-squares shape operator on the ``k`` nearest
         neighbours (no surface needed).
-    kind : {"mean", "gaussian"}, default "mean"
+    curvature : {"mean", "gaussian"}, default "mean"
         ``"mean"`` (|H|, any n) or ``"gaussian"`` (signed K, n = 2).
     k : int, default 16
         Neighbours of the ``"knn"`` estimator.
@@ -54,23 +54,23 @@ def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", kind: str 
     Raises
     ------
     ValueError
-        On invalid or duplicate points, an unknown ``estimator`` or ``kind``, ``"gaussian"`` off R³,
+        On invalid or duplicate points, an unknown ``estimator`` or ``curvature``, ``"gaussian"`` off R³,
         ``area="mixed"`` with the Crust off R³; from the estimator (e.g. a Crust that fails to
         reconstruct, a ``k`` out of range).
     """
     pts = as_points(points, allow_duplicates=False)
     if estimator not in CURVATURE_ESTIMATORS:
         raise ValueError(f"estimator must be one of {CURVATURE_ESTIMATORS}, got {estimator!r}")
-    if kind not in ("mean", "gaussian"):
-        raise ValueError(f"kind must be 'mean' or 'gaussian', got {kind!r}")
+    if curvature not in ("mean", "gaussian"):
+        raise ValueError(f"curvature must be 'mean' or 'gaussian', got {curvature!r}")
     if estimator == "knn":
-        return knn_curvature(pts, kind=kind, k=k)
-    if kind == "gaussian" and pts.shape[1] != 3:
+        return knn_curvature(pts, curvature=curvature, k=k)
+    if curvature == "gaussian" and pts.shape[1] != 3:
         raise ValueError("the Gaussian curvature (Definition 3.21) is for surfaces in R³, "
                          f"got points in R^{pts.shape[1]}")
     if pts.shape[1] != 3 and area == "mixed":  # refused before the (costly) reconstruction
         raise ValueError("the mixed area is defined for surfaces in R³; use area='voronoi' or 'barycentric'")
-    faces = crust(pts) if pts.shape[1] == 3 else crust_nd(pts).simplices
-    if kind == "gaussian":
-        return gaussian_curvature(pts, faces, area=area)
-    return mean_curvature(pts, faces, area=area)
+    simplices = crust(pts) if pts.shape[1] == 3 else crust_nd(pts).simplices
+    if curvature == "gaussian":
+        return gaussian_curvature(pts, simplices, area=area)
+    return mean_curvature(pts, simplices, area=area)

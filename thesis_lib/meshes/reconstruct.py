@@ -10,12 +10,12 @@ from .pivoting import ball_pivoting
 
 __all__ = ["RECONSTRUCTIONS", "reconstruct_surface"]
 
-#: the methods :func:`reconstruct_surface` knows
+#: the algorithms :func:`reconstruct_surface` knows
 RECONSTRUCTIONS = ("crust", "ball-pivoting")
 
 
 def reconstruct_surface(
-    points: ArrayLike, method: str = "crust", *, theta: float = np.pi / 4, closed: bool = True
+    points: ArrayLike, *, algorithm: str = "crust", theta: float = np.pi / 4, closed: bool = True
 ) -> NDArray[np.int64]:
     """Triangulate a point cloud sampled from a surface in R³; returns ``(m, 3)`` faces into ``points``.
 
@@ -25,7 +25,7 @@ def reconstruct_surface(
     ----------
     points : array_like, shape (n, 3)
         The samples.
-    method : {"crust", "ball-pivoting"}, default "crust"
+    algorithm : {"crust", "ball-pivoting"}, default "crust"
         The Crust algorithm [ABK98] (the thesis's choice) or ball pivoting (pymeshlab).
     theta : float, default π/4
         The Crust's normal-filter angle (ignored by ball pivoting).
@@ -41,11 +41,11 @@ def reconstruct_surface(
     Raises
     ------
     ValueError
-        On an unknown ``method``, or from the reconstruction (:func:`~thesis_lib.meshes.crust`,
+        On an unknown ``algorithm``, or from the reconstruction (:func:`~thesis_lib.meshes.crust`,
         :func:`~thesis_lib.meshes.pivoting.ball_pivoting`).
     """
-    if method == "crust":
+    if algorithm == "crust":
         return crust(points, theta=theta, prune=bool(closed))
-    if method == "ball-pivoting":
+    if algorithm == "ball-pivoting":
         return ball_pivoting(points)
-    raise ValueError(f"unknown reconstruction {method!r}: use one of {RECONSTRUCTIONS}")
+    raise ValueError(f"unknown reconstruction {algorithm!r}: use one of {RECONSTRUCTIONS}")

@@ -28,7 +28,7 @@ def _rejection(n: int, rng, draw, weight, wmax: float) -> np.ndarray:
     return np.concatenate(out)[:n]
 
 
-def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
+def sample_torus(n: int, *, R: float = 10.0, r: float = 5.0, seed: int = 0,
                  return_uv: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the torus: (u, v) uniform, accepted with prob. (R + r cos v)/(R + r).
 
@@ -61,17 +61,17 @@ def sample_torus(n: int, R: float = 10.0, r: float = 5.0, seed: int = 0,
         On an invalid ``n``, radii or ``seed``.
     """
     n = _count(n, 3)
-    torus_point(0.0, 0.0, R, r)  # validates the radii
+    torus_point(0.0, 0.0, R=R, r=r)  # validates the radii
     rng = np.random.default_rng(check_seed(seed))
     uv = _rejection(
         n, rng, lambda m: rng.uniform(0.0, 2 * np.pi, (m, 2)),
         lambda c: R + r * np.cos(c[:, 1]), R + r,
     )
-    pts = torus_point(uv[:, 0], uv[:, 1], R, r)
+    pts = torus_point(uv[:, 0], uv[:, 1], R=R, r=r)
     return (pts, uv) if return_uv else pts
 
 
-def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0,
+def sample_catenoid(n: int, *, v_range: tuple[float, float] = (-1.0, 1.0), seed: int = 0,
                     return_params: bool = False) -> np.ndarray | tuple[np.ndarray, np.ndarray]:
     """``n`` points uniform w.r.t. area on the catenoid piece v ∈ v_range (area element cosh² v du dv).
 
@@ -121,7 +121,7 @@ def sample_catenoid(n: int, v_range: tuple[float, float] = (-1.0, 1.0), seed: in
     return (pts, uv) if return_params else pts
 
 
-def sample_sphere(n: int, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -> np.ndarray:
+def sample_sphere(n: int, *, n_dims: int = 3, radius: float = 1.0, seed: int = 0) -> np.ndarray:
     """``n`` points uniform on the sphere S^{n_dims - 1} of the given radius in R^{n_dims}.
 
     Thesis: §3.4.2 (spheres as test hypersurfaces).

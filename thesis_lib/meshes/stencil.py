@@ -11,6 +11,7 @@ half is exact to leading order in ε: |H| = ‖∇ area‖ / (n · area/2) → |
 from __future__ import annotations
 
 import itertools
+import warnings
 from collections.abc import Callable
 
 import numpy as np
@@ -22,7 +23,7 @@ __all__ = ["cross_stars", "neighbour_grid_mean_curvature"]
 
 
 def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
-                epsilon: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                *, step: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Disjoint cross-polytope stars around the points X(w), w in ``params`` (k, n).
 
     Thesis: §3.4.2 (neighbouring vertices (ψ ± ε, θ ± ε, φ ± ε)).
@@ -33,7 +34,7 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
         Parametrisation mapping (m, n) parameters to (m, n + 1) points, vectorised.
     params : array_like, shape (k, n)
         The parameter points w, finite.
-    epsilon : float
+    step : float
         Grid step ε > 0.
 
     Returns
@@ -49,11 +50,11 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
     Raises
     ------
     ValueError
-        On invalid ``params``, a non-positive ``epsilon``, stars too large to build, or an ``X``
+        On invalid ``params``, a non-positive ``step``, stars too large to build, or an ``X``
         that does not map (m, n) to (m, n + 1) (``InvalidTypeError`` if it is not callable).
     """
     w = as_points(params, name="params")
-    epsilon = check_real(epsilon, "epsilon", positive=True)
+    step = check_real(step, "step", positive=True)
     if not callable(X):
         raise InvalidTypeError(f"X must be a function of parameters, got {X!r}")
     k, n = w.shape
@@ -61,7 +62,7 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
     shifts = [np.zeros(n)]
     for i in range(n):
         e = np.zeros(n)
-        e[i] = epsilon
+        e[i] = step
         shifts += [e, -e]
     allw = (w[:, None, :] + np.array(shifts)[None]).reshape(-1, n)
     try:
@@ -80,7 +81,7 @@ def cross_stars(X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike,
 
 
 def neighbour_grid_mean_curvature(
-    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, epsilon: float, method: str = "gram"
+    X: Callable[[np.ndarray], np.ndarray], params: npt.ArrayLike, *, step: float, method: str = "gram"
 ) -> np.ndarray:
     """|H| at X(w) for each w in ``params`` from its 2n grid neighbours (the thesis's approximation).
 
@@ -95,7 +96,7 @@ def neighbour_grid_mean_curvature(
         Parametrisation (m, n) -> (m, n + 1), as in :func:`cross_stars`.
     params : array_like, shape (k, n)
         Where |H| is wanted.
-    epsilon : float
+    step : float
         The grid step ε of the neighbours X(w ± ε e_i).
     method : {"gram", "cot"}, default "gram"
         The gradient formula of :func:`thesis_lib.curvature.mean_curvature_vector`.
@@ -113,8 +114,10 @@ def neighbour_grid_mean_curvature(
     """
     from ..curvature import mean_curvature_vector, simplex_hyperareas
 
-    vertices, simplices, centres = cross_stars(X, params, epsilon)
+    vertices, simplices, centres = cross_stars(X, params, step=step)
     n = simplices.shape[1] - 1
-    vec = mean_curvature_vector(vertices, simplices, method=method)[centres]
+    with warnings.catch_warnings():  # the stars are disjoint copies by design: their rims coincide
+        warnings.filterwarnings("ignore", message=".*boundary vertices lie at exactly", category=UserWarning)
+        vec = mean_curvature_vector(vertices, simplices, method=method)[centres]
     vol = simplex_hyperareas(vertices, simplices).reshape(len(centres), -1).sum(axis=1)
     return np.linalg.norm(vec, axis=1) / (n * vol / 2)

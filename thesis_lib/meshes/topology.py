@@ -16,7 +16,7 @@ def _simplices(simplices) -> np.ndarray:
     return check_simplices(simplices)
 
 
-def faces_of(simplices: npt.ArrayLike, k: int) -> np.ndarray:
+def faces_of(simplices: npt.ArrayLike, *, k: int) -> np.ndarray:
     """All distinct k-faces (k + 1 sorted vertices each) of the given simplices.
 
     Thesis: Definition 2.1 (faces of a simplex).
@@ -56,7 +56,7 @@ def euler_characteristic(simplices: npt.ArrayLike) -> int:
         χ of that complex.
     """
     s = _simplices(simplices)
-    return int(sum((-1) ** k * len(faces_of(s, k)) for k in range(s.shape[1])))
+    return int(sum((-1) ** k * len(faces_of(s, k=k)) for k in range(s.shape[1])))
 
 
 def facet_degrees(simplices: npt.ArrayLike) -> np.ndarray:

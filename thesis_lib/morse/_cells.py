@@ -89,7 +89,7 @@ class CellComplex:
                 raise ValueError(f"{what} {t} is empty")
             by_dim.setdefault(len(t) - 1, []).append(i)
         for d, where in by_dim.items():
-            rows = as_simplex_array([tuple(simplices[i]) for i in where], d)
+            rows = as_simplex_array([tuple(simplices[i]) for i in where], dim=d)
             if d > self.dimension:
                 raise ValueError(f"{what} {tuple(int(v) for v in rows[0])} is not in the complex")
             found = find_rows(self.arrays[d], rows, missing="mark")

@@ -645,7 +645,7 @@ def sublevel_level_changes(triangles: Sequence[Simplex], values: npt.ArrayLike, 
         simplices = [(int(v),) for v in keep_v]
         simplices += [tuple(map(int, e)) for e in edges[(f[edges] <= a).all(axis=1)]]
         simplices += [tuple(map(int, t)) for t in tris[(f[tris] <= a).all(axis=1)]]
-        b = [x for x, _ in homology(simplices, coefficients)] if simplices else []
+        b = [x for x, _ in homology(simplices, coefficients=coefficients)] if simplices else []
         betti.append((b + [0, 0, 0])[:3])
     out = dict(betti=betti, steps_without=0, changes_without=0, steps_with_one=0, one_cell=0)
     for lo, hi, b0, b1 in zip(levels[:-1], levels[1:], betti[:-1], betti[1:]):
@@ -754,7 +754,7 @@ def gradient_samples(n: int, *, seed: int) -> list[tuple[str, list[Simplex], lis
         else:
             name, cx = named[(i // 4 + kind) % len(named)]
         method = "coreduction" if (i // 2) % 2 == 0 else "collapse"
-        out.append((f"{name}, {method}", cx, morse_matching(cx, method, seed=s)))
+        out.append((f"{name}, {method}", cx, morse_matching(cx, heuristic=method, seed=s)))
     return out
 
 
@@ -896,10 +896,10 @@ def flow_invariant_homology(simplices: ComplexLike, pairs: Pairs, *, coefficient
     for k in range(top + 1):
         cols = np.flatnonzero(dims == k)
         block = inf[:, cols]
-        rank.append(rank_mod_p(block, p) if block.nnz else 0)
+        rank.append(rank_mod_p(block, coefficients=p) if block.nnz else 0)
         img = sp.csc_matrix(D @ block)
         img.eliminate_zeros()
-        drank.append(rank_mod_p(img, p) if img.nnz else 0)
+        drank.append(rank_mod_p(img, coefficients=p) if img.nnz else 0)
     betti = [rank[k] - drank[k] - (drank[k + 1] if k < top else 0) for k in range(top + 1)]
     return dict(rank=rank, betti=betti, n_steps=[steps])
 
@@ -931,7 +931,7 @@ def sublevel_changes(values: dict[Simplex, float], *, coefficients: int = 2) -> 
     out = dict(regular=0, critical=0, regular_changes=0, one_cell=0)
     for s, a in order:
         sub = sublevel_complex(values, a)
-        betti = [b for b, _ in homology(sub, coefficients)] if sub else []
+        betti = [b for b, _ in homology(sub, coefficients=coefficients)] if sub else []
         betti += [0] * (top + 1 - len(betti))
         diff = np.array(betti) - np.array(prev)
         if s in crit:

@@ -90,7 +90,7 @@ def example_4_45() -> tuple[list[Simplex], list[tuple[Simplex, Simplex]]]:
 COMPLEX_NAMES = ("rp2", "torus", "klein", "dunce-hat", "random-flag", "rips")
 
 
-def experiment_complex(name: str, seed: int = 0) -> tuple[
+def experiment_complex(name: str, *, seed: int = 0) -> tuple[
     list[Simplex], dict[int, tuple[float, float]] | None, dict[Simplex, list[tuple[float, float]]] | None
 ]:
     """The complexes of the ``rp2-morse`` experiment: ``(facets, positions, chart)``.
@@ -102,7 +102,7 @@ def experiment_complex(name: str, seed: int = 0) -> tuple[
     name : str
         One of ``COMPLEX_NAMES``: ``"rp2"``, ``"torus"``, ``"klein"``, ``"dunce-hat"``,
         ``"random-flag"`` (the flag complex of 14 uniform points in the unit square at ε = 0.2,
-        edges of length ≤ 0.4) or ``"rips"`` (the Rips complex of ``two_circles(30, seed)`` at
+        edges of length ≤ 0.4) or ``"rips"`` (the Rips complex of ``two_circles(30, seed=seed)`` at
         ε = 0.3), both up to dimension 2.
     seed : int, default 0
         The random draw of the point-cloud complexes (ignored by the triangulations).
@@ -137,10 +137,10 @@ def experiment_complex(name: str, seed: int = 0) -> tuple[
 
         if name == "random-flag":
             pts = np.random.default_rng(check_seed(seed)).random((14, 2))
-            filt = rips(pts, 0.2, 2)
+            filt = rips(pts, max_radius=0.2, max_dim=2)
         else:
             pts = two_circles(30, seed=seed)
-            filt = rips(pts, 0.3, 2)
+            filt = rips(pts, max_radius=0.3, max_dim=2)
         facets = [s for s, _ in filt]
         return facets, {i: (float(x), float(y)) for i, (x, y) in enumerate(pts)}, None
     raise ValueError(f"complex must be one of {', '.join(COMPLEX_NAMES)}, got {name!r}")

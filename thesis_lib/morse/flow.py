@@ -117,7 +117,7 @@ def _equal(a: sp.spmatrix, b: sp.spmatrix) -> bool:
     return (a != b).nnz == 0
 
 
-def stabilised_flow(simplices: ComplexLike, pairs: Pairs, max_iter: int | None = None) -> tuple[sp.csc_matrix, int]:
+def stabilised_flow(simplices: ComplexLike, pairs: Pairs, *, max_iter: int | None = None) -> tuple[sp.csc_matrix, int]:
     """Φ^∞ = Φ^N for the first N with Φ^N = Φ^{N+1}, and that N.
 
     Thesis: Theorem 4.38 (Φ^N(c) = Φ^{N+1}(c) = ... = Φ^∞(c) for N large).

@@ -106,7 +106,8 @@ def _lower_star_partner(cx: CellComplex, values) -> np.ndarray:
 
 
 def morse_matching(
-    simplices: ComplexLike, method: str = "coreduction", values: npt.ArrayLike | None = None, seed: int | None = None
+    simplices: ComplexLike, *, heuristic: str = "coreduction", values: npt.ArrayLike | None = None,
+    seed: int | None = None,
 ) -> list[tuple[Simplex, Simplex]]:
     """An acyclic matching (gradient vector field) with few critical simplices.
 
@@ -116,7 +117,7 @@ def morse_matching(
     ----------
     simplices : Filtration or iterable of simplices
         The complex (all faces are added).
-    method : {"coreduction", "collapse", "lower-star"}, default "coreduction"
+    heuristic : {"coreduction", "collapse", "lower-star"}, default "coreduction"
         ``"coreduction"``: greedy coreductions, a lowest-dimensional cell made critical when none
         is possible — one critical vertex per connected component.  ``"collapse"``: greedy
         elementary collapses from free faces, a top-dimensional cell made critical when stuck.
@@ -124,9 +125,9 @@ def morse_matching(
         filtration of ``values``; every pair lies in one lower star.
     values : array_like, shape (n_vertices,), optional
         Finite vertex values (indexed by vertex number), required for ``"lower-star"`` and refused
-        by the other methods; ties are broken by vertex index.
+        by the other heuristics; ties are broken by vertex index.
     seed : int, optional
-        Random tie-breaking of the greedy methods (``None``: deterministic order).
+        Random tie-breaking of the greedy heuristics (``None``: deterministic order).
 
     Returns
     -------
@@ -138,22 +139,22 @@ def morse_matching(
     Raises
     ------
     ValueError
-        An unknown method, ``values`` missing for (or given to) a method, or vertex values that are
+        An unknown heuristic, ``values`` missing for (or given to) a heuristic, or vertex values that are
         not finite, not 1-D or do not cover every vertex; a seed that is not a non-negative
         integer or None (``True``, ``[1, 2]``, ``numpy.array([1])``, ``1.5``, ``-1``).
     """
-    if method not in ("coreduction", "collapse", "lower-star"):
-        raise ValueError(f"method must be 'coreduction', 'collapse' or 'lower-star', got {method!r}")
+    if heuristic not in ("coreduction", "collapse", "lower-star"):
+        raise ValueError(f"heuristic must be 'coreduction', 'collapse' or 'lower-star', got {heuristic!r}")
     seed = check_seed(seed, optional=True)
     cx = cell_complex(check_complex_size(simplices, "the complex"))
-    if method == "lower-star":
+    if heuristic == "lower-star":
         if values is None:
-            raise ValueError("method 'lower-star' needs vertex values")
+            raise ValueError("heuristic 'lower-star' needs vertex values")
         partner = _lower_star_partner(cx, values)
     else:
         if values is not None:
-            raise ValueError(f"method {method!r} takes no values")
-        partner = greedy_partner(cx, method, seed=seed)
+            raise ValueError(f"heuristic {heuristic!r} takes no values")
+        partner = greedy_partner(cx, heuristic, seed=seed)
     return pairs_from_partner(cx, partner)
 
 

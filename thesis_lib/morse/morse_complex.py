@@ -17,7 +17,7 @@ __all__ = ["morse_boundary", "morse_homology", "chain_complex_homology"]
 
 
 def morse_boundary(simplices: ComplexLike, pairs: Pairs,
-                   coefficients: int = 0) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
+                   *, coefficients: int = 0) -> tuple[list[list[Simplex]], list[sp.csc_matrix]]:
     """Critical simplices per dimension and the Morse boundary ∂̃_k : M_k → M_{k-1} between them.
 
     Thesis: Theorem 4.42 (∂̃τ = Σ_σ σ · Σ_{γ ∈ Γ(τ, σ)} m(γ)), gradient paths of Definition 4.34.
@@ -96,7 +96,7 @@ def _first_nonzero_of_product(a: sp.csc_matrix, b: sp.csc_matrix, p: int) -> tup
 
 
 def chain_complex_homology(boundaries: Sequence[npt.ArrayLike | sp.spmatrix],
-                           coefficients: int = 0) -> list[tuple[int, list[int]]]:
+                           *, coefficients: int = 0) -> list[tuple[int, list[int]]]:
     """Homology of a finite chain complex given by its boundary matrices ``boundaries[k]: C_k → C_{k-1}``.
 
     Thesis: Definition 2.19 / Theorem 2.20 (Betti numbers and torsion from Smith normal forms).
@@ -158,7 +158,7 @@ def _chain_homology(mats: list[sp.csc_matrix], field: Field) -> list[tuple[int, 
         m.sum_duplicates()
         m.eliminate_zeros()
         m.sort_indices()
-        red = reduce_checked(m, field) if m.nnz else None
+        red = reduce_checked(m, field=field) if m.nnz else None
         ranks.append(red.rank if red else 0)
         torsion.append(sorted(int(x) for x in red.invariants) if red else [])
     ranks.append(0)
@@ -166,7 +166,7 @@ def _chain_homology(mats: list[sp.csc_matrix], field: Field) -> list[tuple[int, 
     return [(int(sizes[k] - ranks[k] - ranks[k + 1]), torsion[k + 1]) for k in range(len(mats))]
 
 
-def morse_homology(simplices: ComplexLike, pairs: Pairs, coefficients: int = 0) -> list[tuple[int, list[int]]]:
+def morse_homology(simplices: ComplexLike, pairs: Pairs, *, coefficients: int = 0) -> list[tuple[int, list[int]]]:
     """Homology from the critical simplices and the gradient paths between them.
 
     Thesis: Theorem 4.42 with Theorems 4.39 and 4.41 (H_k of the Morse complex ≅ H_k(K)).

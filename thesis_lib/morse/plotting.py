@@ -51,6 +51,7 @@ def draw_gradient_field(
     ax: Axes,
     simplices: ComplexLike,
     pairs: Pairs,
+    *,
     positions: Mapping[int, Sequence[float]] | None = None,
     chart: Mapping[tuple[int, ...], Sequence[Sequence[float]]] | None = None,
     labels: Mapping[int, str] | None = None,
@@ -144,7 +145,7 @@ def draw_gradient_field(
 
 
 def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
-                       names: Mapping[tuple[int, ...], str] | None = None) -> Axes:
+                       *, names: Mapping[tuple[int, ...], str] | None = None) -> Axes:
     """The (modified) Hasse diagram: one row per dimension, an edge τ → σ for each facet, reversed
     (red, upwards) for the pairs of the vector field; critical simplices boxed in red (only when
     a field is given).

@@ -126,7 +126,7 @@ class MorseReduction:
         return self.n_critical / self.n_cells
 
 
-def morse_reduce(filtration: ComplexLike, coefficients: int | None = None,
+def morse_reduce(filtration: ComplexLike, *, coefficients: int | None = None,
                  pairs: Pairs | None = None) -> MorseReduction:
     """Reduce a filtration to its filtered Morse complex (critical simplices + Morse boundary).
 
@@ -175,7 +175,7 @@ def morse_reduce(filtration: ComplexLike, coefficients: int | None = None,
     return MorseReduction(critical, values, mats, cx.n, p)
 
 
-def reduced_persistence(reduction: MorseReduction, coefficients: int | None = None) -> Barcode:
+def reduced_persistence(reduction: MorseReduction, *, coefficients: int | None = None) -> Barcode:
     """Barcode of the reduced (Morse) filtered complex; equals the filtration's barcode.
 
     Thesis: Theorems 4.39 and 4.41 applied to every sublevel complex; Algorithm 2 for the reduction.

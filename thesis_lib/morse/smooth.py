@@ -25,7 +25,8 @@ __all__ = [
 ]
 
 
-def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0, r: float = 1.0) -> npt.NDArray[np.float64] | float:
+def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
+                 r: float = 1.0) -> npt.NDArray[np.float64] | float:
     """Height h(u, v) = cos(u)(R + r cos v) on the torus φ(u, v) of Example 4.2.
 
     Thesis: Example 4.2.
@@ -54,7 +55,7 @@ def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0, r: float = 
     return np.cos(u) * (R + r * np.cos(v))
 
 
-def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
+def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
                           r: float = 1.0) -> npt.NDArray[np.float64]:
     """h_*(u, v) = (-sin(u)(R + r cos v), -r cos(u) sin v).
 
@@ -81,7 +82,7 @@ def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
     return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
 
 
-def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
+def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
                          r: float = 1.0) -> npt.NDArray[np.float64]:
     """The Hessian of h in the coordinates (u, v).
 
@@ -111,7 +112,7 @@ def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, R: float = 2.0,
     )
 
 
-def morse_index(hessian: npt.ArrayLike, tol: float = 1e-9) -> int:
+def morse_index(hessian: npt.ArrayLike, *, tol: float = 1e-9) -> int:
     """Number of negative eigenvalues of a non-degenerate Hessian (the Morse index).
 
     Thesis: §4.1.1 (index of a non-degenerate critical point), Definition 4.1.
@@ -145,7 +146,7 @@ def morse_index(hessian: npt.ArrayLike, tol: float = 1e-9) -> int:
     return int(np.sum(ev < 0))
 
 
-def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list[dict]:
+def torus_critical_points(*, R: float = 2.0, r: float = 1.0, grid: int = 8) -> list[dict]:
     """Critical points of the height on the upright torus, found numerically from a grid of starts.
 
     Thesis: Example 4.2 / Figure 4.1 (r, q_1, q_2, p of indices 0, 1, 1, 2).
@@ -183,12 +184,12 @@ def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list
     for u0 in starts:
         for v0 in starts:
             sol = scipy.optimize.root(
-                lambda x: torus_height_gradient(x[0], x[1], R, r),
+                lambda x: torus_height_gradient(x[0], x[1], R=R, r=r),
                 np.array([u0, v0]),
-                jac=lambda x: torus_height_hessian(x[0], x[1], R, r),
+                jac=lambda x: torus_height_hessian(x[0], x[1], R=R, r=r),
                 method="hybr",
             )
-            if not sol.success or np.linalg.norm(torus_height_gradient(*sol.x, R, r)) > 1e-10:
+            if not sol.success or np.linalg.norm(torus_height_gradient(*sol.x, R=R, r=r)) > 1e-10:
                 continue
             x = np.mod(sol.x, two_pi)
             x[np.isclose(x, two_pi, atol=1e-8)] = 0.0
@@ -200,7 +201,7 @@ def torus_critical_points(R: float = 2.0, r: float = 1.0, grid: int = 8) -> list
         out.append(
             dict(
                 u=float(u), v=float(v), point=tuple(float(c) for c in point),
-                value=float(torus_height(u, v, R, r)), index=morse_index(torus_height_hessian(u, v, R, r)),
+                value=float(torus_height(u, v, R=R, r=r)), index=morse_index(torus_height_hessian(u, v, R=R, r=r)),
             )
         )
     return sorted(out, key=lambda d: d["value"])
@@ -270,7 +271,7 @@ def sphere_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[t
     """
     names = [["r1", "r2"], ["q1", "q2"], ["p1", "p2"]]
     mats = _complex([[[1, -1], [-1, 1]], [[1, 1], [1, 1]]], [2, 2, 2])
-    return names, mats, chain_complex_homology(mats, 0)
+    return names, mats, chain_complex_homology(mats, coefficients=0)
 
 
 def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tuple[int, list[int]]]]:
@@ -286,7 +287,7 @@ def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tupl
     """
     names = [["r"], ["q"], ["p"]]
     mats = _complex([[[2]], [[2]]], [1, 1, 1])
-    return names, mats, chain_complex_homology(mats, 2)
+    return names, mats, chain_complex_homology(mats, coefficients=2)
 
 
 def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tuple[int, list[int]]]]:
@@ -302,4 +303,4 @@ def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tu
     """
     names = [["r"], ["q1", "q2"], ["p"]]
     mats = _complex([[[2, 2]], [[2], [2]]], [1, 2, 1])
-    return names, mats, chain_complex_homology(mats, 2)
+    return names, mats, chain_complex_homology(mats, coefficients=2)

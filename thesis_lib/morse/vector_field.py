@@ -128,7 +128,7 @@ def hasse_diagram(simplices: ComplexLike, pairs: Pairs = ()) -> tuple[list[Simpl
     return cx.simplices(), g
 
 
-def is_acyclic(simplices: ComplexLike, pairs: Pairs, method: str = "vpaths") -> bool:
+def is_acyclic(simplices: ComplexLike, pairs: Pairs, *, method: str = "vpaths") -> bool:
     """True when the vector field has no non-trivial closed V-path.
 
     Thesis: Theorem 4.36 (then V is the gradient of a discrete Morse function) and Theorem 4.44.
@@ -189,7 +189,7 @@ def find_closed_vpath(simplices: ComplexLike, pairs: Pairs) -> list[Simplex] | N
 
 
 def vpaths(simplices: ComplexLike, pairs: Pairs, start: Sequence[int],
-           max_paths: int = 100_000) -> list[list[Simplex]]:
+           *, max_paths: int = 100_000) -> list[list[Simplex]]:
     """All maximal V-paths σ_0 = start, τ_0, σ_1, ..., σ_{r+1} (σ_{r+1} in no pair upwards).
 
     Thesis: Definition 4.34.

@@ -111,7 +111,7 @@ class Bifiltration:
             Indices into ``simplices[d - 1]``; column ``i`` is the facet omitting vertex ``i``."""
         return self._eps.facet_indices(d)
 
-    def filtration(self, values: Sequence[np.ndarray], keep: Sequence[np.ndarray] | None = None) -> Filtration:
+    def filtration(self, values: Sequence[np.ndarray], *, keep: Sequence[np.ndarray] | None = None) -> Filtration:
         """The one-parameter filtration of the simplices ``keep`` (masks) with ``values`` (per dimension).
 
         Parameters
@@ -137,27 +137,27 @@ class Bifiltration:
             vals.pop()
         return Filtration(simp, vals, validate=False)
 
-    def subcomplex(self, eps: float, kappa: float) -> Filtration | None:
+    def subcomplex(self, radius: float, curvature: float) -> Filtration | None:
         """K_{ε,κ} as a filtration by ε (None when empty).
 
         Thesis: Chapter 5 (the complex at one value of both parameters).
 
         Parameters
         ----------
-        eps : float
-            The radius grade ε: simplices with ε(σ) ≤ eps.
-        kappa : float
-            The curvature grade κ: simplices with κ(σ) ≤ kappa.
+        radius : float
+            The radius grade ε: simplices with ε(σ) ≤ radius.
+        curvature : float
+            The curvature grade κ: simplices with κ(σ) ≤ curvature.
 
         Returns
         -------
         Filtration or None
             K_{ε,κ}, filtered by the ε-grades; None when no vertex is in it.
         """
-        keep = [(g[:, 0] <= eps) & (g[:, 1] <= kappa) for g in self.grades]
+        keep = [(g[:, 0] <= radius) & (g[:, 1] <= curvature) for g in self.grades]
         if not keep[0].any():
             return None
-        return self.filtration([g[:, 0] for g in self.grades], keep)
+        return self.filtration([g[:, 0] for g in self.grades], keep=keep)
 
     def __repr__(self) -> str:
         return (f"Bifiltration(dimension={self.dimension}, counts={self.counts()}, "

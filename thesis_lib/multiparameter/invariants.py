@@ -35,7 +35,7 @@ __all__ = ["hilbert_function", "rank_invariant", "fibered_barcode", "line_filtra
 MAX_GRID_ENTRIES = 10**8
 
 
-def check_grid(values: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
+def check_grid(values: npt.ArrayLike, *, name: str) -> npt.NDArray[np.float64]:
     """A grid axis: a non-empty, finite, strictly increasing 1-D array.
 
     Thesis: Chapter 5 (the pairs (ε, κ) at which the invariants are evaluated).
@@ -45,7 +45,7 @@ def check_grid(values: npt.ArrayLike, name: str) -> npt.NDArray[np.float64]:
     values : array_like, shape (k,)
         The grid values.
     name : str
-        The axis's name in error messages (``"eps"``, ``"kappa"``).
+        The axis's name in error messages (``"radii"``, ``"curvatures"``).
 
     Returns
     -------
@@ -93,10 +93,10 @@ def _betti_at(arr: np.ndarray, at: np.ndarray) -> np.ndarray:
     return born - dead
 
 
-def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.ArrayLike, *,
+def hilbert_function(bifiltration: Bifiltration, radii: npt.ArrayLike, curvatures: npt.ArrayLike, *,
                      dims: int | Sequence[int] | None = None,
                      coefficients: int | None = None) -> npt.NDArray[np.int64]:
-    """dim H_k(K_{ε,κ}) at every point of the grid ``eps`` × ``kappa``.
+    """dim H_k(K_{ε,κ}) at every point of the grid ``radii`` × ``curvatures``.
 
     Thesis: Chapter 5 (the homology at each pair (ε, κ)); Definition 2.23 along each row.
 
@@ -104,7 +104,7 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
     ----------
     bifiltration : Bifiltration
         The one-critical bifiltration.
-    eps, kappa : array_like
+    radii, curvatures : array_like
         Strictly increasing grid axes (see :func:`check_grid`).
     dims : int or sequence of int, optional
         Homology dimensions (default all the bifiltration determines, 0..max_homology_dim).
@@ -113,7 +113,7 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
 
     Returns
     -------
-    ndarray of int64, shape (len(dims), len(eps), len(kappa))
+    ndarray of int64, shape (len(dims), len(radii), len(curvatures))
         Entry ``[a, i, j]`` is dim H_{dims[a]}(K_{ε_i,κ_j}).
 
     Raises
@@ -122,19 +122,19 @@ def hilbert_function(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.
         A bad grid, a grid too large for memory (refused with its size), or a dimension the
         bifiltration does not determine.
     """
-    eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
+    radii, curvatures = check_grid(radii, name="radii"), check_grid(curvatures, name="curvatures")
     dims = _dims(bifiltration, dims)
     field = parse_field(coefficients, default=2, field=True)
-    _check_memory(len(dims) * eps.size * kappa.size, "Hilbert-function")
-    out = np.zeros((len(dims), eps.size, kappa.size), dtype=np.int64)
+    _check_memory(len(dims) * radii.size * curvatures.size, "Hilbert-function")
+    out = np.zeros((len(dims), radii.size, curvatures.size), dtype=np.int64)
     eps_grades = [g[:, 0] for g in bifiltration.grades]
-    for j, k in enumerate(kappa):
+    for j, k in enumerate(curvatures):
         keep = [g[:, 1] <= k for g in bifiltration.grades]
         if not keep[0].any():
             continue
-        bc = filtration_barcode(bifiltration.filtration(eps_grades, keep), field)
+        bc = filtration_barcode(bifiltration.filtration(eps_grades, keep=keep), field)
         for a, d in enumerate(dims):
-            out[a, :, j] = _betti_at(bc.intervals(d), eps)
+            out[a, :, j] = _betti_at(bc.intervals(d), radii)
     return out
 
 
@@ -149,9 +149,9 @@ def _corner_path_values(te: list[np.ndarray], tk: list[np.ndarray], i: int, j2: 
     return values, keep
 
 
-def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.ArrayLike, *, dim: int,
+def rank_invariant(bifiltration: Bifiltration, radii: npt.ArrayLike, curvatures: npt.ArrayLike, *, dim: int,
                    coefficients: int | None = None) -> npt.NDArray[np.int64]:
-    """rank H_dim(K_a) → H_dim(K_b) for all grid points a ≤ b of ``eps`` × ``kappa``.
+    """rank H_dim(K_a) → H_dim(K_b) for all grid points a ≤ b of ``radii`` × ``curvatures``.
 
     Thesis: Definition 2.23 (the persistent Betti numbers), for two parameters (Chapter 5).
 
@@ -159,7 +159,7 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
     ----------
     bifiltration : Bifiltration
         The one-critical bifiltration.
-    eps, kappa : array_like
+    radii, curvatures : array_like
         Strictly increasing grid axes, as in :func:`hilbert_function`.
     dim : int
         The homology dimension; at most the bifiltration's ``max_homology_dim``.
@@ -168,25 +168,25 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
 
     Returns
     -------
-    ndarray of int64, shape (len(eps), len(kappa), len(eps), len(kappa))
+    ndarray of int64, shape (len(radii), len(curvatures), len(radii), len(curvatures))
         Entry ``[i, j, i2, j2]`` is the rank from (ε_i, κ_j) to (ε_i2, κ_j2) when i ≤ i2 and
         j ≤ j2, else 0.  The diagonal ``[i, j, i, j]`` is the Hilbert function.
 
     Raises
     ------
     ValueError
-        As :func:`hilbert_function`; the array has (len(eps) · len(kappa))² entries, so the grid
+        As :func:`hilbert_function`; the array has (len(radii) · len(curvatures))² entries, so the grid
         is refused sooner (at ``MAX_GRID_ENTRIES``).
     """
-    eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
+    radii, curvatures = check_grid(radii, name="radii"), check_grid(curvatures, name="curvatures")
     dim = _dims(bifiltration, [dim])[0]
     field = parse_field(coefficients, default=2, field=True)
-    ne, nk = eps.size, kappa.size
+    ne, nk = radii.size, curvatures.size
     _check_memory(ne * nk * ne * nk, "rank-invariant")
     out = np.zeros((ne, nk, ne, nk), dtype=np.int64)
     # grid index of each grade: the first grid value at or above it (len(grid) when above all)
-    te = [np.searchsorted(eps, g[:, 0], side="left") for g in bifiltration.grades]
-    tk = [np.searchsorted(kappa, g[:, 1], side="left") for g in bifiltration.grades]
+    te = [np.searchsorted(radii, g[:, 0], side="left") for g in bifiltration.grades]
+    tk = [np.searchsorted(curvatures, g[:, 1], side="left") for g in bifiltration.grades]
     # One barcode per L-shaped path (up the column ε_i to κ_j2, then right along κ_j2): it holds
     # every a = (ε_i, κ_j), j ≤ j2, before every b = (ε_i2, κ_j2), i2 ≥ i, so the rank from a to b
     # is the number of its bars alive at both (the rank is the same along any path through a and b).
@@ -195,7 +195,7 @@ def rank_invariant(bifiltration: Bifiltration, eps: npt.ArrayLike, kappa: npt.Ar
             values, keep = _corner_path_values(te, tk, i, j2, ne)
             if not keep[0].any():
                 continue
-            arr = filtration_barcode(bifiltration.filtration(values, keep), field).intervals(dim)
+            arr = filtration_barcode(bifiltration.filtration(values, keep=keep), field).intervals(dim)
             later = j2 + np.arange(ne - i)  # the positions of b = (ε_i2, κ_j2), i2 = i .. ne − 1
             for j in range(j2 + 1):
                 deaths = np.sort(arr[arr[:, 0] <= j, 1])  # bars alive at a = (ε_i, κ_j), position j

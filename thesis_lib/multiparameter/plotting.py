@@ -21,7 +21,7 @@ if TYPE_CHECKING:  # matplotlib is imported only when drawing
 __all__ = ["plot_hilbert", "line_fan", "plot_fibered_barcodes"]
 
 
-def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt.ArrayLike, *, label: str = "",
+def plot_hilbert(ax: Axes, values: npt.ArrayLike, radii: npt.ArrayLike, curvatures: npt.ArrayLike, *, label: str = "",
                  vmax: int | None = None, cmap: str = "viridis", xlabel: str = "ε", ylabel: str = "κ",
                  colorbar: bool = True) -> QuadMesh:
     """Heat map of one Hilbert function ``values[i, j]`` = dim H_k(K_{ε_i, κ_j}) on the grid.
@@ -35,9 +35,9 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt
     ----------
     ax : matplotlib.axes.Axes
         Where to draw.
-    values : array_like of int, shape (len(eps), len(kappa))
+    values : array_like of int, shape (len(radii), len(curvatures))
         One Hilbert function, e.g. ``hilbert_function(...)[a]``.
-    eps, kappa : array_like
+    radii, curvatures : array_like
         The grid axes (strictly increasing); the last cell is as wide as the one before it.
     label : str, default ""
         Title of the colour bar (e.g. ``"β₁"``).
@@ -65,13 +65,13 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt
     plt = require("matplotlib.pyplot", extra="plot", purpose="plotting Hilbert functions")
     from matplotlib.colors import BoundaryNorm
 
-    eps, kappa = check_grid(eps, "eps"), check_grid(kappa, "kappa")
+    radii, curvatures = check_grid(radii, name="radii"), check_grid(curvatures, name="curvatures")
     v = np.asarray(values)
-    if v.shape != (eps.size, kappa.size):
-        raise ValueError(f"values must have shape {(eps.size, kappa.size)}, got {v.shape}")
+    if v.shape != (radii.size, curvatures.size):
+        raise ValueError(f"values must have shape {(radii.size, curvatures.size)}, got {v.shape}")
     top = int(v.max()) if vmax is None else int(vmax)
-    edges_e = np.append(eps, eps[-1] + (eps[-1] - eps[-2] if eps.size > 1 else 1.0))
-    edges_k = np.append(kappa, kappa[-1] + (kappa[-1] - kappa[-2] if kappa.size > 1 else 1.0))
+    edges_e = np.append(radii, radii[-1] + (radii[-1] - radii[-2] if radii.size > 1 else 1.0))
+    edges_k = np.append(curvatures, curvatures[-1] + (curvatures[-1] - curvatures[-2] if curvatures.size > 1 else 1.0))
     norm = BoundaryNorm(np.arange(-0.5, top + 1.5), plt.get_cmap(cmap).N)
     mesh = ax.pcolormesh(edges_e, edges_k, v.T, cmap=cmap, norm=norm, shading="flat")
     ax.set(xlabel=xlabel, ylabel=ylabel)
@@ -81,7 +81,7 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, eps: npt.ArrayLike, kappa: npt
     return mesh
 
 
-def line_fan(bounds: npt.ArrayLike, n_lines: int = 5, *, base: npt.ArrayLike | None = None,
+def line_fan(bounds: npt.ArrayLike, *, n_lines: int = 5, base: npt.ArrayLike | None = None,
              angles: tuple[float, float] = (15.0, 75.0)) -> tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]:
     """``n_lines`` lines of positive slope through ``base`` (default the lower-left corner of
     ``bounds`` = ``[[ε_min, κ_min], [ε_max, κ_max]]``), at angles spread over ``angles`` (degrees)

@@ -33,7 +33,7 @@ from .kernels import inverse
 __all__ = ["compute_intervals", "trace_matrices"]
 
 
-def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
+def compute_intervals(filtration: Filtration | Iterable[Any], *, coefficients: int | None = None,
                       trace: list[dict[str, Any]] | None = None) -> Barcode:
     """P-intervals of a filtered complex over Z/p by the thesis's Algorithms 1 (Reduce) and 2 (ComputeIntervals).
 
@@ -180,8 +180,8 @@ def compute_intervals(filtration: Filtration | Iterable[Any], coefficients: int 
             pairs[q].append((source[j], -1))
     return Barcode(
         {q: np.array(v, dtype=np.float64).reshape(-1, 2) for q, v in L.items()},
-        range(K.dimension + 1),
-        p=field,
+        dimensions=range(K.dimension + 1),
+        coefficients=field,
         simplices={q: np.array(v, dtype=np.int64).reshape(-1, 2) for q, v in pairs.items()},
         filtration=K,
         killers={q: np.array([t for _, t in v if t >= 0], dtype=np.int64) for q, v in pairs.items()},
@@ -198,7 +198,7 @@ def _t_power(c: int, power: float, p: int) -> str:
     return mono if c == 1 else ("-" + mono if c == -1 else f"{c}{mono}")
 
 
-def trace_matrices(trace: list[dict[str, Any]], p: int,
+def trace_matrices(trace: list[dict[str, Any]], *, coefficients: int,
                    names: str | None = None) -> tuple[list[list[str]], list[list[str]]]:
     """The two m × m tables of Example 2.41 from a trace of :func:`compute_intervals`.
 
@@ -209,8 +209,8 @@ def trace_matrices(trace: list[dict[str, Any]], p: int,
     ----------
     trace : list of dict
         The whole list filled by ``compute_intervals(..., trace=[])`` (its first entry holds ``order``).
-    p : int
-        The prime the trace was computed over; entries are shown as signed residues mod ``p``.
+    coefficients : int
+        The prime p the trace was computed over; entries are shown as signed residues mod p.
     names : str, optional
         Letters for the vertex numbers (``names[v]`` names vertex v, e.g. ``"abcde"``); default: the
         numbers, comma-separated.
@@ -240,7 +240,7 @@ def trace_matrices(trace: list[dict[str, Any]], p: int,
             line = [label[i]]
             for j, col in enumerate(cols):
                 c = col.get(i, 0)
-                line.append(_t_power(c, deg[j] - deg[i], p) if c else "0")
+                line.append(_t_power(c, deg[j] - deg[i], coefficients) if c else "0")
             out.append(line)
         return out
 

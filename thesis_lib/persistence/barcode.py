@@ -7,6 +7,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._validate import check_min_persistence, check_scale
+
 if TYPE_CHECKING:
     from .._validate import Field
 
@@ -26,9 +28,19 @@ def _as_interval_array(rows: Any) -> np.ndarray:
     return arr
 
 
-def _canonical(arr: np.ndarray, extra: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray | None]:
-    """Drop zero-length intervals and sort by (birth, death) (two stable sorts: faster than lexsort)."""
+def _long_enough(arr: np.ndarray, min_persistence: float) -> np.ndarray:
+    """The rows whose length death − birth exceeds ``min_persistence`` (0: every non-zero length)."""
     keep = arr[:, 1] > arr[:, 0]
+    if min_persistence > 0:
+        keep &= arr[:, 1] - arr[:, 0] > min_persistence
+    return keep
+
+
+def _canonical(arr: np.ndarray, extra: np.ndarray | None = None,
+               min_persistence: float = 0.0) -> tuple[np.ndarray, np.ndarray | None]:
+    """Drop the intervals of length at most ``min_persistence`` (zero-length ones always) and sort by
+    (birth, death) (two stable sorts: faster than lexsort)."""
+    keep = _long_enough(arr, min_persistence)
     if not keep.all():
         arr = arr[keep]
         extra = None if extra is None else extra[keep]
@@ -87,6 +99,16 @@ def _tolerance(atol) -> float:
     return check_real(atol, "atol", minimum=0.0, finite=False)
 
 
+def _diagram(arr: np.ndarray, factor: float, min_persistence: float) -> np.ndarray:
+    """A writable copy of the intervals ``arr`` times ``factor`` (exact: 1 or 2), without the rows
+    of length at most ``min_persistence``; a finite value that doubles to inf is refused."""
+    with np.errstate(over="ignore"):
+        out = arr * factor
+    if factor != 1.0 and np.isinf(out).sum() != np.isinf(arr).sum():
+        raise ValueError("a value of the barcode is beyond half of float64's range: its diameter does not fit")
+    return out[_long_enough(out, min_persistence)] if min_persistence > 0 else out
+
+
 #: the most persistence diagrams :meth:`Barcode.to_diagrams` returns (dimensions 0 .. 9999): a
 #: homology dimension above it would need a simplex of more than 10⁴ vertices (2^(10⁴) faces)
 MAX_DIAGRAMS = 10_000
@@ -106,8 +128,8 @@ class Barcode:
     intervals : mapping ``dim -> (k, 2)`` array-like of ``(birth, death)``.
     dimensions : homology dimensions that were computed (default: the keys of ``intervals``);
         a computed dimension may have no intervals.
-    p : the coefficient field Z/p the barcode was computed over: a prime, a parsed ``Field``, or
-        ``None`` if unknown.
+    coefficients : the coefficient field Z/p the barcode was computed over: a prime, a parsed ``Field``,
+        or ``None`` if unknown.
     simplices : optional mapping ``dim -> (k, 2)`` int array, parallel to ``intervals``: the index
         (into ``filtration.simplices[dim]``) of the simplex creating each class and the index (into
         ``filtration.simplices[dim + 1]``) of the simplex killing it, ``-1`` for an essential class.
@@ -123,19 +145,23 @@ class Barcode:
         classes could only die by simplices that were never built, so they show as essential.
         ``repr``, :meth:`betti` without a dimension, :meth:`to_diagrams`, comparisons and the plots
         use the complete dimensions; :meth:`intervals` still returns any computed dimension.
+    min_persistence : intervals with ``death − birth <= min_persistence`` are left out (default 0:
+        only the zero-length ones).  A tolerance for the bars of length ~1e-16 that tied distances
+        give in floating point (ripser drops them: its distances are float32).
     """
 
     def __init__(
         self,
         intervals: Mapping[int, Any],
-        dimensions: Iterable[int] | None = None,
         *,
-        p: int | Field | None = None,
+        dimensions: Iterable[int] | None = None,
+        coefficients: int | Field | None = None,
         simplices: Mapping[int, np.ndarray] | None = None,
         filtration: Any = None,
         killers: Mapping[int, np.ndarray] | None = None,
         essential: Mapping[int, tuple[np.ndarray, np.ndarray]] | None = None,
         complete: Iterable[int] | None = None,
+        min_persistence: float = 0.0,
     ):
         if not isinstance(intervals, Mapping):
             raise TypeError(f"intervals must be a mapping dim -> (k, 2) array, got {type(intervals).__name__}")
@@ -145,11 +171,12 @@ class Barcode:
         if set(done) - set(dims):
             raise ValueError(f"complete dimensions {sorted(set(done) - set(dims))} were not computed")
         self._complete = tuple(done)
+        self._min_persistence = check_min_persistence(min_persistence)
         extra_dims = set(given) - set(dims)
         if extra_dims:
             raise ValueError(f"intervals given for dimensions {sorted(extra_dims)} outside {dims}")
         self._dims = tuple(dims)
-        self.p = _field(p)
+        self.coefficients = _field(coefficients)
         self.filtration = filtration
         # raw (validated) arrays; each dimension is put in canonical form on first use
         self._raw: dict[int, tuple[np.ndarray, np.ndarray | None]] = {}
@@ -180,7 +207,7 @@ class Barcode:
 
     # ------------------------------------------------------------------ construction
     @classmethod
-    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]],
+    def from_pairs(cls, pairs: Iterable[tuple[int, tuple[float, float]]], *,
                    dimensions: Iterable[int] | None = None) -> Barcode:
         """Build from ``(dim, (birth, death))`` pairs, the format of GUDHI's ``persistence()``.
 
@@ -197,15 +224,15 @@ class Barcode:
         Returns
         -------
         Barcode
-            Without simplices or coefficients (``p`` is None).
+            Without simplices or coefficients (``coefficients`` is None).
         """
         by_dim: dict[int, list[tuple[float, float]]] = {}
         for dim, (b, d) in pairs:
             by_dim.setdefault(_dimension(dim), []).append((float(b), float(d)))
-        return cls(by_dim, dimensions)
+        return cls(by_dim, dimensions=dimensions)
 
     @classmethod
-    def from_diagrams(cls, diagrams: Iterable[Any], *, p: int | None = None) -> Barcode:
+    def from_diagrams(cls, diagrams: Iterable[Any], *, coefficients: int | None = None) -> Barcode:
         """Build from persistence diagrams in the ripser/persim format: ``diagrams[k]`` is a ``(m, 2)``
         array of ``(birth, death)`` of dimension k (``inf`` for essential classes).
 
@@ -216,7 +243,7 @@ class Barcode:
         ----------
         diagrams : sequence of array_like, shape (m, 2)
             ``diagrams[k]`` the ``(birth, death)`` rows of dimension k (``inf`` for essential classes).
-        p : int, optional
+        coefficients : int, optional
             The coefficient field Z/p they were computed over (``None``: unknown).
 
         Returns
@@ -233,46 +260,64 @@ class Barcode:
         """
         if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
             raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
-        p = _field(p)
+        coefficients = _field(coefficients)
         by_dim = {}
         for d, dgm in enumerate(diagrams):
             arr = np.asarray(dgm, dtype=np.float64)
             if arr.size and (arr.ndim != 2 or arr.shape[1] != 2):
                 raise ValueError(f"diagram {d} must be an (m, 2) array, got shape {arr.shape}")
             by_dim[d] = arr.reshape(-1, 2)
-        return cls(by_dim, range(len(by_dim)), p=p)
+        return cls(by_dim, dimensions=range(len(by_dim)), coefficients=coefficients)
 
-    def to_diagrams(self, dims: Iterable[int] | None = None) -> list[np.ndarray]:
+    def to_diagrams(self, *, dims: Iterable[int] | None = None, scale: str = "epsilon",
+                    min_persistence: float = 0.0) -> list[np.ndarray]:
         """The barcode as persistence diagrams (ripser/persim format): a list of ``(m, 2)`` arrays, one
         per dimension 0, 1, ... up to the largest complete one (or the given ``dims``' maximum).
 
         Thesis: Definition 2.34 and Theorem 2.37 (P-intervals drawn as points).  The values are
-        this barcode's (ε for :func:`~thesis_lib.complexes.rips`; ripser reports diameters 2ε).
+        this barcode's (ε for :func:`~thesis_lib.complexes.rips`), or twice them with
+        ``scale="diameter"``: the diameters 2ε that ripser.py, giotto-ph and persim report.
 
         Parameters
         ----------
         dims : iterable of int, optional
             Only its maximum matters: diagrams are returned for 0 .. max(dims) (default: the complete
             dimensions).
+        scale : {"epsilon", "radius", "diameter"}
+            ``"epsilon"`` (default; ``"radius"`` is the same): the barcode's values, the thesis's ε;
+            ``"diameter"``: the values doubled, ripser's convention for a Rips barcode (2ε).
+        min_persistence : float
+            Rows with ``death − birth <= min_persistence`` are left out, measured in the returned
+            values (after ``scale``); default 0 (the zero-length bars are never there).
 
         Returns
         -------
         list of numpy.ndarray, shape (m, 2)
-            ``diagrams[k]``: a writable copy of :meth:`intervals` ``(k)``.
+            ``diagrams[k]``: a writable copy of :meth:`intervals` ``(k)``, scaled and filtered.
 
         Raises
         ------
         TypeError
             ``dims`` is a string or holds a non-integer.
         ValueError
-            A negative dimension, or more than ``MAX_DIAGRAMS`` diagrams asked for.
+            A negative dimension, more than ``MAX_DIAGRAMS`` diagrams asked for, an unknown ``scale``,
+            a negative, infinite or NaN ``min_persistence``, or a finite value that doubles beyond
+            float64's range.
+
+        Examples
+        --------
+        >>> bars = Barcode({0: [[0.0, 0.5], [0.0, np.inf]], 1: [[0.5, 0.75]]})
+        >>> [d.tolist() for d in bars.to_diagrams(scale="diameter", min_persistence=0.6)]
+        [[[0.0, 1.0], [0.0, inf]], []]
         """
+        factor = check_scale(scale)
+        min_persistence = check_min_persistence(min_persistence)
         dims = self._complete if dims is None else tuple(_dimension_list(dims, "dims"))
         top = max(dims, default=-1)
         if top >= MAX_DIAGRAMS:
             raise ValueError(f"dims asks for {top + 1:,} diagrams (0 .. {top:,}), more than the limit of "
                              f"{MAX_DIAGRAMS:,} (this barcode's dimensions are {list(self._dims)})")
-        return [np.array(self.intervals(d)) for d in range(top + 1)]
+        return [_diagram(self.intervals(d), factor, min_persistence) for d in range(top + 1)]
 
     # ------------------------------------------------------------------ queries
     @property
@@ -310,7 +355,7 @@ class Barcode:
         if dim not in self._done:
             if dim not in self._raw:
                 return np.empty((0, 2), dtype=np.float64), np.empty((0, 2), dtype=np.int64)
-            arr, extra = _canonical(*self._raw.pop(dim))
+            arr, extra = _canonical(*self._raw.pop(dim), self._min_persistence)
             arr.setflags(write=False)
             if extra is not None:
                 extra.setflags(write=False)
@@ -334,7 +379,7 @@ class Barcode:
         """
         return self._get(_dimension(dim))[0]
 
-    def betti(self, value: float, dim: int | None = None) -> int | list[int]:
+    def betti(self, value: float, *, dim: int | None = None) -> int | list[int]:
         """Betti number of ``H_dim`` of the complex at filtration value ``value``: bars with birth ≤ value < death.
         Without ``dim``: the list of Betti numbers of the complete dimensions.
 
@@ -354,10 +399,10 @@ class Barcode:
             β_dim at ``value``; a list over :attr:`complete_dimensions` when ``dim`` is None.
         """
         if dim is None:
-            return [self.persistent_betti(value, 0.0, d) for d in self._complete]
-        return self.persistent_betti(value, 0.0, dim)
+            return [self.persistent_betti(value, 0.0, dim=d) for d in self._complete]
+        return self.persistent_betti(value, 0.0, dim=dim)
 
-    def persistent_betti(self, l: float, k: float, dim: int) -> int:
+    def persistent_betti(self, l: float, k: float, *, dim: int) -> int:
         """Rank of the k-persistent homology group H_dim^{l,k}: intervals spanning ``[l, l + k]``.
 
         Thesis: Definition 2.23 and Theorem 2.37 (the rank equals the number of intervals spanning
@@ -408,7 +453,7 @@ class Barcode:
         """
         return [(d, (float(b), float(e))) for d in self._dims for b, e in self.intervals(d).tolist()]
 
-    def longest(self, dim: int, n: int = 1) -> np.ndarray:
+    def longest(self, dim: int, *, n: int = 1) -> np.ndarray:
         """Indices (into :meth:`intervals`) of the ``n`` longest intervals in ``dim``, longest first.
 
         Thesis: §2.3 (long bars are the persistent features, short ones noise).
@@ -440,7 +485,7 @@ class Barcode:
 
     __hash__ = None  # compared by value
 
-    def allclose(self, other: Barcode, atol: float = 1e-9) -> bool:
+    def allclose(self, other: Barcode, *, atol: float = 1e-9) -> bool:
         """Same intervals in every dimension up to ``atol`` (dimensions without intervals are ignored).
 
         Thesis: Corollary 2.35 (a barcode determines the persistence module up to isomorphism).
@@ -459,7 +504,7 @@ class Barcode:
         """
         return self.difference(other, atol=atol) is None
 
-    def difference(self, other: Barcode, atol: float = 0.0) -> str | None:
+    def difference(self, other: Barcode, *, atol: float = 0.0) -> str | None:
         """``None`` if both barcodes agree up to ``atol``, else a message naming the first difference.
 
         Thesis: Corollary 2.35 (equal barcodes ⇔ isomorphic persistence modules).
@@ -583,7 +628,8 @@ class Barcode:
         if dim not in self._representatives:
             empty = np.empty(0, dtype=np.int64)
             self._representatives[dim] = Representatives(
-                self.filtration, dim, self.p or 2, self._killers.get(dim, empty), self._killers.get(dim - 1, empty)
+                self.filtration, dim, self.coefficients or 2, self._killers.get(dim, empty),
+                self._killers.get(dim - 1, empty),
             )
         sigma, tau = self.simplex_pairs(dim)[i]
         return self._representatives[dim].cycle(int(sigma), int(tau))

@@ -42,7 +42,7 @@ def _reduce(mat, dims_pos: np.ndarray, p: int) -> np.ndarray:
     return low
 
 
-def chain_persistence(values: list[np.ndarray], boundaries: list, p: int = 2) -> Barcode:
+def chain_persistence(values: list[np.ndarray], boundaries: list, *, coefficients: int = 2) -> Barcode:
     """Barcode of a filtered chain complex: cells with values per dimension, boundary matrices per dimension.
 
     Thesis: Algorithm 2, §2.3.5 (column reduction over Z/p; pairs give P-intervals, Definition 2.34).
@@ -53,13 +53,13 @@ def chain_persistence(values: list[np.ndarray], boundaries: list, p: int = 2) ->
     boundaries : ``boundaries[d]`` the matrix (dense or scipy.sparse, integer) of ∂ from d-cells
         (columns) to (d−1)-cells (rows); ``boundaries[0]`` is ignored.  Every cell's boundary must
         consist of cells with value ≤ its own (ties: lower dimension first).
-    p : a prime, the field Z/p.
+    coefficients : a prime p, the field Z/p.
 
     Returns
     -------
     Barcode
     """
-    field = parse_field(p)
+    field = parse_field(coefficients)
     if not field.is_field:
         raise ValueError("persistence needs a prime field Z/p, got 0")
     return chain_barcode(values, boundaries, field)
@@ -140,4 +140,4 @@ def chain_barcode(values: list[np.ndarray], boundaries: list, field: Field) -> B
             intervals[int(dims_pos[rr])].append((float(vals_pos[rr]), float(vals_pos[cc])))
     for i in np.flatnonzero(~paired).tolist():
         intervals[int(dims_pos[i])].append((float(vals_pos[i]), np.inf))
-    return Barcode(intervals, range(len(counts)), p=field)
+    return Barcode(intervals, dimensions=range(len(counts)), coefficients=field)

@@ -34,7 +34,7 @@ __all__ = [
 
 
 def _rank(matrix, p: int) -> int:
-    return 0 if min(matrix.shape) == 0 or matrix.nnz == 0 else rank_mod_p(matrix, p)
+    return 0 if min(matrix.shape) == 0 or matrix.nnz == 0 else rank_mod_p(matrix, coefficients=p)
 
 
 def persistent_betti_by_definition(filtration: Filtration | Iterable[Any], l: float, k: float, dim: int, *,
@@ -158,7 +158,7 @@ def barcode_betti_grid(barcode: Barcode, *, ls: Iterable[float], ks: Iterable[fl
     [[2, 1], [1, 0]]
     """
     columns = list(ks)
-    return [[barcode.persistent_betti(l, k, dim) for k in columns] for l in ls]
+    return [[barcode.persistent_betti(l, k, dim=dim) for k in columns] for l in ls]
 
 
 def barcode_definition_mismatches(barcode: Barcode, filtration: Filtration | Iterable[Any], *, ls: Iterable[float],
@@ -171,7 +171,7 @@ def barcode_definition_mismatches(barcode: Barcode, filtration: Filtration | Ite
     Parameters
     ----------
     barcode : Barcode
-        The barcode whose bars are counted; its field ``barcode.p`` (Z/2 when unknown) is the field of
+        The barcode whose bars are counted; its field ``barcode.coefficients`` (Z/2 when unknown) is the field of
         the ranks.
     filtration : Filtration or iterable of (simplex, value) pairs
         The filtration whose ranks are computed.
@@ -201,13 +201,13 @@ def barcode_definition_mismatches(barcode: Barcode, filtration: Filtration | Ite
     (30, 0)
     """
     K = as_complex(filtration)
-    p = barcode.p or 2
+    p = barcode.coefficients or 2
     cases = [(float(l), float(k), int(d)) for l in ls for k in ks for d in dims]
     if squared_values:
         ranks = [persistent_betti_by_definition(K, l * l, (l + k) ** 2 - l * l, d, coefficients=p) for l, k, d in cases]
     else:
         ranks = [persistent_betti_by_definition(K, l, k, d, coefficients=p) for l, k, d in cases]
-    bad = sum(barcode.persistent_betti(l, k, d) != rank for (l, k, d), rank in zip(cases, ranks))
+    bad = sum(barcode.persistent_betti(l, k, dim=d) != rank for (l, k, d), rank in zip(cases, ranks))
     return len(cases), int(bad)
 
 

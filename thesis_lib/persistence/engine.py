@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from .._core import explicit_cohomology
-from .._validate import Field, parse_field
+from .._validate import Field, check_min_persistence, parse_field
 from ..filtration import Filtration, as_complex
 from .barcode import Barcode
 from .kernels import KEEP_V, reduce_columns
@@ -58,8 +58,8 @@ def _coboundary_matrix(K, d: int, up_values: np.ndarray):
 
 
 # ---------------------------------------------------------------------------- driver
-def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None = None, *,
-                stats: dict[int, dict[str, int]] | None = None) -> Barcode:
+def persistence(filtration: Filtration | Iterable[Any], *, coefficients: int | None = None,
+                stats: dict[int, dict[str, int]] | None = None, min_persistence: float = 0.0) -> Barcode:
     """Barcode of a filtration over Z/p by the fast engine (same result as :func:`compute_intervals`).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).
@@ -74,6 +74,9 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     stats : dict, optional
         Filled per dimension d < dim K with ``{"columns": ..., "additions": ...}`` (columns of the
         reduction after clearing, column additions).
+    min_persistence : float
+        Intervals with ``death − birth <= min_persistence`` are left out (default 0: only the
+        zero-length ones); e.g. 1e-12 drops the bars of length ~1e-16 that tied distances give.
 
     Returns
     -------
@@ -109,10 +112,12 @@ def persistence(filtration: Filtration | Iterable[Any], coefficients: int | None
     >>> persistence(rips(square, max_dim=2)).intervals(1).tolist()
     [[0.5, 0.7071067811865476]]
     """
-    return filtration_barcode(as_complex(filtration), parse_field(coefficients, default=2, field=True), stats=stats)
+    K, field = as_complex(filtration), parse_field(coefficients, default=2, field=True)
+    return filtration_barcode(K, field, stats=stats, min_persistence=check_min_persistence(min_persistence))
 
 
-def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str, int]] | None = None) -> Barcode:
+def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str, int]] | None = None,
+                       min_persistence: float = 0.0) -> Barcode:
     """:func:`persistence` on parsed input: a non-empty :class:`~thesis_lib.filtration.Filtration`
     and a parsed prime field (the loops that take many barcodes of one complex call this).
 
@@ -126,6 +131,8 @@ def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str
         The parsed coefficients, a prime.
     stats : dict, optional
         Filled as by :func:`persistence`.
+    min_persistence : float
+        The checked ``min_persistence`` of :func:`persistence`.
 
     Returns
     -------
@@ -163,7 +170,8 @@ def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str
     empty = np.empty(0, dtype=np.int64)
     if D == 0:
         finish(0, empty, empty, np.arange(K.simplices[0].shape[0]))
-        return Barcode(intervals, [0], p=field, simplices=pairs, filtration=K, killers=killers)
+        return Barcode(intervals, dimensions=[0], coefficients=field, simplices=pairs, filtration=K, killers=killers,
+                       min_persistence=min_persistence)
     # ---- H0 by union-find (the pairs Reduce finds on the edge columns)
     vrank = np.empty(K.simplices[0].shape[0], dtype=np.int64)
     vrank[orders[0]] = np.arange(orders[0].shape[0])
@@ -195,6 +203,7 @@ def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str
     # often millions of classes of a truncated complex, which nobody reads)
     essential_top = {D: (K.values[D], ~cleared)}
     return Barcode(
-        intervals, range(D + 1), p=field, simplices=pairs, filtration=K, killers=killers, essential=essential_top,
-        complete=range(D if getattr(K, "truncated", False) else D + 1),
+        intervals, dimensions=range(D + 1), coefficients=field, simplices=pairs, filtration=K, killers=killers,
+        essential=essential_top,
+        complete=range(D if getattr(K, "truncated", False) else D + 1), min_persistence=min_persistence,
     )

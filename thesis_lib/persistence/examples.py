@@ -221,7 +221,7 @@ def matrix_agreement(trace: list[dict[str, Any]], printed: Mapping[str, Mapping[
     deg = [r["value"] for r in trace]
 
     def position(name: str) -> tuple[int, int]:
-        ((simplex, sign),) = named_chain({name: 1}, names).items()
+        ((simplex, sign),) = named_chain({name: 1}, names=names).items()
         if simplex not in index:
             raise ValueError(f"{name!r} is not a simplex of the traced filtration")
         return index[simplex], sign
@@ -295,9 +295,9 @@ def cycle_check(barcode: Barcode, terms: Mapping[str, int], *, names: str, dim: 
     K = barcode.filtration
     if K is None:
         raise ValueError("the barcode must be computed from a filtration")
-    p = barcode.p or 2
+    p = barcode.coefficients or 2
     value_of = {tuple(map(int, s)): float(v) for s, v in zip(K.simplices[dim], K.values[dim])}
-    z = named_chain(terms, names)
+    z = named_chain(terms, names=names)
     if any(s not in value_of for s in z):
         raise ValueError(f"a simplex of {dict(terms)} is not in the filtration")
     simplices = sorted(z)

@@ -69,6 +69,7 @@ from .._validate import (
     Points,
     check_int,
     check_max_dim,
+    check_min_persistence,
     check_radius,
     parse_field,
     parse_rips_input,
@@ -118,6 +119,11 @@ def rips_graph(
     lengths : numpy.ndarray of float64
         The distances, parallel to ``neighbours``.
 
+    Warns
+    -----
+    UserWarning
+        ``points`` that look like a distance matrix (as :func:`rips_persistence`).
+
     Raises
     ------
     ValueError
@@ -158,7 +164,7 @@ PARALLEL_MIN = 50_000
 def rips_persistence(
     points: npt.ArrayLike | None = None, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
     distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = None,
-    stats: dict[int, dict[str, int]] | None = None, n_threads: int | None = None,
+    stats: dict[int, dict[str, int]] | None = None, n_threads: int | None = None, min_persistence: float = 0.0,
 ) -> Barcode:
     """Barcode of the Vietoris–Rips filtration of ``points`` without building it (implicit engine).
 
@@ -168,7 +174,8 @@ def rips_persistence(
     Parameters
     ----------
     points : array_like, shape (n, d), optional
-        The point cloud; or give ``distance_matrix``.
+        The point cloud; or give ``distance_matrix``.  Duplicate points are allowed (each row is a
+        vertex, joined to its copies at 0: their H0 bars have length zero and are left out).
     max_radius : float
         Scale ε: simplices of diameter ≤ 2ε (the values are ε = diameter / 2, as
         :func:`~thesis_lib.complexes.rips`).
@@ -193,6 +200,10 @@ def rips_persistence(
         Threads for assembling the columns and finding the apparent pairs (used from about
         ``PARALLEL_MIN`` simplices of a dimension on); None: ``OMP_NUM_THREADS`` when set, else
         every core.  The barcode does not depend on it.
+    min_persistence : float
+        Intervals with ``death − birth <= min_persistence`` (in ε) are left out; default 0: only the
+        zero-length ones.  Tied distances give bars of length ~1e-16 that ripser.py (on float32
+        distances) does not report: 1e-12 drops them.
 
     Returns
     -------
@@ -201,13 +212,22 @@ def rips_persistence(
         dimensions 0 .. max_dim − 1 (zero-length intervals left out), to the last bit: the edges
         are :func:`~thesis_lib.complexes.rips`'s (distances computed on the points scaled by a
         power of two and scaled back exactly, so coordinates near 1e160 or 1e-170 are fine).
+        ``barcode.to_diagrams(scale="diameter")`` gives ripser.py's ``dgms`` (diameters 2ε).
+
+    Warns
+    -----
+    UserWarning
+        ``points`` square, symmetric, with a zero diagonal and no negative entry: it looks like a
+        distance matrix but is read as n points in R^n (ripser.py warns too); give a distance
+        matrix as ``distance_matrix=``.
 
     Raises
     ------
     ValueError
         ``max_dim`` below 1 or above ``MAX_DIM`` (10⁴; dimensions above
         the number of points are computed as the empty homology they are), a non-prime
-        ``coefficients``, ``n_threads`` below 1, or invalid points / distances.
+        ``coefficients``, ``n_threads`` below 1, a negative, infinite or NaN ``min_persistence``, or
+        invalid points / distances.
 
     Examples
     --------
@@ -222,12 +242,14 @@ def rips_persistence(
     field = parse_field(coefficients, default=2, field=True)
     threads = 0 if n_threads is None else check_int(n_threads, "n_threads", minimum=1)
     eps = check_radius(max_radius)
+    min_persistence = check_min_persistence(min_persistence)
     source = parse_rips_input(points, distance_matrix, sparse=True)
-    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads)
+    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads, min_persistence=min_persistence)
 
 
 def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim: int, field: Field, *,
-                 stats: dict[int, dict[str, int]] | None = None, n_threads: int = 0) -> Barcode:
+                 stats: dict[int, dict[str, int]] | None = None, n_threads: int = 0,
+                 min_persistence: float = 0.0) -> Barcode:
     """:func:`rips_persistence` on parsed input (the implicit engine's one entry point).
 
     Thesis: Definition 2.11 (Rips) and Theorem 2.39 (the pairs, by the dual reduction).
@@ -246,6 +268,8 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
         Filled as by :func:`rips_persistence`.
     n_threads : int
         Threads for assembling the columns; 0: ``OMP_NUM_THREADS`` when set, else every core.
+    min_persistence : float
+        The checked ``min_persistence`` of :func:`rips_persistence`.
 
     Returns
     -------
@@ -280,4 +304,4 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
         else:
             stats[k] = dict(zip(("simplices", "apparent", "columns", "emergent", "reduced", "additions", "entries",
                                  "enumerators"), (int(x) for x in counts)))
-    return Barcode(intervals, range(asked), p=field)
+    return Barcode(intervals, dimensions=range(asked), coefficients=field, min_persistence=min_persistence)

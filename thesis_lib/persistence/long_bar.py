@@ -136,7 +136,7 @@ def long_bar_summary(barcode: Barcode, *, dim: int = 1, min_length: float = 0.0,
     """
     iv = barcode.intervals(dim)
     positive = np.flatnonzero(iv[:, 1] - iv[:, 0] > min_length)
-    long_i = int(barcode.longest(dim, 1)[0]) if iv.shape[0] else -1
+    long_i = int(barcode.longest(dim, n=1)[0]) if iv.shape[0] else -1
     if long_i not in positive:
         raise ValueError(f"no bar of dimension {dim} is longer than min_length = {min_length}")
     lengths = iv[positive, 1] - iv[positive, 0]
@@ -156,7 +156,7 @@ def long_bar_summary(barcode: Barcode, *, dim: int = 1, min_length: float = 0.0,
         second_length=second,
         ratio=float(lengths.max() / second) if second else math.inf,
         last_noise_death=last_noise_death,
-        betti_once_noise_dies=barcode.betti(max(last_noise_death, birth), dim),
+        betti_once_noise_dies=barcode.betti(max(last_noise_death, birth), dim=dim),
         n_enclosing=None if enclosing is None else sum(enclosing.values()),
         encloses=None if enclosing is None else bool(enclosing[long_i]),
         short_enclosing=None if enclosing is None else sum(v for i, v in enclosing.items() if i != long_i),
@@ -193,5 +193,5 @@ def busiest_birth(barcode: Barcode, *, dim: int = 1) -> float:
     iv = barcode.intervals(dim)
     if iv.shape[0] == 0:
         raise ValueError(f"no interval in dimension {dim}")
-    alive = [barcode.betti(b, dim) for b in iv[:, 0]]
+    alive = [barcode.betti(b, dim=dim) for b in iv[:, 0]]
     return float(iv[int(np.argmax(alive)), 0])

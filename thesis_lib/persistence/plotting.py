@@ -51,8 +51,8 @@ def _right_edge(barcode: Barcode, dims: list[int], max_value: float | None) -> f
 
 def plot_barcode(
     barcode: Barcode,
-    dims: Sequence[int] | None = None,
     *,
+    dims: Sequence[int] | None = None,
     axes: Axes | Sequence[Axes] | None = None,
     max_value: float | None = None,
     min_length: float = 0.0,
@@ -165,8 +165,8 @@ def plot_barcode(
 
 def plot_diagram(
     barcode: Barcode,
-    dims: Sequence[int] | None = None,
     *,
+    dims: Sequence[int] | None = None,
     ax: Axes | None = None,
     max_value: float | None = None,
     title: str | None = None,
@@ -276,7 +276,7 @@ def plot_long_bar(points: npt.ArrayLike, barcode: Barcode, *, index: int | None 
     from ..graphics.style import COLORS
 
     pts = np.asarray(points, dtype=float)
-    i = int(barcode.longest(dim, 1)[0]) if index is None else int(index)
+    i = int(barcode.longest(dim, n=1)[0]) if index is None else int(index)
     cycle = barcode.representative(dim, i)
     fig, axes = plt.subplots(1, 3, figsize=(7.2, 2.7), gridspec_kw={"width_ratios": [1, 1.2, 1]})
     ax = axes[0]

@@ -11,7 +11,7 @@ from .barcode import Barcode
 __all__ = ["long_bars", "long_betti"]
 
 
-def long_bars(barcode: Barcode, dim: int, min_length: float) -> np.ndarray:
+def long_bars(barcode: Barcode, *, dim: int, min_length: float) -> np.ndarray:
     """The intervals of ``dim`` whose length is at least ``min_length`` (infinite ones included).
 
     Thesis: §2.3 (a feature that persists for a significant filtration time is "real"; short
@@ -42,7 +42,7 @@ def long_bars(barcode: Barcode, dim: int, min_length: float) -> np.ndarray:
     return iv[(iv[:, 1] - iv[:, 0]) >= min_length]
 
 
-def long_betti(barcode: Barcode, min_length: float, dims: Iterable[int] | None = None) -> list[int]:
+def long_betti(barcode: Barcode, *, min_length: float, dims: Iterable[int] | None = None) -> list[int]:
     """Number of long bars in each dimension (``dims`` default: all computed ones).
 
     Thesis: §2.4 (Betti numbers read off a barcode as its long bars, e.g. β = (1, 3) for two circles).
@@ -62,4 +62,4 @@ def long_betti(barcode: Barcode, min_length: float, dims: Iterable[int] | None =
         The number of long bars of each dimension of ``dims``, in that order.
     """
     dims = barcode.dimensions if dims is None else dims
-    return [int(long_bars(barcode, d, min_length).shape[0]) for d in dims]
+    return [int(long_bars(barcode, dim=d, min_length=min_length).shape[0]) for d in dims]

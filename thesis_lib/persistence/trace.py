@@ -80,7 +80,7 @@ def trace_tables(trace: Trace, *, coefficients: int, names: str | None = None) -
     [['', 'a', 'b', 'ab'], ['a', '0', '0', '$-t^{2}$'], ['b', '0', '0', '$t^{2}$'], ['ab', '0', '0', '0']]
     """
     _check_trace(trace)
-    before, after = trace_matrices(trace, coefficients, names=names)
+    before, after = trace_matrices(trace, coefficients=coefficients, names=names)
     return _as_math(before), _as_math(after)
 
 

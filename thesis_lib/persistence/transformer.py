@@ -6,7 +6,8 @@ a list of point clouds to their Vietoris–Rips persistence diagrams (the implic
 clouds).  It has ``get_params``/``set_params`` like any scikit-learn estimator, so
 ``sklearn.base.clone``, ``Pipeline`` and grid searches accept it, but scikit-learn is not needed to
 use it.  Diagrams are in the ripser/persim format (one ``(m, 2)`` array per dimension) with this
-library's values: ε, half the diameter (ripser reports 2ε).
+library's values, ε, half the diameter, or with ``scale="diameter"`` ripser's and giotto-ph's 2ε;
+``homology_dimensions`` chooses the dimensions as giotto-ph's ``VietorisRipsPersistence`` does.
 """
 
 from __future__ import annotations
@@ -17,7 +18,18 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import Field, InvalidTypeError, check_max_dim, check_radius, parse_field, parse_points
+from .._validate import (
+    MAX_DIM,
+    Field,
+    InvalidTypeError,
+    check_int,
+    check_max_dim,
+    check_min_persistence,
+    check_radius,
+    check_scale,
+    parse_field,
+    parse_points,
+)
 from .implicit import rips_barcode
 
 __all__ = ["RipsDiagrams"]
@@ -38,12 +50,35 @@ class RipsDiagrams:
         complete ones).
     coefficients : int, default 2
         A prime p: homology over Z/p.
+    homology_dimensions : iterable of int, optional
+        The homology dimensions computed and returned, as giotto-ph's (e.g. ``(0, 1)``, or ``(1,)``
+        alone); the complex is then built up to ``max_dim = max(homology_dimensions) + 1`` (a
+        ``max_dim`` other than its default that disagrees is refused).  None: 0 .. max_dim − 1.
+    scale : {"epsilon", "radius", "diameter"}, default "epsilon"
+        The values of the diagrams: ε (the thesis's; "radius" is the same), or ``"diameter"``, 2ε,
+        ripser.py's and giotto-ph's (as :meth:`Barcode.to_diagrams`).
+    min_persistence : float, default 0.0
+        Points with ``death − birth <= min_persistence`` (in the values returned, after ``scale``)
+        are left out; 0: only the zero-length ones.  1e-12 drops the bars of length ~1e-16 that
+        tied distances give (ripser.py, on float32 distances, does not report them).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    >>> RipsDiagrams(homology_dimensions=(1,), scale="diameter").fit_transform([square])[0][0].tolist()
+    [[1.0, 1.4142135623730951]]
     """
 
-    def __init__(self, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2) -> None:
+    def __init__(self, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
+                 homology_dimensions: Iterable[int] | None = None, scale: str = "epsilon",
+                 min_persistence: float = 0.0) -> None:
         self.max_radius = max_radius
         self.max_dim = max_dim
         self.coefficients = coefficients
+        self.homology_dimensions = homology_dimensions
+        self.scale = scale
+        self.min_persistence = min_persistence
 
     def get_params(self, deep: bool = True) -> dict[str, Any]:
         """The constructor's parameters, as scikit-learn's ``BaseEstimator.get_params``.
@@ -56,9 +91,12 @@ class RipsDiagrams:
         Returns
         -------
         dict
-            ``{"max_radius": ..., "max_dim": ..., "coefficients": ...}``.
+            ``{"max_radius": ..., "max_dim": ..., "coefficients": ..., "homology_dimensions": ...,
+            "scale": ..., "min_persistence": ...}``.
         """
-        return {"max_radius": self.max_radius, "max_dim": self.max_dim, "coefficients": self.coefficients}
+        return {"max_radius": self.max_radius, "max_dim": self.max_dim, "coefficients": self.coefficients,
+                "homology_dimensions": self.homology_dimensions, "scale": self.scale,
+                "min_persistence": self.min_persistence}
 
     def set_params(self, **params: Any) -> RipsDiagrams:
         """Set constructor parameters by name, as scikit-learn's ``BaseEstimator.set_params``.
@@ -66,7 +104,8 @@ class RipsDiagrams:
         Parameters
         ----------
         **params : Any
-            New values of ``max_radius``, ``max_dim`` or ``coefficients``.
+            New values of ``max_radius``, ``max_dim``, ``coefficients``, ``homology_dimensions``,
+            ``scale`` or ``min_persistence``.
 
         Returns
         -------
@@ -99,18 +138,30 @@ class RipsDiagrams:
         Raises
         ------
         ValueError
-            On an invalid ``max_radius``, ``max_dim`` (below 1) or ``coefficients`` (not a prime).
+            On an invalid ``max_radius``, ``max_dim`` (below 1), ``coefficients`` (not a prime),
+            ``homology_dimensions`` (empty, negative, or disagreeing with ``max_dim``), ``scale`` or
+            ``min_persistence``.
         """
         self._parameters()
         return self
 
-    def _parameters(self) -> tuple[float, int, Field]:
-        """The parameters parsed: (ε, max_dim, field), or the ValueError naming the bad one."""
+    def _parameters(self) -> tuple[float, int, Field, tuple[int, ...]]:
+        """The parameters parsed: (ε, max_dim, field, the homology dimensions returned), or the
+        ValueError naming the bad one."""
         eps = check_radius(self.max_radius)
-        max_dim = check_max_dim(self.max_dim)
-        if max_dim < 1:
-            raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
-        return eps, max_dim, parse_field(self.coefficients, field=True)
+        max_dim = check_max_dim(self.max_dim, maximum=MAX_DIM)
+        field = parse_field(self.coefficients, field=True)
+        check_scale(self.scale)
+        check_min_persistence(self.min_persistence)
+        if self.homology_dimensions is None:
+            if max_dim < 1:
+                raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
+            return eps, max_dim, field, tuple(range(max_dim))
+        dims = _homology_dimensions(self.homology_dimensions)
+        if max_dim not in (2, dims[-1] + 1):  # 2: max_dim left at its default
+            raise ValueError(f"max_dim={max_dim} and homology_dimensions={self.homology_dimensions!r} disagree: H"
+                             f"{dims[-1]} needs max_dim={dims[-1] + 1} (give homology_dimensions alone)")
+        return eps, dims[-1] + 1, field, dims
 
     def transform(self, X: Iterable[npt.ArrayLike]) -> list[list[np.ndarray]]:
         """The persistence diagrams of each point cloud.
@@ -118,20 +169,28 @@ class RipsDiagrams:
         Parameters
         ----------
         X : iterable of array_like, each of shape (n_i, d)
-            Point clouds (finite, no duplicate points).
+            Point clouds (finite).  Duplicate points are allowed: each row is a vertex, joined to its
+            copies at 0 (their H0 bars have length zero and are left out).
 
         Returns
         -------
         list of list of ndarray
-            For each cloud, ``max_dim`` arrays of shape (m, 2): the (birth, death) pairs of dimensions
-            0 .. max_dim − 1 (``inf`` for essential classes), as ``Barcode.to_diagrams``.
+            For each cloud, one array of shape (m, 2) per homology dimension (0 .. max_dim − 1, or
+            the sorted ``homology_dimensions``): the (birth, death) pairs (``inf`` for essential
+            classes) in ``scale``'s values, as ``Barcode.to_diagrams``.
+
+        Warns
+        -----
+        UserWarning
+            A cloud square, symmetric, with a zero diagonal and no negative entry: it looks like a
+            distance matrix but is read as n points in R^n (ripser.py warns too).
 
         Raises
         ------
         ValueError
             On invalid parameters or an invalid point cloud (the message names the cloud).
         """
-        eps, max_dim, field = self._parameters()
+        eps, max_dim, field, dims = self._parameters()
         if X is None or isinstance(X, (str, bytes)) or not isinstance(X, Iterable):
             raise InvalidTypeError(f"X must be a list of point clouds, got {type(X).__name__}")
         if isinstance(X, np.ndarray) and X.ndim == 2:
@@ -139,10 +198,11 @@ class RipsDiagrams:
         out = []
         for i, cloud in enumerate(X):
             try:
-                barcode = rips_barcode(parse_points(cloud), eps, max_dim, field)
+                barcode = rips_barcode(parse_points(cloud, warn_square=True), eps, max_dim, field)
             except ValueError as err:
                 raise ValueError(f"point cloud {i}: {err}") from None
-            out.append(barcode.to_diagrams(range(max_dim)))
+            diagrams = barcode.to_diagrams(dims=range(max_dim), scale=self.scale, min_persistence=self.min_persistence)
+            out.append([diagrams[k] for k in dims])
         return out
 
     def fit_transform(self, X: Iterable[npt.ArrayLike], y: Any = None) -> list[list[np.ndarray]]:
@@ -165,3 +225,13 @@ class RipsDiagrams:
     def __repr__(self) -> str:
         args = ", ".join(f"{k}={v!r}" for k, v in self.get_params().items())
         return f"RipsDiagrams({args})"
+
+
+def _homology_dimensions(dims) -> tuple[int, ...]:
+    """``homology_dimensions`` as a sorted tuple of distinct integers in 0 .. MAX_DIM − 1 (not empty)."""
+    if isinstance(dims, (str, bytes)) or not isinstance(dims, Iterable):
+        raise InvalidTypeError(f"homology_dimensions must be an iterable of integers, got {dims!r}")
+    out = tuple(sorted({check_int(d, "a homology dimension", minimum=0, maximum=MAX_DIM - 1) for d in dims}))
+    if not out:
+        raise ValueError("homology_dimensions is empty")
+    return out
