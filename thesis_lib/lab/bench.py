@@ -29,7 +29,11 @@ __all__ = ["topics", "load", "meta", "markdown", "header", "ratios", "fit_expone
 
 #: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
 PEERS = {"ripser": "ripser.py", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
-         "libigl": "libigl", "pari": "PARI", "sympy": "sympy", "ball_pivoting": "ball pivoting"}
+         "libigl": "libigl", "pari": "PARI", "sympy": "sympy", "ball_pivoting": "ball pivoting",
+         "ripser12_whole": "Ripser 1.2, whole process", "ripser12_warm": "Ripser 1.2 (our warm call)",
+         "ripserpy_whole": "ripser.py, whole process", "ripserpy_warm": "ripser.py, warm",
+         "giotto_1t_whole": "giotto-ph 1 thread, whole process", "giotto_1t_warm": "giotto-ph 1 thread, warm",
+         "giotto_2t_whole": "giotto-ph 2 threads, whole process", "giotto_2t_warm": "giotto-ph 2 threads, warm"}
 
 
 #: other row-key stems as headers say them (``<stem>_s``, ``<stem>_mb``, ``ratio_<stem>``)
