@@ -429,7 +429,9 @@ def sweep(
     if not owned:
         bundle = data_bundle()
         if client is not None:
-            bundle = client.scatter(bundle, broadcast=True)
+            # One future under a fresh key: a dict would be scattered value by value under its own keys
+            # ("files"), which a previous sweep's release of the same keys can delete under this one.
+            [bundle] = client.scatter([bundle], broadcast=True, hash=False)
     pending: dict[cf.Future, int] = {}
     try:
         for i in todo:
