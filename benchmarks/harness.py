@@ -34,7 +34,9 @@ benchmark follows these rules, and this module gives one function for each:
     2-core machine).  Contract for a benchmark script, so that it can be checked: it accepts
     ``--quick`` and ``--output FILE``; its quick cases are also full cases (same ``case`` name);
     every time ratio it stores is a key starting with ``ratio`` (median of paired ratios, ours /
-    peer; below 1 means we are faster).
+    peer; below 1 means we are faster).  A row may add ``noise_floor``: the smallest move of its
+    ratios that its timings can resolve (in the ratio's units, e.g. fresh-process noise over the
+    peer's time); a move within the larger of the two rows' floors is not a move.
 
 **One timed call per fresh process** — :func:`run_worker` (parent) and :func:`measure_rss` (child),
     for tools that must not share a process (``bench_homology``: PARI, GUDHI and ours, each in
@@ -307,14 +309,18 @@ def ratio_moves(stored: Sequence[Mapping], fresh: Sequence[Mapping]) -> list[tup
 def ratio_changes(stored: Sequence[Mapping], fresh: Sequence[Mapping], tolerance: float = TOLERANCE) -> list[str]:
     """Problems found by ``make bench-check``: every ``ratio*`` value of each fresh row against the
     stored row of the same ``case``; a move beyond ``tolerance`` (relative), a fresh case without a
-    stored row, or a stored ratio missing from the fresh row."""
+    stored row, or a stored ratio missing from the fresh row.  A move within the rows' ``noise_floor``
+    (absolute, the larger of the stored and the fresh one) is not counted."""
     cases = {r.get("case") for r in stored}
     problems = [f"{row.get('case')}: no stored result for this quick case" for row in fresh
                 if row.get("case") not in cases]
+    floors = {r.get("case"): r.get("noise_floor", 0.0) for r in stored}
+    for row in fresh:
+        floors[row.get("case")] = max(floors.get(row.get("case"), 0.0), row.get("noise_floor", 0.0))
     for case, key, value, ref in _ratio_pairs(stored, fresh):
         if ref is None:
             problems.append(f"{case}: {key} = {value:.3g} has no stored figure")
-        elif abs(value / ref - 1.0) > tolerance:
+        elif abs(value / ref - 1.0) > tolerance and abs(value - ref) > floors[case]:
             problems.append(f"{case}: {key} moved {value / ref - 1.0:+.0%} (stored {ref:.3g}, now {value:.3g})")
     return problems
 

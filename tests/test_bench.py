@@ -119,6 +119,11 @@ def test_results_carry_provenance_and_ratio_changes_are_caught(tmp_path):
     assert len(moved) == 1 and "ratio_ripser moved +40%" in moved[0]
     assert "no stored result" in h.ratio_changes(stored, [{"case": "d", "ratio_ripser": 1.0}])[0]
     assert "no stored figure" in h.ratio_changes(stored, [{"case": "c", "ratio_new": 1.0}])[0]
+    near_zero = [{"case": "c", "ratio_ripser": 0.04, "noise_floor": 0.05}]  # a difference at process noise
+    assert h.ratio_changes(near_zero, [{"case": "c", "ratio_ripser": 0.08}]) == []
+    assert h.ratio_changes([{"case": "c", "ratio_ripser": 0.04}], [{"case": "c", "ratio_ripser": 0.08,
+                                                                     "noise_floor": 0.03}])[0].endswith("now 0.08)")
+    assert h.ratio_changes(near_zero, [{"case": "c", "ratio_ripser": 0.1}])  # beyond the floor: a move
     assert h.ratio_moves(stored, [{"case": "c", "ratio_ripser": 1.4, "ratio_new": 2.0, "n": 3}]) == [
         ("c", "ratio_ripser", 1.0, 1.4)]
 
