@@ -32,3 +32,18 @@ def test_markdown_headers_are_opt_in(tmp_path, monkeypatch):
     assert bench.markdown("x", columns=columns, headers={"ours_mb": "memory (MB)"}).splitlines()[0].endswith(
         "| memory (MB) |")
     assert bench.markdown("x", columns=columns, headers=True).splitlines()[2] == "| a | 0.5 | 1 | 0.5 | 3 |"
+
+
+def test_markdown_rows_by_values_and_digits(tmp_path, monkeypatch):
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
+    (tmp_path / "benchmarks" / "results").mkdir(parents=True)
+    rows = [{"case": "a", "topic": "t1", "ours_s": 0.123456}, {"case": "b", "topic": "t2", "ours_s": 2.0},
+            {"case": "c", "topic": "t1", "ours_s": 3.0}]
+    (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))
+    table = bench.markdown("x", columns=["case", "ours_s"], where={"topic": "t1"}).splitlines()
+    assert table[2:] == ["| a | 0.123 |", "| c | 3 |"]
+    by_predicate = bench.markdown("x", columns=["case", "ours_s"], where=lambda r: r["topic"] == "t1")
+    assert by_predicate.splitlines() == table
+    assert bench.markdown("x", columns=["case", "ours_s"], where={"topic": "t1", "case": "a"},
+                          digits=2).splitlines()[2:] == ["| a | 0.12 |"]
+    assert "No stored rows" in bench.markdown("x", where={"topic": "t3"})

@@ -189,8 +189,8 @@ def provenance(topic: str) -> str:
 
 
 def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] | None = None,
-             where: Callable[[dict], bool] | None = None,
-             headers: bool | Mapping[str, str] = False) -> str:
+             where: Callable[[dict], bool] | Mapping[str, object] | None = None,
+             headers: bool | Mapping[str, str] = False, digits: int = 3) -> str:
     """One benchmark as a Markdown table.
 
     Parameters
@@ -201,17 +201,20 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
         The columns, in order; by default every scalar (not list or dict) column, in first-seen order.
     cases : list of str, optional
         Only the rows whose ``case`` is one of these (those stored); by default every row.
-    where : callable, optional
-        A predicate on a row (a dict): only the rows it accepts.
+    where : callable or mapping, optional
+        A predicate on a row (a dict): only the rows it accepts; or a mapping of columns to values:
+        only the rows that hold these values.
     headers : bool or mapping, default False
         False: the row keys are the headers; True: :func:`header` of each key; a mapping: its
         headers for the keys it names and :func:`header` for the others.
+    digits : int, default 3
+        Significant digits of float cells.
 
     Returns
     -------
     str
-        The Markdown table (floats to 3 significant digits, missing cells empty), ending with a
-        newline; an italic line saying so when no row is left.
+        The Markdown table (floats to ``digits`` significant digits, missing cells empty), ending
+        with a newline; an italic line saying so when no row is left.
 
     Raises
     ------
@@ -220,8 +223,12 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
     FileNotFoundError
         If no results of ``topic`` are stored.
     """
-    rows = [r for r in load(topic)
-            if (cases is None or r.get("case") in cases) and (where is None or where(r))]
+    def kept(row: dict) -> bool:
+        if isinstance(where, Mapping):
+            return all(row.get(k) == v for k, v in where.items())
+        return where is None or where(row)
+
+    rows = [r for r in load(topic) if (cases is None or r.get("case") in cases) and kept(r)]
     if not rows:
         return f"*No stored rows of `{topic}` for the cases {', '.join(cases or [])}: run `make bench`.*\n"
     if columns is None:
@@ -236,7 +243,7 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
     if headers is not False:
         given = headers if isinstance(headers, Mapping) else {}
         names = [given.get(c) or header(c) for c in columns]
-    return markdown_table(names, ([r.get(c) for c in columns] for r in rows), digits=3)
+    return markdown_table(names, ([r.get(c) for c in columns] for r in rows), digits=digits)
 
 
 def targets(specs: Sequence[Mapping[str, Any]]) -> str:

@@ -17,8 +17,11 @@ from .invariants import check_grid, fibered_barcode
 if TYPE_CHECKING:  # matplotlib is imported only when drawing
     from matplotlib.axes import Axes
     from matplotlib.collections import QuadMesh
+    from matplotlib.figure import Figure
 
-__all__ = ["plot_hilbert", "line_fan", "plot_fibered_barcodes"]
+__all__ = ["plot_hilbert", "plot_hilbert_functions", "line_fan", "plot_fibered_barcodes"]
+
+SUBSCRIPTS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def plot_hilbert(ax: Axes, values: npt.ArrayLike, radii: npt.ArrayLike, curvatures: npt.ArrayLike, *, label: str = "",
@@ -79,6 +82,66 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, radii: npt.ArrayLike, curvatur
         cb = ax.figure.colorbar(mesh, ax=ax, ticks=range(top + 1), fraction=0.05, pad=0.03)
         cb.ax.set_title(label, fontsize=9)
     return mesh
+
+
+def plot_hilbert_functions(values: Sequence[npt.ArrayLike], radii: npt.ArrayLike, curvatures: npt.ArrayLike, *,
+                           dims: Sequence[int] = (0, 1), vmax: int | None = None,
+                           figsize: tuple[float, float] = (7.0, 3.0)) -> Figure:
+    """One heat map per homology dimension, side by side, the κ values as labelled rows ``κ ≤ κ_j``.
+
+    The rows are drawn one per grid value, evenly (curvature grids such as 0.5, 1, 5, 10 are far
+    from even), each labelled with its bound.
+
+    Thesis: Chapter 5 (dim H_k(K_{ε,κ}) for each pair (ε, κ)).
+
+    Parameters
+    ----------
+    values : sequence of array_like of int
+        ``values[k]`` of shape (len(radii), len(curvatures)): the Hilbert function of H_k, as
+        :func:`~thesis_lib.multiparameter.hilbert_function` returns them.
+    radii, curvatures : array_like
+        The grid axes (strictly increasing).
+    dims : sequence of int, default (0, 1)
+        The homology dimensions to draw, one panel each.
+    vmax : int, optional
+        Values above it are drawn as ``vmax`` (the colour scale ends there); default: no cap.
+    figsize : (float, float), default (7.0, 3.0)
+        The figure size in inches.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure, one panel per dimension.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed (the ``[plot]`` extra).
+    ValueError
+        A dimension not in ``values``, a bad grid, or values of the wrong shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> hf = [np.ones((3, 2), dtype=int), np.zeros((3, 2), dtype=int)]
+    >>> fig = plot_hilbert_functions(hf, [0.0, 0.5, 1.0], [1.0, 5.0], vmax=2)
+    >>> [ax.get_title() for ax in fig.axes[:2]]  # the panels, then their colour bars
+    ['dim H₀', 'dim H₁']
+    """
+    plt = require("matplotlib.pyplot", extra="plot", purpose="plotting Hilbert functions")
+    curvatures = check_grid(curvatures, name="curvatures")
+    missing = [d for d in dims if not 0 <= d < len(values)]
+    if missing:
+        raise ValueError(f"dims {missing} are not in values (dimensions 0 .. {len(values) - 1})")
+    rows = np.arange(curvatures.size)
+    fig, axes = plt.subplots(1, len(dims), figsize=figsize, gridspec_kw={"wspace": 0.55}, squeeze=False)
+    for ax, d in zip(axes[0], dims):
+        shown = np.asarray(values[d]) if vmax is None else np.minimum(values[d], vmax)
+        name = str(d).translate(SUBSCRIPTS)
+        plot_hilbert(ax, shown, radii, rows, label=f"β{name}", vmax=vmax, ylabel="")
+        ax.set_yticks(rows + 0.5, [f"κ ≤ {k:g}" for k in curvatures])
+        ax.set_title(f"dim H{name}")
+    return fig
 
 
 def line_fan(bounds: npt.ArrayLike, *, n_lines: int = 5, base: npt.ArrayLike | None = None,
