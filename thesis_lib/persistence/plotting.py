@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._optional import require
+from ._diagrams import parse_diagrams
 from .barcode import Barcode
 
 if TYPE_CHECKING:
@@ -41,16 +42,46 @@ def _dims(barcode: Barcode, dims: Sequence[int] | None) -> list[int]:
     return [int(d) for d in dims]
 
 
-def _right_edge(barcode: Barcode, dims: list[int], max_value: float | None) -> float:
+def _diagrams_to_draw(data: Barcode | npt.ArrayLike | Sequence[npt.ArrayLike],
+                      dims: Sequence[int] | None) -> dict[int, np.ndarray]:
+    """Homology dimension -> its ``(k, 2)`` intervals, for each dimension to draw, in order.
+
+    A Barcode gives its intervals (default: its complete dimensions); a list of diagrams (ripser's
+    ``dgms``) gives ``dgms[d]`` for each of ``dims`` (default: all); a single diagram is one
+    dimension, ``dims[0]`` if given (default 0).  An empty array or list is one empty diagram.
+    """
+    if isinstance(data, Barcode):
+        return {d: data.intervals(d) for d in _dims(data, dims)}
+    diagrams, single = parse_diagrams(data, "diagram")
+    if dims is not None:
+        from .._validate import check_int
+
+        dims = [check_int(d, "a dimension of dims", minimum=0) for d in dims]
+        if not dims:
+            raise ValueError("no homology dimension to plot")
+    if single:
+        if dims is not None and len(dims) != 1:
+            raise ValueError(f"one diagram was given: dims names its one dimension, got {len(dims)} dimensions")
+        return {dims[0] if dims else 0: diagrams[0]}
+    if dims is None:
+        return dict(enumerate(diagrams))
+    missing = [d for d in dims if d >= len(diagrams)]
+    if missing:
+        raise ValueError(f"no diagram for dimension {missing[0]}: {len(diagrams)} diagrams given (0 .. "
+                         f"{len(diagrams) - 1})")
+    return {d: diagrams[d] for d in dims}
+
+
+def _right_edge(diagrams: Mapping[int, np.ndarray], max_value: float | None) -> float:
     if max_value is not None:
         return float(max_value)
-    finite = [v for d in dims for v in barcode.intervals(d).ravel() if np.isfinite(v)]
+    finite = [v for iv in diagrams.values() for v in iv.ravel() if np.isfinite(v)]
     top = max(finite) if finite else 1.0
     return top + 0.15 * (top - min(finite + [0.0]) or 1.0)
 
 
 def plot_barcode(
-    barcode: Barcode,
+    barcode: Barcode | npt.ArrayLike | Sequence[npt.ArrayLike],
     *,
     dims: Sequence[int] | None = None,
     axes: Axes | Sequence[Axes] | None = None,
@@ -67,10 +98,15 @@ def plot_barcode(
 
     Parameters
     ----------
-    barcode : Barcode
-        The barcode to draw.
+    barcode : Barcode, array_like of shape (n, 2), or list of them
+        The bars: a :class:`Barcode`; one persistence diagram, an ``(n, 2)`` array of
+        ``(birth, death)`` (``death = inf`` for an essential class); or a list of diagrams, one per
+        homology dimension (ripser.py's ``dgms``).  An empty array or an empty list is one empty
+        diagram (a panel without bars).  Arrays are drawn as they are (no scale is applied).
     dims : sequence of int, optional
-        Dimensions to draw (default: the complete ones), one panel each, top to bottom.
+        Dimensions to draw, one panel each, top to bottom.  Default: a Barcode's complete
+        dimensions, every diagram of a list; for a single diagram, ``dims=[k]`` names its
+        dimension (default 0).
     axes : matplotlib Axes or sequence of Axes, optional
         One axes per dimension to draw into; a new figure otherwise.
     max_value : float, optional
@@ -98,22 +134,36 @@ def plot_barcode(
     ------
     ImportError
         If matplotlib is not installed (the ``[plot]`` extra).
+    TypeError
+        ``barcode`` is neither a Barcode nor diagrams of numbers (a dict, a string, a list mixing
+        rows and diagrams); a non-integer in ``dims``.
     ValueError
-        No dimension to draw, a negative ``min_length`` or ``min_fraction``, more than ``max_bars``
-        bars, or a number of ``axes`` other than of ``dims``.
+        No dimension to draw, a diagram that is not ``(n, 2)``, a NaN, an infinite birth, a death
+        before its birth, a dimension of ``dims`` without a diagram (or more than one for a single
+        diagram), a negative ``min_length`` or ``min_fraction``, more than ``max_bars`` bars, or a
+        number of ``axes`` other than of ``dims``.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> dgms = [np.array([[0.0, 1.0], [0.0, np.inf]]), np.array([[0.4, 0.9]])]  # ripser.py's format
+    >>> fig = plot_barcode(dgms, min_fraction=0)
+    >>> [len(ax.collections) for ax in fig.axes]  # one horizontal bar each; the essential one ends in an arrow
+    [2, 1]
+    >>> plt.close(fig)
     """
     plt = require("matplotlib.pyplot", extra="plot", purpose="plotting barcodes")
 
-    dims = _dims(barcode, dims)
+    diagrams = _diagrams_to_draw(barcode, dims)
+    dims = list(diagrams)
     for name, value in (("min_length", min_length), ("min_fraction", min_fraction)):
         if not value >= 0:
             raise ValueError(f"{name} must be >= 0, got {value}")
-    right = _right_edge(barcode, dims, max_value)
-    lowest = min([0.0] + [float(barcode.intervals(d)[:, 0].min()) for d in dims if barcode.intervals(d).size])
+    right = _right_edge(diagrams, max_value)
+    lowest = min([0.0] + [float(iv[:, 0].min()) for iv in diagrams.values() if iv.size])
     cut = max(float(min_length), float(min_fraction) * (right - lowest))
     bars = {}
-    for d in dims:
-        iv = barcode.intervals(d)
+    for d, iv in diagrams.items():
         bars[d] = iv[(iv[:, 1] - iv[:, 0]) >= cut] if cut > 0 else iv
     total = sum(b.shape[0] for b in bars.values())
     if total > max_bars:
@@ -164,7 +214,7 @@ def plot_barcode(
 
 
 def plot_diagram(
-    barcode: Barcode,
+    barcode: Barcode | npt.ArrayLike | Sequence[npt.ArrayLike],
     *,
     dims: Sequence[int] | None = None,
     ax: Axes | None = None,
@@ -177,15 +227,21 @@ def plot_diagram(
 
     Parameters
     ----------
-    barcode : Barcode
-        Each of its intervals becomes one point.
+    barcode : Barcode, array_like of shape (n, 2), or list of them
+        Each interval becomes one point: a :class:`Barcode`; one persistence diagram, an
+        ``(n, 2)`` array of ``(birth, death)`` (``death = inf`` for an essential class); or a list of
+        diagrams, one per homology dimension (ripser.py's ``dgms``).  An empty array or an empty
+        list is one empty diagram (no points).  Arrays are drawn as they are (no scale is applied).
     dims : sequence of int, optional
-        The dimensions shown, one colour each, all in one panel (default: the complete ones).
+        The dimensions shown, one colour each, all in one panel.  Default: a Barcode's complete
+        dimensions, every diagram of a list; for a single diagram, ``dims=[k]`` names its
+        dimension (default 0).
     ax : matplotlib Axes, optional
         Where to draw; without it, in a new figure.
     max_value : float, optional
         Where the line of essential classes (∞) is drawn and the axes end (default: a little past
-        the largest finite value).
+        the largest finite value), as persim draws them: the points of ``death = inf`` sit on a
+        dashed line across the top.
     title : str, optional
         Title of the panel.
 
@@ -198,28 +254,43 @@ def plot_diagram(
     ------
     ImportError
         If matplotlib is not installed (the ``[plot]`` extra).
+    TypeError
+        ``barcode`` is neither a Barcode nor diagrams of numbers (a dict, a string, a list mixing
+        rows and diagrams); a non-integer in ``dims``.
     ValueError
-        No dimension to draw.
+        No dimension to draw, a diagram that is not ``(n, 2)``, a NaN, an infinite birth, a death
+        before its birth, or a dimension of ``dims`` without a diagram (or more than one for a
+        single diagram).
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = plot_diagram(np.array([[0.0, 1.0], [0.5, np.inf]]), max_value=2.0)
+    >>> fig.axes[0].collections[0].get_offsets().tolist()  # the essential point on the line at the top
+    [[0.0, 1.0], [0.5, 2.0]]
+    >>> plt.close(fig)
     """
     plt = require("matplotlib.pyplot", extra="plot", purpose="plotting persistence diagrams")
 
-    dims = _dims(barcode, dims)
-    right = _right_edge(barcode, dims, max_value)
+    diagrams = _diagrams_to_draw(barcode, dims)
+    right = _right_edge(diagrams, max_value)
+    # negative values (an image's lower-star filtration) move the lower-left corner below 0
+    low = min([0.0] + [float(iv[:, 0].min()) for iv in diagrams.values() if iv.size])
+    span = right - low
     if ax is None:
         fig, ax = plt.subplots(figsize=(4.6, 4.6))
     else:
         fig = ax.figure
-    ax.plot([0, right], [0, right], color="0.5", lw=0.8)
+    ax.plot([low, right], [low, right], color="0.5", lw=0.8)
     ax.axhline(right, color="0.7", lw=0.8, ls="--")
-    for d in dims:
-        iv = barcode.intervals(d)
+    for d, iv in diagrams.items():
         death = np.where(np.isfinite(iv[:, 1]), iv[:, 1], right)
         ax.scatter(iv[:, 0], death, s=14, color=_color(d), label=f"$H_{d}$", zorder=3, edgecolor="none")
-    ax.set_xlim(-0.02 * right, right * 1.04)
-    ax.set_ylim(-0.02 * right, right * 1.06)
+    ax.set_xlim(low - 0.02 * span, low + span * 1.04)
+    ax.set_ylim(low - 0.02 * span, low + span * 1.06)
     ax.set_xlabel("birth")
     ax.set_ylabel("death")
-    ax.text(0.01 * right, right * 1.01, "∞", va="bottom")
+    ax.text(low + 0.01 * span, low + span * 1.01, "∞", va="bottom")
     ax.legend(loc="lower right", frameon=False)
     ax.set_aspect("equal")
     if title:
