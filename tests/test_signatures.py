@@ -90,12 +90,14 @@ DATA_ARGUMENTS = {
     "smith.reduce_checked": ("matrix",),
 }
 
-#: methods whose signature another library fixes: scikit-learn's estimator API, jupyter_client's
-#: kernel manager
+#: callables whose signature another library fixes: scikit-learn's estimator API, jupyter_client's
+#: kernel manager, and the drop-in for ripser.py's ``ripser(X, maxdim, thresh, coeff, ...)`` (positional
+#: on purpose: existing calls must run unchanged)
 PROTOCOL = frozenset(
     [f"persistence.transformer.RipsDiagrams.{m}" for m in ("fit", "transform", "fit_transform", "get_params",
                                                             "set_params")]
     + [f"lab.execute.LabKernelManager.{m}" for m in ("start_kernel", "cleanup_resources")]
+    + ["compat.ripser.ripser"]
 )
 
 #: names the redesign removed from every public signature: ``kind`` (now ``complex``, ``curvature``,
