@@ -79,6 +79,19 @@ def test_points_agree_with_ripser(seed, d, maxdim, coeff, thresh):
         np.testing.assert_array_equal(sorted_rows(a), sorted_rows(b))
 
 
+@pytest.mark.parametrize("seed", range(3))
+def test_thresh_at_a_distance_is_compared_in_float32(seed):
+    # thresh equal to a float64 distance: both sides round it and the distances to float32 first, so
+    # the edge at that distance is in (a float64 comparison could leave it out)
+    X = np.random.default_rng(seed).random((30, 2))
+    dm = distances(X)
+    for t in np.quantile(dm[np.triu_indices(30, 1)], [0.05, 0.1, 0.2], method="nearest"):
+        ours, theirs = both(X, maxdim=1, thresh=float(t))
+        assert_same_result(ours, theirs)
+        assert ours["num_edges"] == int(np.count_nonzero(
+            dm[np.triu_indices(30, 1)].astype(np.float32) <= np.float32(t)))
+
+
 @pytest.mark.parametrize("seed", range(4))
 @pytest.mark.parametrize("n_perm", [1, 5, 17])
 @pytest.mark.parametrize("thresh", [np.inf, 0.6])
