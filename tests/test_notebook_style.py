@@ -26,6 +26,7 @@ CONFORMING = (
     "book/ch5-crust-nd.ipynb",
     "book/ch5-radius-curvature.ipynb",
     "book/intro.ipynb",
+    "experiments/flat-torus.ipynb",
 )
 #: the largest median number of code lines per code cell
 MAX_MEDIAN_LINES = 7
