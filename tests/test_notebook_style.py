@@ -23,6 +23,7 @@ ROOT = project_root()
 #: the notebooks that keep to the rule
 CONFORMING = (
     "book/ch2-persistence.ipynb",
+    "book/ch4-apparent-pairs.ipynb",
     "book/ch5-crust-nd.ipynb",
     "book/ch5-radius-curvature.ipynb",
     "book/intro.ipynb",
