@@ -4,6 +4,7 @@ from .algorithm import compute_intervals, trace_matrices
 from .apparent import apparent_pairs, apparent_summary
 from .barcode import Barcode
 from .chains import chain_persistence
+from .distances import bottleneck_distance, wasserstein_distance
 from .engine import persistence
 from .implicit import rips_persistence
 from .plotting import plot_barcode, plot_diagram
@@ -24,4 +25,6 @@ __all__ = [
     "apparent_summary",
     "chain_persistence",
     "RipsDiagrams",
+    "bottleneck_distance",
+    "wasserstein_distance",
 ]
