@@ -28,6 +28,7 @@ CONFORMING = (
     "book/ch5-radius-curvature.ipynb",
     "book/intro.ipynb",
     "experiments/flat-torus.ipynb",
+    "experiments/range-patches.ipynb",
 )
 #: the largest median number of code lines per code cell
 MAX_MEDIAN_LINES = 7

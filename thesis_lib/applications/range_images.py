@@ -50,6 +50,8 @@ __all__ = [
     "dct_basis",
     "dct_basis_5x5",
     "gradient_projection",
+    "dct_gradient_correlation",
+    "projection_summary",
     "range_patch_space",
 ]
 
@@ -649,6 +651,85 @@ def gradient_projection(X: npt.ArrayLike) -> np.ndarray:
     arr, size = _as_patch_rows(X)
     basis = dct_basis(size=size)
     return arr @ basis[[1, size]].T
+
+
+def dct_gradient_correlation(*, size: int = 5) -> float:
+    """How close the two DCT gradient vectors are to linear ramps: the smaller |correlation| of the two.
+
+    Thesis: §2.4.3, Figure 2.23 (the DCT vectors c_0 ⊗ c_1 and c_1 ⊗ c_0 as the horizontal and
+    vertical gradients).  The ramp rises by one per pixel along each row (for c_0 ⊗ c_1) or down
+    each column (for c_1 ⊗ c_0); the basis rows have norm 1.
+
+    Parameters
+    ----------
+    size : int
+        The patch side, >= 2.
+
+    Returns
+    -------
+    float
+        ``min |⟨c, r⟩| / ‖r‖`` over the two pairs (vector, ramp): 1 for a vector that is a ramp.
+
+    Raises
+    ------
+    ValueError
+        If ``size`` is not an integer >= 2.
+
+    Examples
+    --------
+    >>> round(dct_gradient_correlation(size=5), 4)
+    0.996
+    """
+    size = _check_patch_size(size)
+    basis = dct_basis(size=size)
+    ramp = np.tile(np.arange(size) - (size - 1) / 2, (size, 1))  # rises along each row
+    return min(abs(float(basis[row] @ r.ravel())) / float(np.linalg.norm(r))
+               for row, r in ((1, ramp), (size, ramp.T)))
+
+
+def projection_summary(coords: npt.ArrayLike, *, n_sectors: int = 12) -> dict[str, float | int]:
+    """Whether projected patches lie on a circle: distance from the origin, and the directions they fill.
+
+    Thesis: §2.4.3, Figure 2.23 (the projection onto the two gradients shows a circle: the primary
+    circle of Adams–Carlsson).
+
+    Parameters
+    ----------
+    coords : array_like, shape (n, 2)
+        Projected patches (:func:`gradient_projection`).
+    n_sectors : int, default 12
+        The number of equal sectors of directions counted.
+
+    Returns
+    -------
+    dict
+        ``radius_median`` (median distance from the origin), ``sectors_held`` (sectors holding a
+        point), ``angle_coverage`` (their fraction) and ``inner_fraction`` (the fraction of points
+        within half the median distance: near 0 for a circle, larger for a disc).
+
+    Raises
+    ------
+    ValueError
+        ``coords`` not a non-empty (n, 2) array of finite numbers, or ``n_sectors`` below 1.
+
+    Examples
+    --------
+    >>> t = np.linspace(0, 2 * np.pi, 100, endpoint=False)
+    >>> summary = projection_summary(np.column_stack([np.cos(t), np.sin(t)]))
+    >>> summary["sectors_held"], summary["inner_fraction"]
+    (12, 0.0)
+    """
+    c = np.asarray(coords, dtype=np.float64)
+    if c.ndim != 2 or c.shape[1] != 2 or c.shape[0] == 0 or not np.all(np.isfinite(c)):
+        raise ValueError(f"coords must be a non-empty (n, 2) array of finite numbers, got shape {c.shape}")
+    if isinstance(n_sectors, bool) or not isinstance(n_sectors, (int, np.integer)) or n_sectors < 1:
+        raise ValueError(f"n_sectors must be an integer >= 1, got {n_sectors!r}")
+    radius = np.linalg.norm(c, axis=1)
+    angles = np.arctan2(c[:, 1], c[:, 0])
+    sectors = np.histogram(angles, bins=int(n_sectors), range=(-np.pi, np.pi))[0] > 0
+    return {"radius_median": float(np.median(radius)), "sectors_held": int(sectors.sum()),
+            "angle_coverage": float(np.mean(sectors)),
+            "inner_fraction": float(np.mean(radius < 0.5 * np.median(radius)))}
 
 
 # =========================================================================== pipeline
