@@ -253,6 +253,8 @@ def test_bad_wasserstein_parameters_are_refused(kwargs, error, match):
     ({"dgm": 1}, TypeError, "array"),
     ("dgm", TypeError, "array"),
     (None, TypeError, "array"),
+    (np.array([[0.0, 1 + 1j]]), TypeError, "complex"),
+    ([[0.0, 1.0], [0.5]], TypeError, "numbers"),
 ])
 def test_bad_diagrams_are_refused(bad, error, match):
     good = np.array([[0.0, 1.0]])

@@ -7,6 +7,7 @@ from .chains import chain_persistence
 from .distances import bottleneck_distance, wasserstein_distance
 from .engine import persistence
 from .implicit import rips_persistence
+from .lower_star import image_filtration, lower_star_img
 from .plotting import plot_barcode, plot_diagram
 from .summaries import long_bars, long_betti
 from .transformer import RipsDiagrams
@@ -27,4 +28,6 @@ __all__ = [
     "RipsDiagrams",
     "bottleneck_distance",
     "wasserstein_distance",
+    "image_filtration",
+    "lower_star_img",
 ]

@@ -19,9 +19,11 @@ __all__ = ["parse_diagram", "parse_diagrams"]
 
 def _floats(value, what: str) -> np.ndarray:
     """``value`` as a float64 array, or an InvalidTypeError naming ``what``."""
-    if isinstance(value, (str, bytes, dict, set, frozenset)) or value is None or np.iscomplexobj(value):
+    if isinstance(value, (str, bytes, dict, set, frozenset)) or value is None:
         raise InvalidTypeError(f"{what} must be an (n, 2) array of (birth, death), got {type(value).__name__}")
     try:
+        if np.iscomplexobj(value):
+            raise TypeError(f"got complex numbers ({np.asarray(value).dtype})")
         return np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as err:
         raise InvalidTypeError(f"{what} must be an (n, 2) array of (birth, death) numbers: {err}") from None
