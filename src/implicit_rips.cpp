@@ -199,8 +199,8 @@ struct Scratch {
 // Thesis: Definition 4.30 (a pair of the discrete gradient), Theorem 4.42's idea.
 Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent) {
     double od[1];
-    i64 oi[1], om[1];
-    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, om);
+    i64 oi[1], oj[1];
+    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, oj);
     apparent = false;
     if (t.index != -1) {
         if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
@@ -218,8 +218,8 @@ i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
     if (e == -1) return -1;
     vertices(g, e, k, x.verts.data());
     double od[1];
-    i64 oi[1], om[1];
-    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, om).index == tau ? e : -1;
+    i64 oi[1], oj[1];
+    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == tau ? e : -1;
 }
 
 // ---------------------------------------------------------------------------- the columns of a dimension
@@ -265,38 +265,55 @@ struct Blocks {
 };
 
 // The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`: with
-// generate, `from` holds every (k − 1)-simplex and its cofaces whose new vertex is the largest are
-// met (each k-simplex once); otherwise `from` holds the k-simplices themselves.  A simplex met is
-// kept in all when keep_all; it is a candidate unless it is a pivot of dimension k − 1 (cleared) or
-// the upper simplex of a zero apparent pair of dimension k − 1 (in uppers), and a column unless it
-// is the lower simplex of one, whose upper simplex is kept when next (a dimension k + 1 follows).
+// generate, `from` holds every (k − 1)-simplex f and its cofaces tau = f ∪ {j} with j above f's
+// vertices are met (each k-simplex once, its vertices known); otherwise `from` holds the k-simplices
+// themselves.  A simplex met is kept in all when keep_all; it is a candidate unless it is a pivot of
+// dimension k − 1 (cleared) or the upper simplex of a zero apparent pair (e, tau) of dimension k − 1,
+// and a column unless it is the lower simplex of one.  The upper simplices need no table when e = f:
+// f is tau's latest facet exactly when the two have one diameter (f omits tau's top vertex), so the
+// first such coface met from f is f's earliest coface and the pair's upper simplex, and the later
+// ones are no upper simplex.  Only the pairs whose new vertex is below the lower simplex's top
+// vertex are kept in uppers (when next: a dimension k + 1 follows), and looked up only for the
+// cofaces above f's diameter.
 // Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
 // flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
 void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, bool generate, bool keep_all,
                     bool next, const Table& cleared, const Table& uppers, i64 maxdeg, Assembled& out) {
     Scratch x(k);
     std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
-        cur(static_cast<std::size_t>(k)), oi(static_cast<std::size_t>(maxdeg + 1)), om(static_cast<std::size_t>(maxdeg + 1));
+        cur(static_cast<std::size_t>(k)), oi(static_cast<std::size_t>(maxdeg + 1)), oj(static_cast<std::size_t>(maxdeg + 1));
     std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
-    auto meet = [&](double d, i64 s) {
+    auto meet = [&](double d, i64 s, bool upper) {  // s of diameter d and vertices sv
         if (keep_all) out.all.push_back({d, s});
-        if (cleared.contains(s) || uppers.contains(s)) return;
+        if (upper || cleared.contains(s)) return;
         ++out.candidates;
-        vertices(g, s, k, sv.data());
         bool app;
         const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app);
         if (app) {
             ++out.apparent;
-            if (next) out.uppers.push_back(t.index);
+            if (next && t.m > 0) out.uppers.push_back(t.index);
         } else {
             out.columns.push_back({d, s, t.index, 1 - 2 * (t.m & 1)});
         }
     };
     from.visit(lo, hi, [&](const Simplex& f) {
-        if (!generate) return meet(f.d, f.idx);
+        if (!generate) {
+            vertices(g, f.idx, k, sv.data());
+            return meet(f.d, f.idx, uppers.contains(f.idx));
+        }
         vertices(g, f.idx, k - 1, fv.data());
-        const i64 c = cofaces(g, fv.data(), k - 1, f.idx, f.d, cur.data(), od.data(), oi.data(), om.data(), false, true);
-        for (i64 t = 0; t < c; ++t) meet(od[t], oi[t]);
+        std::copy(fv.begin(), fv.end(), sv.begin() + 1);
+        const i64 c = cofaces(g, fv.data(), k - 1, f.idx, f.d, cur.data(), od.data(), oi.data(), oj.data(), false, true);
+        bool first = true;  // no coface of f's diameter met yet
+        for (i64 t = 0; t < c; ++t) {
+            sv[0] = oj[t];
+            if (od[t] == f.d) {
+                meet(od[t], oi[t], first);
+                first = false;
+            } else {
+                meet(od[t], oi[t], uppers.contains(oi[t]));
+            }
+        }
     });
 }
 

@@ -109,13 +109,13 @@ inline i64 upper(const double* arr, i64 lo, i64 hi, double x) {
 }
 
 // Enumerate the cofaces s ∪ {j} of the k-simplex s (vertices verts, decreasing), j decreasing: each
-// coface's diameter, index and m = #{vertices of s above j} (its sign in δs is (−1)^m) into out_*,
-// returning their number.  With first_equal it stops at the first coface of diameter diam (the
-// earliest coface when one has s's diameter) and returns 1 (0 when there is none); with above_only
-// only cofaces whose new vertex is above s's are listed (each (k+1)-simplex from exactly one facet).
+// coface's diameter, index and new vertex j into out_*, returning their number.  With first_equal it
+// stops at the first coface of diameter diam (the earliest coface when one has s's diameter) and
+// returns 1 (0 when there is none); with above_only only cofaces whose new vertex is above s's are
+// listed (each (k+1)-simplex from exactly one facet).
 // Thesis: Definition 2.11 (a coface of a flag simplex is a common neighbour), §2.3.5 (coboundary).
 inline i64 cofaces(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur, double* out_d,
-                   i64* out_i, i64* out_m, bool first_equal, bool above_only) {
+                   i64* out_i, i64* out_j, bool first_equal, bool above_only) {
     const i64* indptr = g.indptr;
     const i64* nbr = g.nbr;
     const double* length = g.length;
@@ -156,14 +156,14 @@ inline i64 cofaces(const Graph& g, const i64* verts, i64 k, i64 idx, double diam
             if (dmax == diam) {
                 out_d[0] = dmax;
                 out_i[0] = wadd(wadd(idx_above, g.binom(j, k + 2 - m)), idx_below);
-                out_m[0] = m;
+                out_j[0] = j;
                 return 1;
             }
             continue;
         }
         out_d[count] = dmax;
         out_i[count] = wadd(wadd(idx_above, g.binom(j, k + 2 - m)), idx_below);
-        out_m[count] = m;
+        out_j[count] = j;
         ++count;
     }
     return count;
@@ -214,7 +214,7 @@ inline i64 dense_first(const Graph& g, const i64* verts, i64 k, double diam) {
 // decreasing up to the first hit (with a dense matrix, a scan of its columns j = n − 1, n − 2, ...).
 // Thesis: Definition 4.30 (the earliest coface of a zero apparent pair), Theorem 4.42's idea.
 inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur,
-                                 double* od, i64* oi, i64* om) {
+                                 double* od, i64* oi, i64* oj) {
     const i64* indptr = g.indptr;
     const double* dlen = g.dlen.data();
     if (g.dense) {  // every vertex has more than 1/8 of its neighbours within diam: scan D
@@ -242,7 +242,7 @@ inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 id
     i64 jmax = -1;
     if (8 * bcount > indptr[verts[best] + 1] - indptr[verts[best]]) {
         if (g.dense) return with_vertex(g, verts, k, idx, dense_first(g, verts, k, diam));
-        if (cofaces(g, verts, k, idx, diam, cur, od, oi, om, true, false)) return {oi[0], om[0], -1};
+        if (cofaces(g, verts, k, idx, diam, cur, od, oi, oj, true, false)) return with_vertex(g, verts, k, idx, oj[0]);
         return {-1, 0, -1};
     }
     const i64 vb = verts[best];
