@@ -209,7 +209,7 @@ def test_no_backend_installed_names_both_install_commands(monkeypatch):
         bottleneck_distance(x, y, backend="gudhi")
 
 
-def test_persim_only_without_gudhi(monkeypatch):
+def test_gudhi_needs_no_persim(monkeypatch):
     x, y = pair(5)
     hide(monkeypatch, "persim")
     assert bottleneck_distance(x, y) == gudhi.bottleneck_distance(x, y, 0.0)  # GUDHI needs no persim

@@ -1,8 +1,9 @@
 """The lower-star filtration of a grayscale image: its pixels as vertices, the sublevel sets of their values.
 
-A pixel enters at its value and a simplex of the pixel grid at the largest value of its pixels
-(:func:`~thesis_lib.morse.reduction.lower_star_filtration`), so the complex at value t is the set of
-pixels ≤ t, joined as the ``connectivity`` says:
+A pixel enters at its value and a simplex of the pixel grid at the largest value of its pixels (the
+rule of :func:`~thesis_lib.morse.reduction.lower_star_filtration`, on this one complex; persistence does
+not import from morse), so the complex at value t is the set of pixels ≤ t, joined as the
+``connectivity`` says:
 
 * ``connectivity=8`` (the default, as ``ripser.lower_star_img``): the flag complex of the 8-neighbour
   graph, i.e. in every 2×2 block of pixels all 6 edges, 4 triangles and the tetrahedron.  It is the
@@ -122,8 +123,6 @@ def image_filtration(image: npt.ArrayLike, *, connectivity: int = 8) -> Filtrati
     >>> filt.values[1].tolist()  # the diagonal edges (0, 3) and (1, 2) enter at 1 and 2
     [2.0, 2.0, 2.0, 2.0, 1.0, 2.0]
     """
-    from ..morse.reduction import lower_star_filtration
-
     pixels = _image(image)
     connectivity = _connectivity(connectivity)
     m, n = pixels.shape
@@ -135,7 +134,7 @@ def image_filtration(image: npt.ArrayLike, *, connectivity: int = 8) -> Filtrati
     if connectivity == 4:  # a block's centre enters with its square: at the largest of its four pixels
         corners = np.stack([pixels[:-1, :-1], pixels[:-1, 1:], pixels[1:, :-1], pixels[1:, 1:]])
         values = np.r_[values, corners.max(axis=0).ravel()]
-    return lower_star_filtration(Filtration(arrays, validate=False), values)
+    return Filtration(arrays, [values[s].max(axis=1) for s in arrays], validate=False)
 
 
 def lower_star_img(image: npt.ArrayLike, *, connectivity: int = 8) -> Barcode:
