@@ -29,6 +29,7 @@ CONFORMING = (
     "book/intro.ipynb",
     "experiments/flat-torus.ipynb",
     "experiments/range-patches.ipynb",
+    "experiments/rp2-morse.ipynb",
 )
 #: the largest median number of code lines per code cell
 MAX_MEDIAN_LINES = 7

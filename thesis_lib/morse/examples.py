@@ -5,7 +5,10 @@ from __future__ import annotations
 from .._validate import check_seed
 from ._cells import Simplex
 
-__all__ = ["RP2_FACETS", "rp2_gradient_field", "rp2_chart", "example_4_45", "experiment_complex", "COMPLEX_NAMES"]
+__all__ = [
+    "RP2_FACETS", "rp2_gradient_field", "rp2_chart", "example_4_45", "experiment_complex", "experiment_matching",
+    "COMPLEX_NAMES",
+]
 
 #: The 6-vertex RP² of Example 2.21 / Figure 2.7 with a, b, c, d, e, f = 0, ..., 5
 #: (abd, adf, afc, bcd, ced, cae, abe, bfe, bcf, def).
@@ -144,3 +147,56 @@ def experiment_complex(name: str, *, seed: int = 0) -> tuple[
         facets = [s for s, _ in filt]
         return facets, {i: (float(x), float(y)) for i, (x, y) in enumerate(pts)}, None
     raise ValueError(f"complex must be one of {', '.join(COMPLEX_NAMES)}, got {name!r}")
+
+
+def experiment_matching(facets: list[Simplex], *, heuristic: str,
+                        positions: dict[int, tuple[float, float]] | None = None,
+                        seed: int = 0) -> list[tuple[Simplex, Simplex]]:
+    """The gradient of the ``rp2-morse`` experiment: :func:`~thesis_lib.morse.morse_matching` by ``heuristic``.
+
+    Thesis: §4.2.6 (heuristic acyclic matchings).  For ``"lower-star"`` the vertex values are the
+    x-coordinates of ``positions`` when the complex is drawn in the plane, else uniform random
+    numbers drawn with ``seed``; the greedy heuristics break ties at random with ``seed``.
+
+    Parameters
+    ----------
+    facets : list of tuple
+        The complex (as :func:`experiment_complex` returns it).
+    heuristic : {"coreduction", "collapse", "lower-star"}
+        As :func:`~thesis_lib.morse.morse_matching`.
+    positions : dict of int to (float, float), optional
+        Vertex → plane position (:func:`experiment_complex`'s second value).
+    seed : int, default 0
+        Seed of the random vertex values or of the tie-breaking.
+
+    Returns
+    -------
+    list of (tuple, tuple)
+        The pairs ``(sigma, tau)``, as :func:`~thesis_lib.morse.morse_matching`.
+
+    Raises
+    ------
+    ValueError
+        An unknown heuristic, an invalid seed, or positions missing a vertex.
+
+    Examples
+    --------
+    >>> from thesis_lib.morse import critical_counts
+    >>> critical_counts(RP2_FACETS, experiment_matching(list(RP2_FACETS), heuristic="lower-star", seed=0))
+    [1, 1, 1]
+    """
+    import numpy as np
+
+    from .matching import morse_matching
+
+    if heuristic != "lower-star":
+        return morse_matching(facets, heuristic=heuristic, seed=seed)
+    n_vertices = max(v for s in facets for v in s) + 1
+    if positions:
+        missing = [v for v in range(n_vertices) if v not in positions]
+        if missing:
+            raise ValueError(f"positions has no entry for vertices {missing[:5]}")
+        values = np.array([positions[v][0] for v in range(n_vertices)])
+    else:
+        values = np.random.default_rng(check_seed(seed)).random(n_vertices)
+    return morse_matching(facets, heuristic="lower-star", values=values)
