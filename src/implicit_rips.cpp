@@ -119,6 +119,18 @@ void prepare(Graph& g, bool dense) {
         g.D.assign(static_cast<std::size_t>(n * n), kInf);
         for (i64 u = 0; u < n; ++u)
             for (i64 e = g.indptr[u]; e < g.indptr[u + 1]; ++e) g.D[u * n + g.nbr[e]] = g.length[e];
+    } else {
+        int bits = 4;
+        while ((u64(1) << bits) < static_cast<u64>(total) + 2) ++bits;  // total = 2 · edges: load <= 1/2
+        g.H.assign(u64(1) << bits, {-1, 0.0});
+        g.hmask = (u64(1) << bits) - 1;
+        g.hshift = 64 - bits;
+        for (i64 u = 0; u < n; ++u) {
+            for (i64 e = g.indptr[u + 1] - 1; e >= g.indptr[u] && g.nbr[e] < u; --e) {
+                const i64 key = u * n + g.nbr[e];
+                g.H[g.hslot(key)] = {key, g.length[e]};
+            }
+        }
     }
 }
 

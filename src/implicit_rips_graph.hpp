@@ -26,7 +26,14 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 inline i64 wadd(i64 a, i64 b) { return static_cast<i64>(static_cast<u64>(a) + static_cast<u64>(b)); }
 inline i64 wsub(i64 a, i64 b) { return static_cast<i64>(static_cast<u64>(a) - static_cast<u64>(b)); }
 
-// The validated graph, its distance-sorted lists, the dense matrix (small n) and the binomials.
+// An edge of the hash of lengths: key u · n + v (u > v), −1 for an empty slot.
+struct EdgeSlot {
+    i64 key;
+    double length;
+};
+
+// The validated graph, its distance-sorted lists, the lengths for constant-time lookups (a dense
+// matrix, or a hash of the edges when the matrix would be mostly empty) and the binomials.
 struct Graph {
     i64 n = 0;
     const i64* indptr = nullptr;
@@ -36,28 +43,28 @@ struct Graph {
     std::vector<double> dlen;
     std::vector<double> D;  // n * n, inf where there is no edge; empty when not dense
     bool dense = false;
+    std::vector<EdgeSlot> H;  // open addressing, load at most 1/2; empty when dense
+    u64 hmask = 0;
+    int hshift = 60;
     std::vector<i64> B;  // B[v * bw + k] = C(v, k)
     i64 bw = 0;
 
     i64 binom(i64 v, i64 k) const { return B[static_cast<std::size_t>(v * bw + k)]; }
     i64 degree(i64 v) const { return indptr[v + 1] - indptr[v]; }
 
-    // Distance of u and v: from the dense matrix when there is one, else by binary search in u's
-    // neighbour list (decreasing); inf if there is no edge.
+    // The hash slot of key (u · n + v, u > v): where it is, or the empty slot where it would go.
+    u64 hslot(i64 key) const {
+        u64 h = (static_cast<u64>(key) * 0x9E3779B97F4A7C15ULL) >> hshift;
+        while (H[h].key != -1 && H[h].key != key) h = (h + 1) & hmask;
+        return h;
+    }
+
+    // Distance of u and v: from the dense matrix or the hash of the edges; inf if there is no edge.
     // Thesis: Definition 2.11 (the edge lengths of the Rips graph).
     double dist(i64 u, i64 v) const {
         if (dense) return D[static_cast<std::size_t>(u * n + v)];
-        i64 lo = indptr[u], hi = indptr[u + 1];
-        const i64 end = hi;
-        while (lo < hi) {
-            const i64 mid = (lo + hi) >> 1;
-            if (nbr[mid] > v)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
-        if (lo < end && nbr[lo] == v) return length[lo];
-        return kInf;
+        const EdgeSlot& e = H[hslot(u > v ? u * n + v : v * n + u)];
+        return e.key == -1 ? kInf : e.length;
     }
 };
 

@@ -82,9 +82,13 @@ if TYPE_CHECKING:
 
 __all__ = ["rips_persistence", "rips_graph", "rips_barcode"]
 
-#: up to this many points a dense distance matrix (8 n² bytes, 128 MB at the limit) is kept for
-#: constant-time lookups; beyond, distances are found by binary search in the neighbour lists
-DENSE_MAX = 4096
+#: up to DENSE_MAX points a dense distance matrix (8 n² bytes, 32 MB at the limit) is kept for
+#: constant-time lookups, and up to DENSE_FULL_MAX (128 MB) when at least DENSE_FILL of the pairs are
+#: edges; otherwise the lengths are looked up in a hash of the edges (16 to 32 bytes per edge), as fast
+#: as a matrix too large for the cache and much smaller when the threshold leaves few edges
+DENSE_MAX = 2048
+DENSE_FULL_MAX = 4096
+DENSE_FILL = 0.25
 
 
 # ---------------------------------------------------------------------------- the graph
@@ -158,6 +162,11 @@ def _csr(n: int, edges: np.ndarray, lengths: np.ndarray):
 #: times the mean degree over k + 1) the columns of a dimension are assembled on one thread
 #: (starting the threads costs more than it saves, and much more on a loaded machine)
 PARALLEL_MIN = 50_000
+
+
+def _dense(n: int, neighbours: int) -> bool:
+    """Whether the engine keeps a dense distance matrix for n vertices and that many list entries."""
+    return n <= DENSE_MAX or (n <= DENSE_FULL_MAX and neighbours >= DENSE_FILL * n * n)
 
 
 # ---------------------------------------------------------------------------- driver
@@ -288,7 +297,7 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
     dims = implicit_rips.rips_barcode(
         n, np.ascontiguousarray(indptr, dtype=np.int64), np.ascontiguousarray(nbr, dtype=np.int64),
         np.ascontiguousarray(length, dtype=np.float64), np.ascontiguousarray(births, dtype=np.float64), max_dim,
-        field.p, n <= DENSE_MAX, n_threads, PARALLEL_MIN)
+        field.p, _dense(n, nbr.shape[0]), n_threads, PARALLEL_MIN)
     intervals: dict[int, np.ndarray] = {}
     for k, (births, deaths, ess, counts) in enumerate(dims):
         iv = np.empty((births.shape[0] + ess.shape[0], 2))
