@@ -260,6 +260,19 @@ def smith_normal_form(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray) -> np.nd
     ------
     ValueError
         If the matrix is not 2-D or has non-integer, NaN or infinite entries.
+
+    Examples
+    --------
+    A classic 3 × 3 example, and the boundary ∂_2 of RP², whose one invariant factor 2 is the torsion
+    Z/2 of H_1(RP²) (Example 2.21):
+
+    >>> smith_normal_form([[2, 4, 4], [-6, 6, 12], [10, -4, -16]]).tolist()
+    [2, 6, 12]
+    >>> from thesis_lib.datasets import rp2
+    >>> from thesis_lib.filtration import as_complex
+    >>> from thesis_lib.homology import boundary_matrices
+    >>> smith_normal_form(boundary_matrices(as_complex(rp2()).simplices)[2]).tolist()
+    [1, 1, 1, 1, 1, 1, 1, 1, 1, 2]
     """
     red = reduce_checked(_as_matrix(matrix), field=Field(0))
     values = [1] * (red.rank - len(red.invariants)) + list(red.invariants)
