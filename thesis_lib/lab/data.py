@@ -17,6 +17,7 @@ from dataclasses import dataclass, fields
 from pathlib import Path, PurePosixPath
 
 from . import atomic
+from .experiments import did_you_mean
 from .paths import project_root, shared_dir
 from .registry import read_tables
 
@@ -176,7 +177,7 @@ def _entry(name: object, manifest_file: str | Path | None) -> Entry:
     entries = manifest(manifest_file)
     if not isinstance(name, str) or name not in entries:
         known = ", ".join(sorted(entries))
-        raise DataError(f"unknown data set {name!r}; the manifest lists: {known}")
+        raise DataError(f"unknown data set {name!r}; the manifest lists: {known}{did_you_mean(name, sorted(entries))}")
     return entries[name]
 
 

@@ -9,6 +9,7 @@ against its default's type before any kernel starts.
 from __future__ import annotations
 
 import ast
+import difflib
 import hashlib
 import json
 import math
@@ -25,6 +26,7 @@ __all__ = [
     "list_experiments",
     "notebook_path",
     "experiment_parameters",
+    "did_you_mean",
     "resolve_parameters",
     "run_hash",
 ]
@@ -80,12 +82,38 @@ def notebook_path(name: object) -> Path:
     known = list_experiments()
     if not isinstance(name, str) or name not in known:
         shown = ", ".join(known) or "none"
-        raise ParameterError(f"unknown experiment {name!r}; known experiments: {shown}")
+        raise ParameterError(f"unknown experiment {name!r}; known experiments: {shown}{did_you_mean(name, known)}")
     folder = experiments_dir().resolve()
     path = (folder / f"{name}.ipynb").resolve()
     if path.parent != folder or not path.is_file():
         raise ParameterError(f"experiment {name!r} is not a notebook inside {folder}")
     return path
+
+
+def did_you_mean(word: object, known: list[str]) -> str:
+    """``"; did you mean 'x'?"`` naming the known words closest to ``word``, or ``""`` when none is close.
+
+    Parameters
+    ----------
+    word : object
+        What was given (anything but a string gets ``""``).
+    known : list of str
+        The accepted words.
+
+    Returns
+    -------
+    str
+        The text to end an "unknown ..." message with (``difflib.get_close_matches``, up to three).
+
+    Examples
+    --------
+    >>> did_you_mean("two-circle", ["two-circles", "proteins"])
+    "; did you mean 'two-circles'?"
+    >>> did_you_mean("zzz", ["two-circles"])
+    ''
+    """
+    close = difflib.get_close_matches(word, known, n=3) if isinstance(word, str) else []
+    return f"; did you mean {' or '.join(map(repr, close))}?" if close else ""
 
 
 def _parameters_cell(nb) -> str:
@@ -258,8 +286,9 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
         if key == OUTPUT_PARAMETER:
             raise ParameterError(f"{OUTPUT_PARAMETER!r} is set by the runner; it is not a parameter to pass")
         if key not in defaults:
-            known = ", ".join(k for k in defaults if k != OUTPUT_PARAMETER)
-            raise ParameterError(f"experiment {name!r} has no parameter {key!r}; its parameters are: {known}")
+            names = [k for k in defaults if k != OUTPUT_PARAMETER]
+            raise ParameterError(f"experiment {name!r} has no parameter {key!r}; its parameters are: "
+                                 f"{', '.join(names)}{did_you_mean(key, names)}")
         params[key] = _coerce(key, value, defaults[key])
     params.pop(OUTPUT_PARAMETER, None)
     return params
