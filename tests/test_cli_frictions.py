@@ -5,6 +5,7 @@ markup in the help."""
 
 from __future__ import annotations
 
+import hashlib
 from pathlib import Path
 
 import pytest
@@ -15,6 +16,7 @@ from lab_helpers import (
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import runner as lab_runner
 from thesis_lib.lab import sweep as lab_sweep
+from thesis_lib.lab.data import DataError, verify
 from thesis_lib.lab.experiments import (
     did_you_mean,
 )
@@ -35,6 +37,49 @@ def no_kernels(monkeypatch):
     monkeypatch.setattr(lab_runner, "execute", refuse)
     monkeypatch.setattr(lab_sweep, "execute", refuse)
     return started
+
+
+# 1. data verify checks only what its arguments select; an argument that selects nothing is an error
+
+
+def _second_data_set(root: Path) -> str:
+    payload = b"HETATM    1  O   HOH A   1\n"
+    (root / "data" / "x" / "water.pdb").write_bytes(payload)
+    digest = hashlib.sha256(payload).hexdigest()
+    with open(root / "data" / "manifest.toml", "a") as fh:
+        fh.write(f'\n[[file]]\nname = "water"\nfile = "x/water.pdb"\nsha256 = "{digest}"\nsize = {len(payload)}\n'
+                 'url = "file:///nonexistent"\norigin = "test"\nlicence = "CC0"\n')
+    return digest
+
+
+def test_data_verify_checks_only_the_data_sets_its_arguments_select(root, capsys):
+    digest = _second_data_set(root)
+    assert [name for name, _, _ in verify()] == ["toy-data", "water"]
+    assert [name for name, _, _ in verify(names=["water"])] == ["water"]
+    assert [name for name, _, _ in verify(names=["toy"])] == ["toy-data"]  # the start of a name
+    assert [name for name, _, _ in verify(names=[digest[:6].upper()])] == ["water"]  # a sha256 prefix
+    assert [name for name, _, _ in verify(names=["water", "toy-data", "wat"])] == ["toy-data", "water"]
+    assert lab_cli.main(["data", "verify", "wat"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("ok    water: ") and "toy-data" not in out and len(out.splitlines()) == 1
+
+
+def test_data_verify_of_an_argument_that_selects_nothing_is_an_error(root, capsys):
+    _second_data_set(root)
+    for bad in ("1ecaa", "toy-data-2", "ab"):  # "ab": too few hex digits for a sha256 prefix
+        with pytest.raises(DataError, match=f"no data set matches {bad!r}.*the manifest lists: toy-data, water"):
+            verify(names=["water", bad])
+    assert lab_cli.main(["data", "verify", "watr"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == ""  # nothing was checked
+    assert captured.err == ("error: no data set matches 'watr' (give a name, the start of one, or at least 4 hex "
+                            "digits of a sha256); the manifest lists: toy-data, water; did you mean 'water'?\n")
+
+
+def test_data_verify_of_the_project_names_its_data_sets():
+    with pytest.raises(DataError, match=r"'1ecaa' .* lists: 1eca, 1grm, 3rn3, 5mbn; did you mean '1eca'\?$"):
+        verify(ROOT / "data" / "manifest.toml", names=["1ecaa"])
+    assert [name for name, _, _ in verify(ROOT / "data" / "manifest.toml", names=["1e", "5mbn"])] == ["1eca", "5mbn"]
 
 
 # 5. a misspelled experiment or parameter gets a "did you mean"

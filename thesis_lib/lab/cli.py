@@ -144,7 +144,7 @@ def _cmd_data(args) -> int:
     from . import data
 
     if args.action == "verify":
-        rows = data.verify()
+        rows = data.verify(names=args.names)
         for name, status, detail in rows:
             print(f"{status:5s} {name}: {detail}")
         return 0 if all(s == "ok" for _, s, _ in rows) else 1
@@ -248,7 +248,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("data", help="the data layer")
     p.add_argument("action", choices=["verify", "fetch"])
-    p.add_argument("names", nargs="*", help="data sets to fetch (default: all)")
+    p.add_argument("names", nargs="*",
+                   help="the data sets: verify takes names, their starts or sha256 prefixes (4+ hex digits); "
+                        "fetch takes names (default: all)")
     p.set_defaults(func=_cmd_data)
     return parser
 

@@ -181,6 +181,26 @@ def _entry(name: object, manifest_file: str | Path | None) -> Entry:
     return entries[name]
 
 
+#: the fewest hex digits of a sha256 that select data sets by checksum
+_MIN_SHA_PREFIX = 4
+
+
+def _matching(patterns: list[str], entries: dict[str, Entry]) -> list[str]:
+    """The names that ``patterns`` select (a name, the start of one, or a sha256 prefix), or a DataError."""
+    chosen: set[str] = set()
+    for pattern in patterns:
+        digits = pattern.lower()
+        hits = {name for name, e in entries.items()
+                if name.startswith(pattern) or (len(digits) >= _MIN_SHA_PREFIX and e.sha256.startswith(digits))}
+        if not hits:
+            known = ", ".join(sorted(entries)) or "none"
+            raise DataError(f"no data set matches {pattern!r} (give a name, the start of one, or at least "
+                            f"{_MIN_SHA_PREFIX} hex digits of a sha256); the manifest lists: {known}"
+                            + did_you_mean(pattern, sorted(entries)))
+        chosen |= hits
+    return sorted(chosen)
+
+
 def _candidates(entry: Entry) -> list[Path]:
     return [inside(project_root() / "data", entry.file), inside(shared_dir() / "data", entry.file)]
 
@@ -248,13 +268,16 @@ def path(name: str, *, manifest_file: str | Path | None = None) -> Path:
     )
 
 
-def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]]:
-    """Check every manifest entry (that a copy exists and its sha256 matches).
+def verify(manifest_file: str | Path | None = None, *, names: list[str] | None = None) -> list[tuple[str, str, str]]:
+    """Check every manifest entry, or those ``names`` selects (that a copy exists and its sha256 matches).
 
     Parameters
     ----------
     manifest_file : str or pathlib.Path, optional
         The manifest whose entries are checked (default: the project's, see :func:`manifest`).
+    names : list of str, optional
+        Check only the entries these select: each is a data set's name, the start of one (``1e``),
+        or at least four hex digits that begin an entry's sha256.  By default (None or empty) all.
 
     Returns
     -------
@@ -265,10 +288,12 @@ def verify(manifest_file: str | Path | None = None) -> list[tuple[str, str, str]
     Raises
     ------
     DataError
-        If the manifest itself is missing or malformed.
+        If the manifest itself is missing or malformed, or one of ``names`` selects no entry (the
+        message lists the manifest's names).
     """
+    entries = manifest(manifest_file)
     rows = []
-    for name in sorted(manifest(manifest_file)):
+    for name in _matching(names, entries) if names else sorted(entries):
         try:
             rows.append((name, "ok", str(path(name, manifest_file=manifest_file))))
         except DataError as exc:
