@@ -6,6 +6,7 @@ markup in the help."""
 from __future__ import annotations
 
 import hashlib
+import re
 from pathlib import Path
 
 import pytest
@@ -18,7 +19,12 @@ from thesis_lib.lab import runner as lab_runner
 from thesis_lib.lab import sweep as lab_sweep
 from thesis_lib.lab.data import DataError, verify
 from thesis_lib.lab.experiments import (
+    ParameterError,
     did_you_mean,
+    experiment_parameters,
+    list_experiments,
+    parameter_ranges,
+    resolve_parameters,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -95,4 +101,79 @@ def test_a_misspelled_experiment_or_parameter_gets_did_you_mean(root, capsys, no
     assert capsys.readouterr().err == "error: unknown experiment 'nope'; known experiments: toy\n"
     assert did_you_mean("two-circle", ["two-circles", "two-circles-landmarks", "proteins"]) == \
         "; did you mean 'two-circles' or 'two-circles-landmarks'?"
+    assert no_kernels == []
+
+
+# 6. value ranges, declared in experiments/parameters.toml, are checked before any kernel starts
+
+
+def _ranges(root: Path, text: str) -> None:
+    (root / "experiments" / "parameters.toml").write_text(text)
+
+
+def test_a_value_out_of_range_is_refused_before_any_kernel_starts(root, capsys, no_kernels):
+    _ranges(root, "[toy]\nn = { min = 1 }\nx = { above = 0, max = 1 }\nsizes = { min = 1 }\n")
+    cases = [
+        (["run", "toy", "-p", "n", "0"], "parameter 'n' of toy is out of range: got 0; allowed: n >= 1"),
+        (["run", "toy", "-p", "x", "0"], "parameter 'x' of toy is out of range: got 0.0; allowed: 0 < x <= 1"),
+        (["run", "toy", "-p", "sizes", "5,0"], "got item 0 of [5, 0]; allowed: sizes >= 1"),
+        (["sweep", "toy", "-p", "x", "0.5", "1.5"], "parameter 'x' of toy is out of range: got 1.5"),
+        (["collect", "toy", "-p", "n", "-3", "3"], "parameter 'n' of toy is out of range: got -3"),
+    ]
+    for argv, message in cases:
+        assert lab_cli.main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert err.startswith("error: ") and message in err, (argv, err)
+        assert "parameters.toml" in err
+    assert no_kernels == [] and not (root / "runs").exists()  # nothing ran, nothing was written
+    assert resolve_parameters("toy", {"n": "1", "x": "1"})["x"] == 1.0  # the bounds themselves are allowed
+
+
+def test_a_default_out_of_range_is_refused_too(root):
+    _ranges(root, "[toy]\nn = { max = 2 }\n")
+    with pytest.raises(ParameterError, match="parameter 'n' of toy is out of range: got 3; allowed: n <= 2"):
+        resolve_parameters("toy")
+    assert resolve_parameters("toy", {"n": 2})["n"] == 2
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[toy]\nm = { min = 1 }\n", r"\[toy\] m: the parameters cell of toy assigns no parameter 'm'"),
+    ("[toy]\nlabel = { min = 1 }\n", r"\[toy\] label: a range needs a numeric parameter"),
+    ("[toy]\nn = { least = 1 }\n", r"\[toy\] n: expected an inline table of min, max, above, below"),
+    ("[toy]\nn = { min = \"1\" }\n", r"\[toy\] n: the bounds must be numbers"),
+    ("toy = 1\n", r"\[toy\] must be a table"),
+    ("[toy\n", "is not valid TOML"),
+])
+def test_a_malformed_range_registry_is_refused_naming_the_file(root, text, message):
+    _ranges(root, text)
+    with pytest.raises(ParameterError, match=message) as info:
+        resolve_parameters("toy")
+    assert "parameters.toml" in str(info.value)
+
+
+def test_without_a_registry_no_range_is_checked(root):
+    assert parameter_ranges("toy") == {}
+    assert resolve_parameters("toy", {"n": "-5"})["n"] == -5
+
+
+def test_every_experiment_of_the_project_declares_its_natural_ranges(monkeypatch):
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(ROOT))
+    natural = re.compile(r"seed|n_.*|.*_(points|counts|sizes|radius|stride)|noise|nu|repeats|max_dim")
+    for name in list_experiments():
+        defaults = experiment_parameters(name)
+        ranges = parameter_ranges(name, defaults=defaults)
+        missing = [k for k, v in defaults.items() if natural.fullmatch(k) and not isinstance(v, str)
+                   and k not in ranges]
+        assert missing == [], (name, missing)
+        resolve_parameters(name)  # every default lies in its range
+    assert parameter_ranges("two-circles-landmarks")["n_trials"] == {"min": 1}
+    assert parameter_ranges("range-patches")["top"] == {"above": 0, "max": 1}
+
+
+def test_n_trials_zero_of_the_project_is_refused_before_a_kernel(monkeypatch, capsys, no_kernels):
+    monkeypatch.delenv("THESIS_LAB_PROJECT", raising=False)
+    argv = ["--project", str(ROOT), "run", "two-circles-landmarks", "-p", "n_trials", "0"]
+    assert lab_cli.main(argv) == 2
+    assert "error: parameter 'n_trials' of two-circles-landmarks is out of range: got 0; allowed: n_trials >= 1" \
+        in capsys.readouterr().err
     assert no_kernels == []

@@ -3,7 +3,8 @@
 An experiment is ``experiments/<name>.ipynb`` with one code cell tagged ``parameters`` that assigns
 plain literals: an int, float, str or bool, or a non-empty list of one of those.  Only the names
 :func:`list_experiments` shows are accepted (never a path), and every parameter value is checked
-against its default's type before any kernel starts.
+against its default's type, and against its allowed range when ``experiments/parameters.toml``
+declares one, before any kernel starts.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from pathlib import Path
 
 from .._optional import require
 from .paths import project_root
+from .registry import read_mapping
 
 __all__ = [
     "OUTPUT_PARAMETER",
@@ -27,6 +29,8 @@ __all__ = [
     "notebook_path",
     "experiment_parameters",
     "did_you_mean",
+    "parameter_ranges",
+    "ranges_path",
     "resolve_parameters",
     "run_hash",
 ]
@@ -275,8 +279,8 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
     Raises
     ------
     ParameterError
-        For an unknown experiment, an unknown parameter, ``output_dir``, or a value of the wrong type
-        (NaN and infinity included).
+        For an unknown experiment, an unknown parameter, ``output_dir``, a value of the wrong type
+        (NaN and infinity included), or a value outside the range :func:`parameter_ranges` declares.
     """
     defaults = experiment_parameters(name)
     if overrides is not None and not isinstance(overrides, Mapping):
@@ -291,7 +295,95 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
                                  f"{', '.join(names)}{did_you_mean(key, names)}")
         params[key] = _coerce(key, value, defaults[key])
     params.pop(OUTPUT_PARAMETER, None)
+    for key, bounds in parameter_ranges(name, defaults=defaults).items():
+        _check_range(name, key, params[key], bounds)
     return params
+
+
+#: the bounds a range may give: inclusive ``min`` / ``max``, strict ``above`` / ``below``
+_BOUNDS = {"min": ">=", "max": "<=", "above": ">", "below": "<"}
+
+
+def ranges_path() -> Path:
+    """The registry of the parameters' allowed ranges.
+
+    Returns
+    -------
+    pathlib.Path
+        ``experiments/parameters.toml`` of the project (it need not exist: then no ranges are checked).
+    """
+    return experiments_dir() / "parameters.toml"
+
+
+def parameter_ranges(name: str, *, defaults: Mapping[str, object] | None = None) -> dict[str, dict[str, float]]:
+    """The allowed range of each numeric parameter of experiment ``name`` that declares one.
+
+    ``experiments/parameters.toml`` has one table per experiment, and in it one inline table per
+    parameter with any of ``min`` and ``max`` (inclusive) and ``above`` and ``below`` (strict), e.g.
+    ``n_trials = { min = 1 }`` or ``top = { above = 0, max = 1 }``.  A list parameter's range holds
+    for each of its items.  :func:`resolve_parameters` checks every value (the defaults included)
+    against it before any kernel starts.
+
+    Parameters
+    ----------
+    name : str
+        The experiment's name (a notebook stem that :func:`list_experiments` shows).
+    defaults : mapping of str to object, optional
+        The experiment's defaults (:func:`experiment_parameters`), read when not given.
+
+    Returns
+    -------
+    dict of str to dict
+        Parameter name → its bounds (``{"min": 1}``); ``{}`` when the registry or the experiment's
+        table is absent.
+
+    Raises
+    ------
+    ParameterError
+        If the registry is not valid TOML, or the experiment's table names a parameter that its
+        ``parameters`` cell does not assign or that is not numeric, or a bound is unknown or not a
+        number.
+    """
+    path = ranges_path()
+    table = read_mapping(path, error=ParameterError).get(name, {})
+    if not isinstance(table, dict):
+        raise ParameterError(f"{path}: [{name}] must be a table of parameter = {{ min = ... }}")
+    if table and defaults is None:
+        defaults = experiment_parameters(name)
+    out = {}
+    for key, bounds in table.items():
+        where = f"{path}: [{name}] {key}"
+        if key not in defaults or key == OUTPUT_PARAMETER:
+            raise ParameterError(f"{where}: the parameters cell of {name} assigns no parameter {key!r}")
+        items = defaults[key] if isinstance(defaults[key], list) else [defaults[key]]
+        if any(isinstance(v, (bool, str)) for v in items):
+            raise ParameterError(f"{where}: a range needs a numeric parameter, its default is {defaults[key]!r}")
+        if not isinstance(bounds, dict) or not bounds or set(bounds) - set(_BOUNDS):
+            raise ParameterError(f"{where}: expected an inline table of {', '.join(_BOUNDS)}, got {bounds!r}")
+        if any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in bounds.values()):
+            raise ParameterError(f"{where}: the bounds must be numbers, got {bounds!r}")
+        out[key] = dict(bounds)
+    return out
+
+
+def _range_text(key: str, bounds: Mapping[str, float]) -> str:
+    """A range as the user reads it: ``n_trials >= 1``, ``0 < top <= 1``."""
+    low = [(k, v) for k, v in bounds.items() if k in ("min", "above")]
+    high = [f"{_BOUNDS[k]} {v}" for k, v in bounds.items() if k in ("max", "below")]
+    if len(low) == 1 and high:
+        k, v = low[0]
+        return f"{v} {_BOUNDS[k].replace('>', '<')} {key} " + " and ".join(high)
+    return f"{key} " + " and ".join([f"{_BOUNDS[k]} {v}" for k, v in low] + high)
+
+
+def _check_range(name: str, key: str, value: object, bounds: Mapping[str, float]) -> None:
+    tests = {"min": lambda v, b: v >= b, "max": lambda v, b: v <= b,
+             "above": lambda v, b: v > b, "below": lambda v, b: v < b}
+    for item in value if isinstance(value, list) else [value]:
+        if not all(tests[k](item, b) for k, b in bounds.items()):
+            what = f"item {item!r} of {value!r}" if isinstance(value, list) else repr(value)
+            raise ParameterError(f"parameter {key!r} of {name} is out of range: got {what}; allowed: "
+                                 f"{_range_text(key, bounds)} (declared in {ranges_path()})")
 
 
 def run_hash(params: Mapping[str, object]) -> str:
