@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 from lab_helpers import (
     root,  # noqa: F401 (the project fixture)
-    )
+    set_default,
+)
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import runner as lab_runner
@@ -25,6 +26,7 @@ from thesis_lib.lab.experiments import (
     list_experiments,
     parameter_ranges,
     resolve_parameters,
+    run_hash,
 )
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -177,3 +179,20 @@ def test_n_trials_zero_of_the_project_is_refused_before_a_kernel(monkeypatch, ca
     assert "error: parameter 'n_trials' of two-circles-landmarks is out of range: got 0; allowed: n_trials >= 1" \
         in capsys.readouterr().err
     assert no_kernels == []
+
+
+# 7. thesis-lab list prints floats compactly, never changing the stored values
+
+
+def test_list_prints_floats_compactly(root, capsys):
+    set_default(root, "toy", "x", "0.7853981633974483")
+    set_default(root, "toy", "sleep", "2.0")
+    set_default(root, "toy", "output_mb", "1e-07")
+    assert lab_cli.main(["list"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("toy: n=3, x=0.785398, label='a', flag=False, sizes=[60, 100], fail=False, sleep=2.0, ")
+    assert "output_mb=1e-07" in out and "0.7853981633974483" not in out
+    params = resolve_parameters("toy")
+    assert params["x"] == 0.7853981633974483  # the value itself keeps every digit
+    assert run_hash(params) != run_hash({**params, "x": 0.785398})
+    assert lab_cli._display([0.1, 1e20, 3.0, 12345678.0, True, "s"]) == "[0.1, 1e+20, 3.0, 1.23457e+07, True, 's']"

@@ -128,8 +128,38 @@ def _cmd_list(args) -> int:
     for name in list_experiments():
         params = experiment_parameters(name)
         params.pop(OUTPUT_PARAMETER, None)
-        print(name + ": " + ", ".join(f"{k}={v!r}" for k, v in params.items()))
+        print(name + ": " + ", ".join(f"{k}={_display(v)}" for k, v in params.items()))
     return 0
+
+
+def _display(value: object, *, digits: int = 6) -> str:
+    """A parameter value as ``thesis-lab list`` prints it: ``repr``, floats to ``digits`` significant digits.
+
+    Only the display is shortened; the stored value and the run hash keep every digit.
+
+    Parameters
+    ----------
+    value : object
+        A parameter's value (a scalar or a list of scalars).
+    digits : int, default 6
+        Significant digits of a float; a float keeps a point (``2.0``), so it reads as a float.
+
+    Returns
+    -------
+    str
+        The text.
+
+    Examples
+    --------
+    >>> _display(0.7853981633974483), _display(2.0), _display([1e-07, 0.5]), _display("a")
+    ('0.785398', '2.0', '[1e-07, 0.5]', "'a'")
+    """
+    if isinstance(value, list):
+        return "[" + ", ".join(_display(v, digits=digits) for v in value) + "]"
+    if isinstance(value, float):
+        text = f"{value:.{digits}g}"
+        return text if any(c in text for c in ".eEn") else text + ".0"
+    return repr(value)
 
 
 def _cmd_report(args) -> int:
