@@ -5,12 +5,15 @@ markup in the help."""
 
 from __future__ import annotations
 
+import csv
 import hashlib
 import re
 from pathlib import Path
 
 import pytest
 from lab_helpers import (
+    TOY_RESULTS,
+    cli,
     root,  # noqa: F401 (the project fixture)
     set_default,
 )
@@ -88,6 +91,44 @@ def test_data_verify_of_the_project_names_its_data_sets():
     with pytest.raises(DataError, match=r"'1ecaa' .* lists: 1eca, 1grm, 3rn3, 5mbn; did you mean '1eca'\?$"):
         verify(ROOT / "data" / "manifest.toml", names=["1ecaa"])
     assert [name for name, _, _ in verify(ROOT / "data" / "manifest.toml", names=["1e", "5mbn"])] == ["1eca", "5mbn"]
+
+
+# 2. a sweep prints a compact summary on the terminal and names the full table it wrote
+
+
+def test_sweep_prints_a_compact_summary_and_the_path_of_the_full_table(root):
+    label = "a-very-long-label-" * 10
+    proc = cli(root, "sweep", "toy", "-q", "-p", "n", "1", "2", "-p", "label", label, "-p", "fail", "false", "true")
+    assert proc.returncode == 1, proc.stderr  # the runs with fail=true failed
+    lines = proc.stdout.splitlines()
+    assert all(len(line) <= 100 for line in lines[:-1]), [len(line) for line in lines]  # the last: the path
+    assert lines[0].startswith("`thesis-lab sweep toy -p n 1 2 -p label a-very")  # the command of the table
+    assert lines[1] == "4 runs: 2 ok, 2 failed"
+    assert lines[2].startswith("fixed: label=a-very-long-l…")  # one value: not a column; shortened
+    header = lines[3].split()
+    assert header[:3] == ["n", "fail", "status"] and "square" in header
+    assert [line.split()[:3] for line in lines[4:8]] == [["1", "False", "ok"], ["1", "True", "failed"],
+                                                          ["2", "False", "ok"], ["2", "True", "failed"]]
+    squares = [line.split()[header.index("square")] for line in lines[4:8] if " ok " in line]
+    assert squares == ["1", "4"]
+    table = Path(re.fullmatch(r"full table: (\S+) \(and \S+\.md\)", lines[-1]).group(1))
+    with open(table, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    assert len(rows) == 4 and rows[0]["label"] == label  # the full table keeps every column and value
+    assert {"n", "label", "fail", "status", "run", "seconds", "worker", *TOY_RESULTS} <= set(rows[0])
+    assert label in table.with_suffix(".md").read_text()
+
+
+def test_the_summary_leaves_out_the_result_columns_that_do_not_fit():
+    runs = [lab_runner.RunResult("e", {"n": n, "x": 0.1234567}, Path(f"/r/{n}"), "ok",
+                                 results={f"result_number_{i:02d}": 1 / 3 for i in range(12)}) for n in (1, 2)]
+    lines = lab_cli._summary(runs, ["n", "x"])
+    assert lines[0] == "2 runs: 2 ok" and lines[1] == "fixed: x=0.1235"
+    assert all(len(line) <= 100 for line in lines)
+    assert lines[2].split()[:3] == ["n", "status", "result_number_00"]
+    assert lines[3].split()[:3] == ["1", "ok", "0.3333"]
+    shown = len(lines[2].split()) - 2
+    assert 0 < shown < 12 and lines[-1].startswith(f"not shown ({12 - shown} result columns): result_number_")
 
 
 # 5. a misspelled experiment or parameter gets a "did you mean"

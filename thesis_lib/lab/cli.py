@@ -68,9 +68,83 @@ def _cmd_run(args) -> int:
     return 0
 
 
-def _print_table(runs, table, what: str) -> int:
-    print(table.with_suffix(".md").read_text())
-    print(f"table: {table} (and {table.with_suffix('.md').name})")
+#: the widest line of the sweep summary on the terminal, and the widest cell in it
+SUMMARY_WIDTH, CELL_WIDTH = 100, 14
+#: rows of the sweep summary (the table file has them all)
+SUMMARY_ROWS = 20
+
+
+def _short(value: object, width: int = CELL_WIDTH) -> str:
+    """A cell of the terminal summary: floats to 4 significant digits, lists joined, cut to ``width``."""
+    from .tables import cell
+
+    if isinstance(value, list):
+        value = ",".join(_short(v, width) for v in value)
+    return _cut(cell(value, digits=4), width)
+
+
+def _cut(text: str, width: int) -> str:
+    return text if len(text) <= width else text[: width - 1] + "…"
+
+
+def _summary(runs, keys: list[str], *, width: int = SUMMARY_WIDTH, max_rows: int = SUMMARY_ROWS) -> list[str]:
+    """The terminal summary of a sweep: status counts, the varied parameters and the results that fit.
+
+    Parameters
+    ----------
+    runs : list of RunResult
+        The sweep's runs, in grid order.
+    keys : list of str
+        The parameters of the grid.
+    width : int, default 100
+        The widest line: result columns are added, in the table's order, while the lines fit.
+    max_rows : int, default 20
+        The most runs shown; a last line says how many more the table holds.
+
+    Returns
+    -------
+    list of str
+        The lines: the counts, the parameters that had one value, the aligned columns, and a note
+        naming the result columns left out.
+    """
+    counts = {}
+    for r in runs:
+        counts[r.status] = counts.get(r.status, 0) + 1
+    order = ("ok", "skipped", "failed", "missing", "corrupt")
+    lines = [f"{len(runs)} runs: " + ", ".join(f"{counts[s]} {'done before' if s == 'skipped' else s}"
+                                              for s in order if counts.get(s))]
+    varied = [k for k in keys if len({_short(r.params[k], 10**6) for r in runs}) > 1] or list(keys)
+    fixed = [k for k in keys if k not in varied and runs]
+    if fixed:
+        lines.append(_cut("fixed: " + ", ".join(f"{k}={_short(runs[0].params[k])}" for k in fixed), width))
+    shown = runs[:max_rows]
+    columns = [(k, [_short(r.params[k]) for r in shown]) for k in varied]
+    columns.append(("status", ["ok" if r.status == "skipped" else r.status for r in shown]))
+    result_keys = sorted({k for r in runs for k in r.results})
+    left_out = []
+    for key in result_keys:
+        cells = [_short(r.results.get(key, "")) for r in shown]
+        trial = columns + [(key, cells)]
+        if sum(max(len(t), *map(len, c)) for t, c in trial) + 2 * (len(trial) - 1) <= width:
+            columns = trial
+        else:
+            left_out.append(key)
+    widths = [max(len(t), *map(len, c)) for t, c in columns]
+    lines.append("  ".join(t.ljust(w) for (t, _), w in zip(columns, widths)).rstrip())
+    for i in range(len(shown)):
+        lines.append("  ".join(c[i].ljust(w) for (_, c), w in zip(columns, widths)).rstrip())
+    if len(runs) > len(shown):
+        lines.append(f"... {len(runs) - len(shown)} more runs in the table")
+    if left_out:
+        lines.append(_cut(f"not shown ({len(left_out)} result columns): " + ", ".join(left_out), width))
+    return lines
+
+
+def _print_table(runs, table, what: str, keys: list[str]) -> int:
+    md = table.with_suffix(".md")
+    print(_cut(md.read_text().split("\n", 1)[0], SUMMARY_WIDTH))  # the command that gives the table
+    print("\n".join(_summary(runs, keys)))
+    print(f"full table: {table} (and {md.name})")
     bad = [r for r in runs if r.status in ("failed", "missing", "corrupt")]
     for r in bad:
         detail = {"failed": f"{r.error} (see {r.path / 'error.txt'})", "missing": f"no run folder {r.path}",
@@ -102,14 +176,15 @@ def _cmd_sweep(args) -> int:
     if args.shard:
         print(f"shard {args.shard} done; when every shard is done: thesis-lab collect {args.experiment} "
               + " ".join(f"-p {k} " + " ".join(v) for k, v in grid.items()))
-    return _print_table(runs, table, "sweep")
+    return _print_table(runs, table, "sweep", list(grid))
 
 
 def _cmd_collect(args) -> int:
     from .sweep import collect
 
-    runs, table = collect(args.experiment, _grid(args.param), keep=args.keep)
-    return _print_table(runs, table, "collect")
+    grid = _grid(args.param)
+    runs, table = collect(args.experiment, grid, keep=args.keep)
+    return _print_table(runs, table, "collect", list(grid))
 
 
 def _cmd_store(args) -> int:
