@@ -42,6 +42,17 @@ class Filtration:
         at ``max_dim``): when the complex reaches it, ``truncated`` is True, since its top simplices
         may have cofaces that were never built, and persistence reports that dimension as incomplete
         (Theorem 2.39).
+
+    Examples
+    --------
+    Two vertices entering at 0 and the edge joining them at 1:
+
+    >>> import numpy as np
+    >>> f = Filtration([np.array([[0], [1]]), np.array([[0, 1]])], [np.array([0.0, 0.0]), np.array([1.0])])
+    >>> f.counts(), f.dimension, f.has_values
+    ([2, 1], 1, True)
+    >>> f.threshold(0.5).counts()
+    [2]
     """
 
     def __init__(self, simplices: Sequence[np.ndarray], values: Sequence[np.ndarray] | None = None, *,
@@ -87,6 +98,12 @@ class Filtration:
         ValueError
             An entry that is not a pair, a NaN or decreasing value, a face listed after its coface
             (or missing), a simplex listed twice, or no entries at all.
+
+        Examples
+        --------
+        >>> f = Filtration.from_pairs([((0,), 0.0), ((1,), 0.0), ((0, 1), 1.0)])
+        >>> f.counts(), [v.tolist() for v in f.values]
+        ([2, 1], [[0.0, 0.0], [1.0]])
         """
         seen: set[tuple[int, ...]] = set()
         last = -np.inf
@@ -143,6 +160,16 @@ class Filtration:
         ------
         ValueError
             Empty input or an invalid simplex (see :func:`~thesis_lib.simplicial.as_simplex_array`).
+
+        Examples
+        --------
+        The triangle [0, 1, 2] with all its faces:
+
+        >>> f = Filtration.from_simplices([(0, 1, 2)])
+        >>> f.counts(), f.has_values
+        ([3, 3, 1], False)
+        >>> f.simplices[1].tolist()
+        [[0, 1], [0, 2], [1, 2]]
         """
         if isinstance(simplices, np.ndarray) and simplices.ndim == 2:
             groups = {simplices.shape[1]: simplices}
@@ -174,6 +201,16 @@ class Filtration:
         -------
         Filtration
             The same simplices and filtration values.
+
+        Examples
+        --------
+        >>> import gudhi
+        >>> st = gudhi.SimplexTree()
+        >>> st.insert([0, 1, 2], filtration=1.0)
+        True
+        >>> f = Filtration.from_simplex_tree(st)
+        >>> f.counts(), f.values[2].tolist()
+        ([3, 3, 1], [1.0])
         """
         return cls.from_pairs((s, v) for s, v in simplex_tree.get_filtration())
 
@@ -184,6 +221,12 @@ class Filtration:
         -------
         gudhi.SimplexTree
             A new simplex tree holding every simplex with its value (0 for a plain complex).
+
+        Examples
+        --------
+        >>> st = Filtration.from_pairs([((0,), 0.0), ((1,), 0.0), ((0, 1), 1.0)]).to_simplex_tree()
+        >>> list(st.get_filtration())
+        [([0], 0.0), ([1], 0.0), ([0, 1], 1.0)]
         """
         import gudhi
 
@@ -223,7 +266,13 @@ class Filtration:
     # ------------------------------------------------------------------ queries
     @property
     def dimension(self) -> int:
-        """Largest dimension of a simplex (-1 for an empty filtration)."""
+        """Largest dimension of a simplex (-1 for an empty filtration).
+
+        Examples
+        --------
+        >>> Filtration.from_simplices([(0, 1, 2), (2, 3)]).dimension
+        2
+        """
         return len(self.simplices) - 1
 
     def __len__(self) -> int:
@@ -236,6 +285,14 @@ class Filtration:
         -------
         list of int
             Entry ``d`` is the number of ``d``-simplices, for ``d = 0, ..., dimension``.
+
+        Examples
+        --------
+        The filtration of Figure 2.11 has five vertices a, ..., e, six edges and one triangle:
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> example_filtration().counts()
+        [5, 6, 1]
         """
         return [int(s.shape[0]) for s in self.simplices]
 
@@ -258,6 +315,17 @@ class Filtration:
         ------
         ValueError
             If ``d`` is out of range, or a facet is missing from ``simplices[d - 1]``.
+
+        Examples
+        --------
+        The facets of the triangle [0, 1, 2] omitting vertex 0, 1, 2 are the edges [1, 2], [0, 2], [0, 1]
+        (rows 2, 1, 0 of ``simplices[1]``):
+
+        >>> f = Filtration.from_simplices([(0, 1, 2)])
+        >>> f.facet_indices(2).tolist()
+        [[2, 1, 0]]
+        >>> f.simplices[1][f.facet_indices(2)[0]].tolist()
+        [[1, 2], [0, 2], [0, 1]]
         """
         if d < 1 or d > self.dimension:
             raise ValueError(f"no facets for dimension {d} in a filtration of dimension {self.dimension}")
@@ -313,6 +381,14 @@ class Filtration:
         ------
         ValueError
             If ``k`` is not an integer >= 0.
+
+        Examples
+        --------
+        The 1-skeleton of a triangle is its boundary circle, marked truncated:
+
+        >>> f = Filtration.from_simplices([(0, 1, 2)]).skeleton(1)
+        >>> f.counts(), f.truncated
+        ([3, 3], True)
         """
         if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
             raise ValueError(f"skeleton dimension must be an integer >= 0, got {k!r}")
@@ -340,6 +416,15 @@ class Filtration:
         ------
         ValueError
             If ``value`` is NaN or no vertex has a value at most ``value``.
+
+        Examples
+        --------
+        K^1 of the filtration of Figure 2.11: the vertices a, b, c, d and the edges ab, cd:
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> k1 = example_filtration().threshold(1)
+        >>> k1.counts(), k1.simplices[1].tolist()
+        ([4, 2], [[0, 1], [2, 3]])
         """
         value = float(value)
         if np.isnan(value):
@@ -415,6 +500,15 @@ def as_complex(obj: Filtration | Iterable[Any] | np.ndarray) -> Filtration:
         a face that enters after its coface, or a point cloud given where a complex is needed.
     TypeError
         An object that is not iterable.
+
+    Examples
+    --------
+    Simplices give a plain complex (all faces added); ``(simplex, value)`` pairs a filtration:
+
+    >>> as_complex([(0, 1), (1, 2)]).counts()
+    [3, 2]
+    >>> as_complex([((0,), 0.0), ((1,), 0.0), ((0, 1), 2.0)]).values[1].tolist()
+    [2.0]
     """
     if isinstance(obj, Filtration):
         if len(obj) == 0:

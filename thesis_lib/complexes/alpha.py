@@ -109,6 +109,18 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     about 1e-13 relative).  Coordinates of any magnitude are scaled by a power of two first;
     values that do not fit in float64 raise ``ValueError``.  A complex estimated above
     ``MAX_DELAUNAY_SIMPLICES`` simplices is refused up front.
+
+    Examples
+    --------
+    Values are squared radii: an edge of length 1 enters at (1/2)² = 0.25, the right triangle at
+    the square of half its hypotenuse:
+
+    >>> import numpy as np
+    >>> a = alpha([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.2]])
+    >>> a.counts()
+    [4, 5, 2]
+    >>> np.round(a.values[1], 6).tolist(), np.round(a.values[2], 6).tolist()
+    ([0.25, 0.25, 0.5, 0.36, 0.26], [0.5, 0.52])
     """
     check_delaunay_size(points)
     geo, e = prepare_geometry(points, weights)

@@ -64,6 +64,20 @@ def cech(points: npt.ArrayLike, *, max_radius: float, max_dim: int) -> Filtratio
     Candidates come from the Rips complex R(X, ε) ⊇ C(X, ε) (a set of diameter > 2ε fits in no
     ball of radius ε); each level is expanded from the Čech simplices of the level below and kept
     when its enclosing radius is <= ε.  Vertices enter at 0, an edge at half its length.
+
+    Examples
+    --------
+    On an equilateral triangle of side 1 the triangle enters the Čech filtration at its circumradius
+    1/√3, later than in the Rips filtration (half its diameter, 0.5):
+
+    >>> import numpy as np
+    >>> from thesis_lib.complexes import rips
+    >>> triangle = [[0.0, 0.0], [1.0, 0.0], [0.5, np.sqrt(3) / 2]]
+    >>> c = cech(triangle, max_radius=1.0, max_dim=2)
+    >>> c.counts(), np.round(c.values[1], 6).tolist(), round(float(c.values[2][0]), 6)
+    ([3, 3, 1], [0.5, 0.5, 0.5], 0.57735)
+    >>> round(float(rips(triangle, max_radius=1.0, max_dim=2).values[2][0]), 6)
+    0.5
     """
     eps = check_radius(max_radius)
     max_dim = check_max_dim(max_dim)

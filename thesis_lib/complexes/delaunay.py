@@ -82,6 +82,19 @@ def delaunay(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> lis
     ValueError
         Invalid points or weights, or a complex estimated above ``MAX_DELAUNAY_SIMPLICES``
         simplices (``check_delaunay_size``).
+
+    Examples
+    --------
+    Four points in convex position, not co-circular: two triangles sharing the diagonal (1, 2):
+
+    >>> delaunay([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.2]])[4:]
+    [(0, 1), (0, 2), (1, 2), (1, 3), (2, 3), (0, 1, 2), (1, 2, 3)]
+
+    The four corners of a square lie on one empty circle, so the nerve keeps the whole cell, a
+    tetrahedron:
+
+    >>> delaunay([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])[-1]
+    (0, 1, 2, 3)
     """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components

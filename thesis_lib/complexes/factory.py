@@ -32,6 +32,15 @@ def choose_landmarks(points: npt.ArrayLike, *, landmark_method: str, n: int, see
     Returns
     -------
     ndarray of int64
+
+    Examples
+    --------
+    >>> from thesis_lib.datasets import noisy_circle
+    >>> points = noisy_circle(40, noise=0.0, seed=0)
+    >>> choose_landmarks(points, landmark_method="maxmin", n=4, seed=0).tolist()
+    [34, 20, 1, 4]
+    >>> choose_landmarks(points, landmark_method="random", n=4, seed=0).tolist()
+    [10, 19, 24, 31]
     """
     if not isinstance(landmark_method, str) or landmark_method not in LANDMARK_METHODS:
         raise ValueError(f"landmark_method must be one of {sorted(LANDMARK_METHODS)}, got {landmark_method!r}")
@@ -65,6 +74,17 @@ def build_filtration(
     Returns
     -------
     Filtration
+
+    Examples
+    --------
+    The witness filtration on eight maxmin landmarks of a circle (see :func:`witness`):
+
+    >>> from thesis_lib.datasets import noisy_circle
+    >>> from thesis_lib.persistence import persistence
+    >>> points = noisy_circle(40, noise=0.0, seed=0)
+    >>> f = build_filtration(points, complex="witness", max_radius=1.0, max_dim=2, n_landmarks=8)
+    >>> f.counts(), persistence(f).intervals(1).round(6).tolist()
+    ([8, 22, 20], [[0.503326, inf]])
     """
     if not isinstance(complex, str):
         raise ValueError(f"complex must be one of {COMPLEXES}, got {complex!r}")

@@ -101,6 +101,15 @@ def smallest_enclosing_ball(points: npt.ArrayLike, *, seed: int = 0) -> tuple[np
     ------
     ValueError
         Invalid points, or a radius beyond float64's range (points near ±1.8e308 in several axes).
+
+    Examples
+    --------
+    The smallest disc around the unit square is centred at its middle, of radius √2/2:
+
+    >>> import numpy as np
+    >>> centre, radius = smallest_enclosing_ball([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    >>> np.round(centre, 6).tolist(), round(radius, 6)
+    ([0.5, 0.5], 0.707107)
     """
     pts, e = scaled(as_points(points))  # power-of-two scaling: squared distances stay finite
     n, dim = pts.shape

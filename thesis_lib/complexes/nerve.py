@@ -32,6 +32,16 @@ def nerve(cover: Sequence[Iterable], *, max_dim: int | None = None) -> list[tupl
     ------
     ValueError
         If the nerve grows beyond ``MAX_NERVE_SIMPLICES`` (10⁶) simplices (it can have 2^|I| − 1).
+
+    Examples
+    --------
+    Three sets meeting pairwise but with no common element: the nerve is a hollow triangle.  Once they
+    share the element 3, the triangle is filled:
+
+    >>> nerve([{1, 2}, {2, 3}, {3, 1}])
+    [(0,), (1,), (2,), (0, 1), (0, 2), (1, 2)]
+    >>> nerve([{1, 2, 3}, {2, 3}, {3, 1}])[-1]
+    (0, 1, 2)
     """
     if isinstance(cover, (str, bytes)) or not hasattr(cover, "__len__"):
         raise ValueError("cover must be a sequence of sets")

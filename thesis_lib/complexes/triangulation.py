@@ -646,6 +646,15 @@ def regular_triangulation(points: npt.ArrayLike,
     ValueError
         As ``prepare_geometry``, for points on a hyperplane, or for a triangulation estimated above
         the Delaunay budget (``check_delaunay_size``, R^5 and up).
+
+    Examples
+    --------
+    Without weights, the Delaunay triangulation; each triangle's neighbour across the facet opposite
+    vertex i (−1 on the hull):
+
+    >>> simplices, neighbours = regular_triangulation([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.2]])
+    >>> simplices.tolist(), neighbours.tolist()
+    ([[0, 1, 2], [1, 2, 3]], [[1, -1, -1], [-1, -1, 0]])
     """
     from .delaunay import check_delaunay_size  # (delaunay builds on this module)
 
