@@ -14,6 +14,7 @@ import pytest
 from lab_helpers import (
     TOY_RESULTS,
     cli,
+    make_project,
     root,  # noqa: F401 (the project fixture)
     set_default,
 )
@@ -129,6 +130,46 @@ def test_the_summary_leaves_out_the_result_columns_that_do_not_fit():
     assert lines[3].split()[:3] == ["1", "ok", "0.3333"]
     shown = len(lines[2].split()) - 2
     assert 0 < shown < 12 and lines[-1].startswith(f"not shown ({12 - shown} result columns): result_number_")
+
+
+# 3. run --help describes its arguments and lists the experiments; 8. no RST markup in any help
+
+
+def test_run_help_describes_its_arguments_and_lists_the_experiments(tmp_path, capsys):
+    project = make_project(tmp_path / "project", ("toy", "two-circles"))
+    assert lab_cli.main(["--project", str(project), "run", "--help"]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"experiment +the experiment: a name that `thesis-lab list` shows", out)
+    assert re.search(r"-p NAME VALUE, --param NAME VALUE\n +set a parameter", out)
+    assert out.rstrip().endswith("experiments (thesis-lab list shows their parameters):\n  toy\n  two-circles")
+    assert lab_cli.main(["--project", str(project), "sweep", "--help"]) == 0
+    assert capsys.readouterr().out.rstrip().endswith("\n  toy\n  two-circles")
+
+
+def test_help_texts_carry_no_rst_markup(root, capsys):
+    parser = lab_cli.build_parser()
+    commands = parser.commands.choices
+    assert set(commands) == {"run", "sweep", "collect", "store", "list", "report", "data"}
+    for text in [parser.format_help(), *(p.format_help() for p in commands.values())]:
+        assert "``" not in text, text
+    assert "The thesis-lab command line: run and sweep experiments" in parser.format_help()
+
+
+# 4. an unknown option of a subcommand is answered with that subcommand's usage
+
+
+@pytest.mark.parametrize("argv, usage", [
+    (["run", "toy", "--bogus"], "expected: thesis-lab run [-h] [-p NAME VALUE] [--force] [-q] experiment ("),
+    (["sweep", "toy", "-p", "n", "1", "--frobnicate"], "expected: thesis-lab sweep [-h] [-p NAME VALUE [NAME VALUE"),
+    (["data", "verify", "--all"], "expected: thesis-lab data [-h] {verify,fetch} [names ...] ("),
+])
+def test_an_unknown_option_shows_the_subcommand_usage(root, capsys, no_kernels, argv, usage):
+    assert lab_cli.main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"error: unrecognized arguments: {argv[-1]}; {usage}")
+    assert err.endswith(f"(see `thesis-lab {argv[0]} --help`)\n") and err.count("\n") == 1  # one line
+    assert "`thesis-lab --help`" not in err
+    assert no_kernels == []
 
 
 # 5. a misspelled experiment or parameter gets a "did you mean"

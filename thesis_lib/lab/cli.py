@@ -15,6 +15,7 @@ import argparse
 import contextlib
 import errno
 import os
+import re
 import signal
 import sys
 
@@ -282,10 +283,14 @@ def _positive_float(text: str) -> float:
     return value
 
 
+_EXPERIMENT_HELP = "the experiment: a name that `thesis-lab list` shows (listed below)"
+
+
 def _grid_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("experiment")
+    p.add_argument("experiment", help=_EXPERIMENT_HELP)
     p.add_argument("-p", "--param", nargs="+", action="append", metavar="NAME VALUE",
-                   help="a parameter and its values (repeat -p for more parameters)")
+                   help="a parameter and its values (repeat -p for more parameters); a list parameter's "
+                        "value is comma-separated (60,100) or a JSON list")
     p.add_argument("--keep", action="store_true", help="also store the table with the default run (for the book)")
 
 
@@ -293,11 +298,66 @@ class UsageError(Exception):
     """A command line that argparse cannot read (reported as ``error: ...``, exit status 2)."""
 
 
+def _plain(text: str | None) -> str | None:
+    """Help text without reStructuredText's double backticks (``x`` reads as x on a terminal)."""
+    return re.sub(r"``(.+?)``", r"\1", text) if text else text
+
+
+class _Formatter(argparse.RawDescriptionHelpFormatter):
+    """Help without RST markup; descriptions and epilogs keep their lines (the list of experiments)."""
+
+    def _format_text(self, text: str) -> str:
+        return super()._format_text(_plain(text))
+
+    def _expand_help(self, action) -> str:
+        return _plain(super()._expand_help(action))
+
+
 class _Parser(argparse.ArgumentParser):
-    """argparse that raises :class:`UsageError` instead of printing the usage and exiting."""
+    """argparse that raises :class:`UsageError` instead of printing the usage and exiting.
+
+    ``epilog_of``, a function of no arguments, gives the epilog when the help is printed (the
+    experiments of the project the command runs on); an unknown option after a subcommand is
+    reported with that subcommand's usage (on the one line of the error).
+    """
+
+    def __init__(self, *args, epilog_of=None, **kwargs):
+        kwargs.setdefault("formatter_class", _Formatter)
+        super().__init__(*args, **kwargs)
+        self.epilog_of = epilog_of
+        self.commands = None
+
+    def add_subparsers(self, **kwargs):
+        self.commands = super().add_subparsers(**kwargs)
+        return self.commands
+
+    def format_help(self) -> str:
+        if self.epilog_of is not None:
+            self.epilog = self.epilog_of()
+        return super().format_help()
+
+    def parse_known_args(self, args=None, namespace=None):
+        parsed, extra = super().parse_known_args(args, namespace)
+        commands = self.commands.choices if self.commands is not None else {}
+        if extra and getattr(parsed, "command", None) in commands:
+            commands[parsed.command].error("unrecognized arguments: " + " ".join(extra))
+        return parsed, extra
 
     def error(self, message: str):
-        raise UsageError(f"{message} (see `{self.prog} --help`)")
+        synopsis = " ".join(self.format_usage().split()[1:])  # one line: "usage: prog ..." without "usage:"
+        raise UsageError(f"{message}; expected: {synopsis} (see `{self.prog} --help`)")
+
+
+def _experiments_epilog() -> str:
+    """The experiments of the project, one a line (or why there are none), for the help's epilog."""
+    from .experiments import list_experiments
+    from .paths import ProjectError
+
+    try:
+        names = list_experiments()
+    except ProjectError as exc:
+        return f"experiments: none found ({exc})"
+    return "experiments (thesis-lab list shows their parameters):\n" + "\n".join(f"  {n}" for n in names)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -315,14 +375,20 @@ def build_parser() -> argparse.ArgumentParser:
                         help="the project folder (default: $THESIS_LAB_PROJECT, else the current folder or above)")
     sub = parser.add_subparsers(dest="command", required=True)
 
-    p = sub.add_parser("run", help="run one experiment into runs/NAME/<hash>/")
-    p.add_argument("experiment")
-    p.add_argument("-p", "--param", nargs=2, action="append", metavar=("NAME", "VALUE"))
+    def command(name: str, text: str, **kwargs) -> argparse.ArgumentParser:
+        return sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".", **kwargs)
+
+    p = command("run", "run one experiment into runs/NAME/<hash>/", epilog_of=_experiments_epilog)
+    p.add_argument("experiment", help=_EXPERIMENT_HELP)
+    p.add_argument("-p", "--param", nargs=2, action="append", metavar=("NAME", "VALUE"),
+                   help="set a parameter (repeat -p for more); `thesis-lab list` shows each experiment's "
+                        "parameters and defaults; a list parameter's value is comma-separated (60,100) or "
+                        "a JSON list")
     p.add_argument("--force", action="store_true", help="run again even if complete")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress (shown only on a terminal anyway)")
     p.set_defaults(func=_cmd_run)
 
-    p = sub.add_parser("sweep", help="run the Cartesian grid of parameter values")
+    p = command("sweep", "run the Cartesian grid of parameter values", epilog_of=_experiments_epilog)
     _grid_options(p)
     p.add_argument("-j", "--jobs", type=_int_from(1), default=1,
                    help="runs at a time (local), or worker processes of the LocalCluster (dask, no --scheduler)")
@@ -336,22 +402,23 @@ def build_parser() -> argparse.ArgumentParser:
                    help="largest total size of one run's outputs sent back from a worker (default 64)")
     p.set_defaults(func=_cmd_sweep)
 
-    p = sub.add_parser("collect", help="the sweep table from the run folders that exist (after --shard runs)")
+    p = command("collect", "the sweep table from the run folders that exist (after --shard runs)",
+                epilog_of=_experiments_epilog)
     _grid_options(p)
     p.set_defaults(func=_cmd_collect)
 
-    p = sub.add_parser("store", help="re-execute stored default runs in place (all experiments by default)")
+    p = command("store", "re-execute stored default runs in place (all experiments by default)")
     p.add_argument("targets", nargs="*", help="experiment names or notebook paths")
     p.set_defaults(func=_cmd_store)
 
-    p = sub.add_parser("list", help="list experiments and their default parameters")
+    p = command("list", "list experiments and their default parameters")
     p.set_defaults(func=_cmd_list)
 
-    p = sub.add_parser("report", help="the reproduction report")
+    p = command("report", "the reproduction report")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=_cmd_report)
 
-    p = sub.add_parser("data", help="the data layer")
+    p = command("data", "the data layer")
     p.add_argument("action", choices=["verify", "fetch"])
     p.add_argument("names", nargs="*",
                    help="the data sets: verify takes names, their starts or sha256 prefixes (4+ hex digits); "
@@ -405,21 +472,32 @@ def main(argv: list[str] | None = None) -> int:
 def _main(argv: list[str] | None) -> int:
     from .paths import PROJECT_ENV, is_project
 
-    try:
-        args = build_parser().parse_args(argv)
-    except UsageError as exc:
-        _err(f"error: {exc}")
-        return 2
-    except SystemExit as exc:  # --help printed the usage
-        return exc.code if isinstance(exc.code, int) else 0
-    if args.project:
-        if not is_project(args.project):
-            why = "does not exist" if not os.path.exists(args.project) else (
-                "is not a folder" if not os.path.isdir(args.project) else "has no experiments/ and data/manifest.toml")
-            _err(f"error: --project {args.project!r} is not a thesis-lab project: it {why}")
+    folder = _project_option(argv)
+    if folder:
+        if not is_project(folder):
+            why = "does not exist" if not os.path.exists(folder) else (
+                "is not a folder" if not os.path.isdir(folder) else "has no experiments/ and data/manifest.toml")
+            _err(f"error: --project {folder!r} is not a thesis-lab project: it {why}")
             return 2
-    with _project_named(PROJECT_ENV, args.project):
+    with _project_named(PROJECT_ENV, folder):  # before parsing: the help lists the project's experiments
+        try:
+            args = build_parser().parse_args(argv)
+        except UsageError as exc:
+            _err(f"error: {exc}")
+            return 2
+        except SystemExit as exc:  # --help printed the usage
+            return exc.code if isinstance(exc.code, int) else 0
         return _run(args)
+
+
+def _project_option(argv: list[str] | None) -> str | None:
+    """The value of ``--project`` in ``argv`` (None if absent or unreadable: the full parse reports it)."""
+    pre = _Parser(add_help=False)
+    pre.add_argument("--project")
+    try:
+        return pre.parse_known_args(sys.argv[1:] if argv is None else argv)[0].project
+    except UsageError:
+        return None
 
 
 @contextlib.contextmanager
