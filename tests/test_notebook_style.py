@@ -27,6 +27,7 @@ CONFORMING = (
     "book/ch5-crust-nd.ipynb",
     "book/ch5-radius-curvature.ipynb",
     "book/intro.ipynb",
+    "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
     "experiments/range-patches.ipynb",
     "experiments/rp2-morse.ipynb",
