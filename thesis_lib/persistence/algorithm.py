@@ -73,6 +73,15 @@ def compute_intervals(filtration: Filtration | Iterable[Any], *, coefficients: i
     ------
     ValueError
         A complex :func:`~thesis_lib.filtration.as_complex` refuses, or ``coefficients`` not a prime.
+
+    Examples
+    --------
+    Example 2.38 by the thesis's Algorithms 1 and 2, over Z/2:
+
+    >>> from thesis_lib.datasets import example_filtration
+    >>> barcode = compute_intervals(example_filtration(), coefficients=2)
+    >>> barcode.intervals(0).tolist(), barcode.intervals(1).tolist()
+    ([[0.0, 1.0], [0.0, inf], [1.0, 2.0], [2.0, 3.0]], [[2.0, inf], [3.0, 4.0]])
     """
     K = as_complex(filtration)
     field = parse_field(coefficients, default=2, field=True)
@@ -227,6 +236,23 @@ def trace_matrices(trace: list[dict[str, Any]], *, coefficients: int,
     ------
     ValueError
         A trace that is not the full list filled by :func:`compute_intervals`.
+
+    Examples
+    --------
+    The tables of Example 2.41.  Row a before the reduction: the edges ab and ad have a as a face,
+    entering 1 and 2 steps after it.  The column of bc is reduced to zero (bc closes the loop abcd):
+
+    >>> from thesis_lib.datasets import example_filtration
+    >>> from thesis_lib.persistence import compute_intervals
+    >>> trace = []
+    >>> _ = compute_intervals(example_filtration(), coefficients=2, trace=trace)
+    >>> before, after = trace_matrices(trace, coefficients=2, names="abcde")
+    >>> before[0]
+    ['*', 'a', 'b', 'c', 'd', 'e', 'ab', 'cd', 'ad', 'bc', 'de', 'ce', 'cde']
+    >>> before[1]
+    ['a', '0', '0', '0', '0', '0', 't', '0', 't^2', '0', '0', '0', '0']
+    >>> [row[9] for row in before[1:4]], [row[9] for row in after[1:4]]
+    (['0', 't^2', 't'], ['0', '0', '0'])
     """
     if not trace or "order" not in trace[0]:
         raise ValueError("trace must be the full list filled by compute_intervals(..., trace=[])")

@@ -57,6 +57,17 @@ def apparent_pairs(filtration: Filtration | Iterable[Any], *,
     list of (tuple of int, tuple of int)
         The pairs ``(sigma, tau)`` as vertex tuples, σ a facet of τ, by increasing dimension of τ
         and, within one, by τ's index in ``filtration.simplices``.
+
+    Examples
+    --------
+    The Rips filtration of the unit square: each vertex but the first is paired with its first edge,
+    and a diagonal with a triangle:
+
+    >>> from thesis_lib.complexes import rips
+    >>> square = rips([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], max_radius=1.0, max_dim=2)
+    >>> pairs = apparent_pairs(square)
+    >>> len(pairs), pairs[:4]
+    (5, [((1,), (0, 1)), ((3,), (0, 3)), ((2,), (1, 2)), ((0, 2), (0, 1, 2))])
     """
     K = as_complex(filtration)
     pairs = []
@@ -89,6 +100,17 @@ def apparent_summary(filtration: Filtration | Iterable[Any]) -> dict[str, Any]:
         ``critical_fraction`` and ``zero_critical_fraction`` of all cells, and the same fractions of the
         cells below the top dimension (``*_below_top``): those are the columns a cohomology reduction
         works on (a truncated complex's top simplices are only rows: their cofaces were never built).
+
+    Examples
+    --------
+    The same square as in :func:`apparent_pairs`: one vertex, one edge and two triangles are left
+    critical:
+
+    >>> from thesis_lib.complexes import rips
+    >>> square = rips([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], max_radius=1.0, max_dim=2)
+    >>> summary = apparent_summary(square)
+    >>> summary["simplices"], summary["critical"], round(summary["critical_fraction"], 6)
+    ([4, 6, 4], [1, 1, 2], 0.285714)
     """
     K = as_complex(filtration)
     counts = K.counts()

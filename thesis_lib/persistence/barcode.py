@@ -148,6 +148,18 @@ class Barcode:
     min_persistence : intervals with ``death − birth <= min_persistence`` are left out (default 0:
         only the zero-length ones).  A tolerance for the bars of length ~1e-16 that tied distances
         give in floating point (ripser drops them: its distances are float32).
+
+    Examples
+    --------
+    The barcode of the filtration of Figure 2.11 (Example 2.38) over Z/2:
+
+    >>> from thesis_lib.datasets import example_filtration
+    >>> from thesis_lib.persistence import persistence
+    >>> barcode = persistence(example_filtration(), coefficients=2)
+    >>> barcode
+    Barcode(H0: 4 (1 essential), H1: 2 (1 essential), H2: 0 (0 essential))
+    >>> barcode.intervals(1).tolist()
+    [[2.0, inf], [3.0, 4.0]]
     """
 
     def __init__(
@@ -225,6 +237,15 @@ class Barcode:
         -------
         Barcode
             Without simplices or coefficients (``coefficients`` is None).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> b = Barcode.from_pairs([(0, (0.0, np.inf)), (0, (0.0, 1.0)), (1, (1.0, 2.0))])
+        >>> b
+        Barcode(H0: 2 (1 essential), H1: 1 (0 essential))
+        >>> b.betti(1.5)
+        [1, 1]
         """
         by_dim: dict[int, list[tuple[float, float]]] = {}
         for dim, (b, d) in pairs:
@@ -257,6 +278,15 @@ class Barcode:
             ``diagrams`` is not a list of arrays.
         ValueError
             A diagram that is not ``(m, 2)``, a NaN, or a death before its birth.
+
+        Examples
+        --------
+        The diagrams of the unit square in ripser's layout (ε values):
+
+        >>> import numpy as np
+        >>> b = Barcode.from_diagrams([np.array([[0.0, np.inf], [0.0, 0.5]]), np.array([[0.5, 0.71]])])
+        >>> b.dimensions, b.betti(0.6)
+        ((0, 1), [1, 1])
         """
         if isinstance(diagrams, (str, bytes, dict)) or not hasattr(diagrams, "__iter__"):
             raise TypeError(f"diagrams must be a list of (m, 2) arrays, got {type(diagrams).__name__}")
@@ -326,6 +356,16 @@ class Barcode:
 
         Thesis: Theorem 2.39 (a class of H_p dies only by a (p+1)-simplex, so H_p is known only when
         the (p+1)-simplices are all built).
+
+        Examples
+        --------
+        A Rips complex cut at ``max_dim = 2`` has complete H_0 and H_1 only:
+
+        >>> from thesis_lib.complexes import rips
+        >>> from thesis_lib.persistence import persistence
+        >>> barcode = persistence(rips([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], max_radius=1.0, max_dim=2))
+        >>> barcode.dimensions, barcode.complete_dimensions
+        ((0, 1, 2), (0, 1))
         """
         return self._complete
 
@@ -334,6 +374,13 @@ class Barcode:
         """The homology dimensions this barcode covers (0 .. dim K for a computed barcode).
 
         Thesis: Algorithm 2 (one list L_p of P-intervals for p = 0 .. dim K).
+
+        Examples
+        --------
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).dimensions
+        (0, 1, 2)
         """
         return self._dims
 
@@ -376,6 +423,15 @@ class Barcode:
         -------
         numpy.ndarray, shape (k, 2)
             Read-only, sorted by ``(birth, death)``, zero-length intervals left out.
+
+        Examples
+        --------
+        Example 2.38: the components born at a and b merge at 1, those of d and e die at 2 and 3:
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).intervals(0).tolist()
+        [[0.0, 1.0], [0.0, inf], [1.0, 2.0], [2.0, 3.0]]
         """
         return self._get(_dimension(dim))[0]
 
@@ -397,6 +453,16 @@ class Barcode:
         -------
         int or list of int
             β_dim at ``value``; a list over :attr:`complete_dimensions` when ``dim`` is None.
+
+        Examples
+        --------
+        At value 2.5 the complex of Figure 2.11 has two components and one loop:
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> barcode = persistence(example_filtration())
+        >>> barcode.betti(2.5), barcode.betti(3.5, dim=1)
+        ([2, 1, 0], 2)
         """
         if dim is None:
             return [self.persistent_betti(value, 0.0, dim=d) for d in self._complete]
@@ -427,6 +493,15 @@ class Barcode:
         ------
         ValueError
             ``l`` or ``k`` NaN, or ``k < 0``.
+
+        Examples
+        --------
+        One H_0 class alive all through [1, 2] (the essential one; [1, 2) itself dies at 2):
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).persistent_betti(1, 1, dim=0)
+        1
         """
         l, k = float(l), float(k)
         if np.isnan(l) or np.isnan(k):
@@ -450,6 +525,13 @@ class Barcode:
         -------
         list of (int, (float, float))
             Every computed dimension's intervals, complete or not.
+
+        Examples
+        --------
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).as_pairs()[-2:]
+        [(1, (2.0, inf)), (1, (3.0, 4.0))]
         """
         return [(d, (float(b), float(e))) for d in self._dims for b, e in self.intervals(d).tolist()]
 
@@ -469,6 +551,15 @@ class Barcode:
         -------
         numpy.ndarray of int
             Row indices into ``intervals(dim)``; essential intervals count as longest, ties by birth.
+
+        Examples
+        --------
+        Rows of ``intervals(0)``: the essential class first, then the longest finite one (ties by birth):
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).longest(0, n=2).tolist()
+        [1, 0]
         """
         from .._validate import check_int
 
@@ -501,6 +592,15 @@ class Barcode:
         -------
         bool
             True when :meth:`difference` finds none.
+
+        Examples
+        --------
+        The thesis's Algorithm 2 and the fast engine agree on Example 2.38:
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import compute_intervals, persistence
+        >>> compute_intervals(example_filtration(), coefficients=2).allclose(persistence(example_filtration()))
+        True
         """
         return self.difference(other, atol=atol) is None
 
@@ -527,6 +627,15 @@ class Barcode:
             ``other`` is not a Barcode, or ``atol`` is not a number.
         ValueError
             ``atol`` is NaN or negative.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> other = Barcode.from_pairs([(0, (0.0, np.inf)), (0, (0.0, 1.0)), (1, (1.0, 2.0))])
+        >>> persistence(example_filtration()).difference(other)
+        'H0: 4 intervals vs 2'
         """
         if not isinstance(other, Barcode):
             raise TypeError(f"other must be a Barcode, got {type(other).__name__}")
@@ -578,6 +687,16 @@ class Barcode:
         ------
         ValueError
             A barcode that does not know its simplices (not computed from a filtration).
+
+        Examples
+        --------
+        In Example 2.38, H_1's essential class is created by the edge ``simplices[1][3]`` (bc) and the
+        class [3, 4) by ``simplices[1][5]`` (ce), killed by the triangle ``simplices[2][0]`` (cde):
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).simplex_pairs(1).tolist()
+        [[3, -1], [5, 0]]
         """
         if not self._has_simplices:
             raise ValueError("this barcode does not know its simplices (it was not computed from a filtration)")
@@ -614,6 +733,15 @@ class Barcode:
         ------
         ValueError
             A barcode not computed from a filtration, or no interval ``i`` in ``dim``.
+
+        Examples
+        --------
+        The essential loop of Example 2.38 is the square a-b-c-d (vertices 0, 1, 2, 3):
+
+        >>> from thesis_lib.datasets import example_filtration
+        >>> from thesis_lib.persistence import persistence
+        >>> persistence(example_filtration()).representative(1, 0)
+        [((0, 1), 1), ((2, 3), 1), ((0, 3), 1), ((1, 2), 1)]
         """
         from .representatives import Representatives
 

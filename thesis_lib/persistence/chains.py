@@ -58,6 +58,19 @@ def chain_persistence(values: list[np.ndarray], boundaries: list, *, coefficient
     Returns
     -------
     Barcode
+
+    Examples
+    --------
+    RP² as a CW complex: a vertex (value 0), a loop e (value 1, ∂e = 0) and a disc D glued along it
+    twice (value 2, ∂D = 2e).  Over Z/2 the disc creates a 2-class; over Z/3 it kills the loop:
+
+    >>> import numpy as np
+    >>> values = [np.array([0.0]), np.array([1.0]), np.array([2.0])]
+    >>> boundaries = [None, np.zeros((1, 1), dtype=int), np.array([[2]])]
+    >>> chain_persistence(values, boundaries, coefficients=2).as_pairs()
+    [(0, (0.0, inf)), (1, (1.0, inf)), (2, (2.0, inf))]
+    >>> chain_persistence(values, boundaries, coefficients=3).as_pairs()
+    [(0, (0.0, inf)), (1, (1.0, 2.0))]
     """
     field = parse_field(coefficients)
     if not field.is_field:

@@ -93,6 +93,14 @@ class RipsDiagrams:
         dict
             ``{"max_radius": ..., "max_dim": ..., "coefficients": ..., "homology_dimensions": ...,
             "scale": ..., "min_persistence": ...}``.
+
+        Examples
+        --------
+        >>> params = RipsDiagrams(max_dim=2).get_params()
+        >>> sorted(params)
+        ['coefficients', 'homology_dimensions', 'max_dim', 'max_radius', 'min_persistence', 'scale']
+        >>> params["max_dim"], params["coefficients"], params["scale"]
+        (2, 2, 'epsilon')
         """
         return {"max_radius": self.max_radius, "max_dim": self.max_dim, "coefficients": self.coefficients,
                 "homology_dimensions": self.homology_dimensions, "scale": self.scale,
@@ -112,6 +120,11 @@ class RipsDiagrams:
         RipsDiagrams
             This transformer with the new values (so ``set_params(...).fit_transform(X)`` chains);
             unknown names raise ``ValueError``.
+
+        Examples
+        --------
+        >>> RipsDiagrams().set_params(scale="diameter").get_params()["scale"]
+        'diameter'
         """
         valid = self.get_params()
         for name, value in params.items():
@@ -141,6 +154,12 @@ class RipsDiagrams:
             On an invalid ``max_radius``, ``max_dim`` (below 1), ``coefficients`` (not a prime),
             ``homology_dimensions`` (empty, negative, or disagreeing with ``max_dim``), ``scale`` or
             ``min_persistence``.
+
+        Examples
+        --------
+        >>> transformer = RipsDiagrams()
+        >>> transformer.fit() is transformer
+        True
         """
         self._parameters()
         return self
@@ -189,6 +208,18 @@ class RipsDiagrams:
         ------
         ValueError
             On invalid parameters or an invalid point cloud (the message names the cloud).
+
+        Examples
+        --------
+        The unit square and the square of side 2: H_1 is born at ε = 1/2 and dies at √2/2, both doubled:
+
+        >>> import numpy as np
+        >>> square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+        >>> diagrams = RipsDiagrams(max_dim=2).transform([square, 2 * square])
+        >>> [np.round(d[1], 6).tolist() for d in diagrams]
+        [[[0.5, 0.707107]], [[1.0, 1.414214]]]
+        >>> diagrams[0][0].tolist()
+        [[0.0, 0.5], [0.0, 0.5], [0.0, 0.5], [0.0, inf]]
         """
         eps, max_dim, field, dims = self._parameters()
         if X is None or isinstance(X, (str, bytes)) or not isinstance(X, Iterable):
@@ -219,6 +250,13 @@ class RipsDiagrams:
         -------
         list of list of ndarray
             As :meth:`transform`.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+        >>> np.round(RipsDiagrams(homology_dimensions=(1,)).fit_transform([square])[0][0], 6).tolist()
+        [[0.5, 0.707107]]
         """
         return self.fit(X, y).transform(X)
 
