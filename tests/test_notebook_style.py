@@ -30,6 +30,7 @@ CONFORMING = (
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
     "experiments/range-patches.ipynb",
+    "experiments/radius-curvature.ipynb",
     "experiments/rp2-morse.ipynb",
 )
 #: the largest median number of code lines per code cell

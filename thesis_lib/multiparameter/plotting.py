@@ -85,40 +85,48 @@ def plot_hilbert(ax: Axes, values: npt.ArrayLike, radii: npt.ArrayLike, curvatur
 
 
 def plot_hilbert_functions(values: Sequence[npt.ArrayLike], radii: npt.ArrayLike, curvatures: npt.ArrayLike, *,
-                           dims: Sequence[int] = (0, 1), vmax: int | None = None,
-                           figsize: tuple[float, float] = (7.0, 3.0)) -> Figure:
-    """One heat map per homology dimension, side by side, the κ values as labelled rows ``κ ≤ κ_j``.
-
-    The rows are drawn one per grid value, evenly (curvature grids such as 0.5, 1, 5, 10 are far
-    from even), each labelled with its bound.
+                           dims: Sequence[int] = (0, 1), vmax: int | None = None, rows: str = "bounds",
+                           mark: float | None = None, ylabel: str = "", figsize: tuple[float, float] = (7.0, 3.0),
+                           wspace: float = 0.55) -> Figure:
+    """One heat map per homology dimension, side by side.
 
     Thesis: Chapter 5 (dim H_k(K_{ε,κ}) for each pair (ε, κ)).
 
     Parameters
     ----------
     values : sequence of array_like of int
-        ``values[k]`` of shape (len(radii), len(curvatures)): the Hilbert function of H_k, as
-        :func:`~thesis_lib.multiparameter.hilbert_function` returns them.
+        ``values[i]`` of shape (len(radii), len(curvatures)): the Hilbert function of H_{dims[i]}, as
+        :func:`~thesis_lib.multiparameter.hilbert_function` returns them for ``dims``.
     radii, curvatures : array_like
         The grid axes (strictly increasing).
     dims : sequence of int, default (0, 1)
-        The homology dimensions to draw, one panel each.
+        The homology dimension of each entry of ``values``, one panel each (titled ``dim H_k``).
     vmax : int, optional
         Values above it are drawn as ``vmax`` (the colour scale ends there); default: no cap.
+    rows : {"bounds", "values"}, default "bounds"
+        ``"bounds"``: one even row per κ of the grid, labelled ``κ ≤ κ_j`` (for uneven grids such as
+        0.5, 1, 5, 10); ``"values"``: the κ axis to scale.
+    mark : float, optional
+        A κ drawn as a dotted white line (e.g. 0, between negative and positive curvature).
+    ylabel : str, default ""
+        The κ axis label.
     figsize : (float, float), default (7.0, 3.0)
         The figure size in inches.
+    wspace : float, default 0.55
+        The space between the panels (a fraction of a panel's width).
 
     Returns
     -------
     matplotlib.figure.Figure
-        The figure, one panel per dimension.
+        The figure: the panels, then their colour bars.
 
     Raises
     ------
     ImportError
         If matplotlib is not installed (the ``[plot]`` extra).
     ValueError
-        A dimension not in ``values``, a bad grid, or values of the wrong shape.
+        ``dims`` not one per entry of ``values``, an unknown ``rows``, a bad grid, or values of the
+        wrong shape.
 
     Examples
     --------
@@ -130,16 +138,22 @@ def plot_hilbert_functions(values: Sequence[npt.ArrayLike], radii: npt.ArrayLike
     """
     plt = require("matplotlib.pyplot", extra="plot", purpose="plotting Hilbert functions")
     curvatures = check_grid(curvatures, name="curvatures")
-    missing = [d for d in dims if not 0 <= d < len(values)]
-    if missing:
-        raise ValueError(f"dims {missing} are not in values (dimensions 0 .. {len(values) - 1})")
-    rows = np.arange(curvatures.size)
-    fig, axes = plt.subplots(1, len(dims), figsize=figsize, gridspec_kw={"wspace": 0.55}, squeeze=False)
-    for ax, d in zip(axes[0], dims):
-        shown = np.asarray(values[d]) if vmax is None else np.minimum(values[d], vmax)
+    if len(dims) != len(values):
+        raise ValueError(f"dims must name the homology dimension of each of the {len(values)} Hilbert functions, "
+                         f"got {list(dims)}")
+    if rows not in ("bounds", "values"):
+        raise ValueError(f"rows must be 'bounds' or 'values', got {rows!r}")
+    even = np.arange(curvatures.size)
+    fig, axes = plt.subplots(1, len(dims), figsize=figsize, gridspec_kw={"wspace": wspace}, squeeze=False)
+    for ax, hf, d in zip(axes[0], values, dims):
+        shown = np.asarray(hf) if vmax is None else np.minimum(hf, vmax)
         name = str(d).translate(SUBSCRIPTS)
-        plot_hilbert(ax, shown, radii, rows, label=f"β{name}", vmax=vmax, ylabel="")
-        ax.set_yticks(rows + 0.5, [f"κ ≤ {k:g}" for k in curvatures])
+        plot_hilbert(ax, shown, radii, even if rows == "bounds" else curvatures, label=f"β{name}", vmax=vmax,
+                     ylabel=ylabel)
+        if rows == "bounds":
+            ax.set_yticks(even + 0.5, [f"κ ≤ {k:g}" for k in curvatures])
+        if mark is not None:
+            ax.axhline(mark, color="white", lw=0.8, ls=":")
         ax.set_title(f"dim H{name}")
     return fig
 
