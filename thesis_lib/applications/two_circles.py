@@ -24,7 +24,7 @@ from ..persistence import Barcode, long_bars, persistence
 __all__ = ["RipsRun", "WitnessRun", "rips_run", "witness_run", "witness_table", "rips_2_skeleton_size"]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RipsRun:
     """The Rips complex of one sample of the two-circles experiment and its long H₁ bars.
 
@@ -70,7 +70,7 @@ class RipsRun:
                 f"{len(self.long)} long H₁ bars")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class WitnessRun:
     """The witness complex of one sample and its long H₁ bars, beside the Rips complex of the same points.
 

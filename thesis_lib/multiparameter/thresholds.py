@@ -59,7 +59,7 @@ def first_at_least(values: npt.ArrayLike, grid: npt.ArrayLike, level: float) -> 
     return float(g[hit[0]]) if hit.size else float("nan")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class TorusRun:
     """One torus sample filtered by radius and estimated Gaussian curvature.
 
@@ -152,7 +152,7 @@ def torus_run(points: npt.ArrayLike, curvature: npt.ArrayLike, *, exact: npt.Arr
                     inner=int(np.bincount(row[kappa <= 0]).argmax()), transient=int(row.max()))
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CirclesRun:
     """Two circles filtered by radius and |κ|, and where their three loops appear.
 
