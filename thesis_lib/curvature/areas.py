@@ -82,6 +82,17 @@ def circumcentric_fractions(corners: npt.ArrayLike) -> np.ndarray:
     ------
     ValueError
         If ``corners`` is not an (m, n + 1, d) array of finite numbers with d >= n.
+
+    Examples
+    --------
+    Each vertex of an equilateral triangle has a third of it; the right angle of a right triangle has
+    half.  An obtuse triangle gives signed shares, negative at its acute corners:
+
+    >>> import numpy as np
+    >>> right = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]
+    >>> obtuse = [[0.0, 0.0], [4.0, 0.0], [2.0, 0.5]]
+    >>> np.round(circumcentric_fractions([right, obtuse]), 6).tolist()
+    [[0.5, 0.25, 0.25], [-1.625, -1.625, 4.25]]
     """
     if np.iscomplexobj(corners):
         raise InvalidTypeError("complex numbers are not coordinates")
@@ -236,6 +247,17 @@ def vertex_areas(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, area: str
     ValueError
         On an invalid mesh (not a pseudo-manifold, degenerate simplices, ...), an unknown area, or
         ``"mixed"`` with n ≠ 2.
+
+    Examples
+    --------
+    On the regular octahedron every vertex gets a sixth of the area 4√3:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import convex_hull_surface
+    >>> octahedron = np.array([[1.0, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    >>> faces = convex_hull_surface(octahedron)
+    >>> np.round(vertex_areas(octahedron, faces), 6).tolist()
+    [1.154701, 1.154701, 1.154701, 1.154701, 1.154701, 1.154701]
     """
     area = check_area(area)
     return vertex_areas_of_mesh(checked_mesh(vertices, simplices), area)

@@ -108,6 +108,16 @@ def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float
     ValueError
         Unless 0 < r < R (finite), or if ``u``, ``v`` hold NaN or infinite values or do not
         broadcast.
+
+    Examples
+    --------
+    The outer equator at u = v = 0 (distance R + r = 15 from the axis) and the top circle at v = π/2:
+
+    >>> import numpy as np
+    >>> torus_point(0.0, 0.0).tolist()
+    [15.0, 0.0, 0.0]
+    >>> np.round(torus_point(np.pi / 2, np.pi / 2), 6).tolist()
+    [0.0, 10.0, 5.0]
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -137,6 +147,15 @@ def torus_uv(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> tuple
     ------
     ValueError
         Unless 0 < r < R (finite), or if ``points`` is not (..., 3) or holds NaN or infinite values.
+
+    Examples
+    --------
+    The inverse of :func:`torus_point`:
+
+    >>> import numpy as np
+    >>> u, v = torus_uv([[15.0, 0.0, 0.0], [0.0, 10.0, 5.0]])
+    >>> np.round(u, 6).tolist(), np.round(v, 6).tolist()
+    ([0.0, 1.570796], [0.0, 1.570796])
     """
     check_torus_radii(R, r)
     p = _finite("points", points)
@@ -171,6 +190,17 @@ def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0,
     ValueError
         Unless 0 < r < R (finite); if ``u`` or ``v`` holds NaN or infinite values or they do not
         broadcast.
+
+    Examples
+    --------
+    On the outer equator S = diag(−1/(R + r), −1/r) = diag(−1/15, −1/5); on the inner one the first
+    entry changes sign, 1/(R − r) = 1/5:
+
+    >>> import numpy as np
+    >>> np.round(torus_shape_operator(0.0, 0.0), 6).tolist()
+    [[-0.066667, 0.0], [0.0, -0.2]]
+    >>> np.round(torus_shape_operator(0.0, np.pi), 6).tolist()
+    [[0.2, 0.0], [0.0, -0.2]]
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -203,6 +233,12 @@ def torus_principal_curvatures(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float =
     ------
     ValueError
         As :func:`torus_shape_operator`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(torus_principal_curvatures(0.0, [0.0, np.pi]), 6).tolist()
+    [[-0.2, -0.066667], [-0.2, 0.2]]
     """
     S = torus_shape_operator(u, v, R=R, r=r)
     k = np.stack([S[..., 0, 0], S[..., 1, 1]], axis=-1)
@@ -232,6 +268,14 @@ def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0,
     ------
     ValueError
         As :func:`torus_shape_operator`.
+
+    Examples
+    --------
+    H = −2/15 on the outer equator, −1/(2r) = −0.1 on the top circle:
+
+    >>> import numpy as np
+    >>> np.round(torus_mean_curvature(0.0, [0.0, np.pi / 2]), 6).tolist()
+    [-0.133333, -0.1]
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -262,6 +306,14 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 1
     ------
     ValueError
         Unless 0 < r < R (finite), or if ``u`` and ``v`` are not finite or do not broadcast.
+
+    Examples
+    --------
+    Positive outside (1/75), zero on the top circle, negative inside (−1/25):
+
+    >>> import numpy as np
+    >>> np.round(torus_gaussian_curvature(0.0, [0.0, np.pi / 2, np.pi]), 6).tolist()
+    [0.013333, 0.0, -0.04]
     """
     R, r = check_torus_radii(R, r)
     u, v = np.broadcast_arrays(_finite("u", u), _finite("v", v))
@@ -291,6 +343,14 @@ def torus_mean_curvature_at(points: npt.ArrayLike, *, R: float = 10.0, r: float 
     ------
     ValueError
         As :func:`torus_uv`.
+
+    Examples
+    --------
+    The outer equator and the top circle, as points:
+
+    >>> import numpy as np
+    >>> np.round(torus_mean_curvature_at([[15.0, 0.0, 0.0], [0.0, 10.0, 5.0]]), 6).tolist()
+    [-0.133333, -0.1]
     """
     return torus_mean_curvature(*torus_uv(points, R=R, r=r), R=R, r=r)
 
@@ -316,6 +376,12 @@ def torus_principal_curvatures_at(points: npt.ArrayLike, *, R: float = 10.0, r: 
     ------
     ValueError
         If ``points`` is not (..., 3) or not finite, or the radii are invalid (:func:`torus_uv`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(torus_principal_curvatures_at([[15.0, 0.0, 0.0], [5.0, 0.0, 0.0]]), 6).tolist()
+    [[-0.2, -0.066667], [-0.2, 0.2]]
     """
     return torus_principal_curvatures(*torus_uv(points, R=R, r=r), R=R, r=r)
 
@@ -341,6 +407,14 @@ def torus_gaussian_curvature_at(points: npt.ArrayLike, *, R: float = 10.0, r: fl
     ------
     ValueError
         As :func:`torus_uv`.
+
+    Examples
+    --------
+    The outer and the inner equator, as points:
+
+    >>> import numpy as np
+    >>> np.round(torus_gaussian_curvature_at([[15.0, 0.0, 0.0], [5.0, 0.0, 0.0]]), 6).tolist()
+    [0.013333, -0.04]
     """
     return torus_gaussian_curvature(*torus_uv(points, R=R, r=r), R=R, r=r)
 
@@ -369,6 +443,14 @@ def hypersphere_point(angles: npt.ArrayLike, *, radius: float = 2.0) -> np.ndarr
     ValueError
         If ``radius`` is not a positive finite number, or ``angles`` is not (..., n) with n >= 1 or
         holds NaN or infinite values.
+
+    Examples
+    --------
+    On the unit 2-sphere: ψ₁ = π/2, φ = 0 and φ = π/2 lie on the equator x₁ = 0; ψ₁ = 0 is the pole:
+
+    >>> import numpy as np
+    >>> np.round(hypersphere_point([[np.pi / 2, 0.0], [np.pi / 2, np.pi / 2], [0.0, 0.0]], radius=1.0), 6).tolist()
+    [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]
     """
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
@@ -407,6 +489,11 @@ def hypersphere_mean_curvature(*, radius: float = 2.0, n: int = 3) -> float:
     ------
     ValueError
         If ``radius`` is not a positive finite number or ``n`` not a positive integer.
+
+    Examples
+    --------
+    >>> hypersphere_mean_curvature(radius=2.0, n=3)
+    0.5
     """
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
@@ -436,6 +523,14 @@ def catenoid_point(params: npt.ArrayLike) -> np.ndarray:
     ------
     ValueError
         If ``params`` is not (..., n) with n >= 2 or holds NaN or infinite values.
+
+    Examples
+    --------
+    The waist circle v = 0 has radius cosh 0 = 1:
+
+    >>> import numpy as np
+    >>> np.round(catenoid_point([[0.0, 0.0], [np.pi / 2, 0.0]]), 6).tolist()
+    [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
     """
     p = _finite("params", params)
     if p.ndim < 1 or p.shape[-1] < 2:
@@ -469,6 +564,14 @@ def catenoid_principal_curvatures(params: npt.ArrayLike) -> np.ndarray:
     ------
     ValueError
         As :func:`catenoid_point`.
+
+    Examples
+    --------
+    ±1/cosh² v, here at v = 1:
+
+    >>> import numpy as np
+    >>> np.round(catenoid_principal_curvatures([0.0, 1.0]), 6).tolist()
+    [-0.419974, 0.419974]
     """
     p = _finite("params", params)
     if p.ndim < 1 or p.shape[-1] < 2:
@@ -499,6 +602,12 @@ def catenoid_mean_curvature(params: npt.ArrayLike) -> np.ndarray:
     ------
     ValueError
         As :func:`catenoid_point`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(catenoid_mean_curvature([[0.0, 0.5], [1.0, 2.0]]), 12).tolist()
+    [0.0, 0.0]
     """
     return catenoid_principal_curvatures(params).sum(axis=-1) / np.asarray(params).shape[-1]
 
@@ -524,6 +633,14 @@ def hypersurface_normal(jacobian: npt.ArrayLike) -> np.ndarray:
     ValueError
         If ``jacobian`` is not (..., n + 1, n), holds NaN or infinite values, or has rank < n
         somewhere (the parametrisation is not regular).
+
+    Examples
+    --------
+    The plane spanned by X_u = (1, 0, 1) and X_v = (0, 1, 1) has the normal X_u × X_v / ‖·‖:
+
+    >>> import numpy as np
+    >>> np.round(hypersurface_normal([[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]), 6).tolist()
+    [-0.57735, -0.57735, 0.57735]
     """
     J = _finite("jacobian", jacobian)
     if J.ndim < 2 or J.shape[-2] != J.shape[-1] + 1:
@@ -583,6 +700,15 @@ def fundamental_forms(
     ValueError
         If ``w`` is not (..., n) or holds NaN or infinite values, ``h`` is not positive, ``X`` does
         not map (..., n) to (..., n + 1), or the parametrisation is not regular at ``w``.
+
+    Examples
+    --------
+    On the sphere of radius 2 at a point of the equator, g = ρ² I and B = −ρ I:
+
+    >>> import numpy as np
+    >>> g, B = fundamental_forms(lambda w: hypersphere_point(w, radius=2.0), [np.pi / 2, 0.0])
+    >>> np.round(g, 4).tolist(), np.round(B, 4).tolist()
+    ([[4.0, 0.0], [0.0, 4.0]], [[-2.0, 0.0], [0.0, -2.0]])
     """
     w, h = _parameters(w), _step(h)
     n = w.shape[-1]
@@ -634,6 +760,18 @@ def parametric_shape_operator(X: Callable[[np.ndarray], np.ndarray], w: npt.Arra
     ------
     ValueError
         As :func:`fundamental_forms`.
+
+    Examples
+    --------
+    From the parametrisation alone, S = g⁻¹B: −I/ρ on the sphere of radius 2, and the torus's
+    diag(−1/15, −1/5) on its outer equator:
+
+    >>> import numpy as np
+    >>> np.round(parametric_shape_operator(lambda w: hypersphere_point(w, radius=2.0), [np.pi / 2, 0.0]), 4).tolist()
+    [[-0.5, 0.0], [0.0, -0.5]]
+    >>> torus = lambda w: torus_point(w[..., 0], w[..., 1])
+    >>> np.round(parametric_shape_operator(torus, [0.0, 0.0]), 4).tolist()
+    [[-0.0667, 0.0], [0.0, -0.2]]
     """
     g, B = fundamental_forms(X, w, h=h)
     return np.linalg.solve(g, B)
@@ -669,6 +807,16 @@ def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayL
     ------
     ValueError
         As :func:`fundamental_forms`; also if n ≠ 2 or ``nodes`` is not an integer >= 3.
+
+    Examples
+    --------
+    Four directions on the torus's outer equator: the normal curvature swings between its principal
+    values −1/15 and −1/5 (Euler's formula):
+
+    >>> import numpy as np
+    >>> torus = lambda w: torus_point(w[..., 0], w[..., 1])
+    >>> np.round(normal_curvature_circle(torus, [0.0, 0.0], nodes=4), 4).tolist()
+    [-0.0667, -0.2, -0.0667, -0.2]
     """
     g, B = fundamental_forms(X, w, h=h)
     if g.shape[-1] != 2:
@@ -709,6 +857,16 @@ def hypersphere_quadrature(n: int, *, nodes: int = 16) -> tuple[np.ndarray, np.n
     ------
     ValueError
         If ``n`` is not a positive integer or ``nodes`` not an integer >= 2.
+
+    Examples
+    --------
+    For n = 2: nodes × 2·nodes points whose weights sum to the area 2π² of the parameter box
+    (0, π) × [0, 2π):
+
+    >>> import numpy as np
+    >>> params, weights = hypersphere_quadrature(2, nodes=8)
+    >>> params.shape, round(float(weights.sum() / np.pi**2), 6)
+    ((128, 2), 2.0)
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
@@ -747,6 +905,12 @@ def ellipsoid_point(angles: npt.ArrayLike, axes: npt.ArrayLike) -> np.ndarray:
     ValueError
         If ``axes`` is not a 1-D array of positive finite numbers, does not have n + 1 entries, or
         ``angles`` is invalid (see :func:`hypersphere_point`).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> np.round(ellipsoid_point([[0.0, 0.0], [np.pi / 2, 0.0]], [3.0, 2.0, 1.0]), 6).tolist()
+    [[3.0, 0.0, 0.0], [0.0, 2.0, 0.0]]
     """
     a = _finite("axes", axes)
     if a.ndim != 1 or np.any(a <= 0):
@@ -788,6 +952,16 @@ def total_gauss_kronecker_curvature(
     ValueError
         As :func:`fundamental_forms`; also if ``weights`` holds NaN or infinite values or does not
         match ``params``.
+
+    Examples
+    --------
+    Gauss–Bonnet on an ellipsoid with axes 3, 2, 1: ∫K dA = 2πχ = 4π:
+
+    >>> import numpy as np
+    >>> params, weights = hypersphere_quadrature(2, nodes=16)
+    >>> ellipsoid = lambda w: ellipsoid_point(w, [3.0, 2.0, 1.0])
+    >>> round(total_gauss_kronecker_curvature(ellipsoid, params, weights) / (4 * np.pi), 6)
+    1.0
     """
     w = _finite("weights", weights)
     g, B = fundamental_forms(X, params, h=h)
@@ -819,6 +993,14 @@ def hypersphere_volume(n: int, *, nodes: int = 64) -> float:
     ------
     ValueError
         If ``n`` is not a positive integer.
+
+    Examples
+    --------
+    4π for S², 2π² for S³:
+
+    >>> import numpy as np
+    >>> round(hypersphere_volume(2) / np.pi, 6), round(hypersphere_volume(3) / np.pi**2, 6)
+    (4.0, 2.0)
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
         raise ValueError(f"n must be a positive integer, got {n!r}")
@@ -846,6 +1028,16 @@ def gauss_bonnet_chern_constant(n: int) -> float:
     ------
     ValueError
         If ``n`` is not an even integer >= 2.
+
+    Examples
+    --------
+    2π for surfaces; for n = 4 the constant times χ(S⁴) = 2 is the volume of S⁴ (where K = 1):
+
+    >>> import numpy as np
+    >>> round(gauss_bonnet_chern_constant(2) / np.pi, 6)
+    2.0
+    >>> round(2 * gauss_bonnet_chern_constant(4), 6) == round(hypersphere_volume(4), 6)
+    True
     """
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2 or n % 2:
         raise ValueError(f"n must be an even integer >= 2, got {n!r}")
@@ -876,6 +1068,14 @@ def torus_outer_inner_ratio(*, R: float = 10.0, r: float = 5.0) -> float:
     ------
     ValueError
         Unless 0 < r < R (finite).
+
+    Examples
+    --------
+    The outer half of the torus with R = 10, r = 5 is about 2.3 times as curved (in mean |H|) as the
+    inner half:
+
+    >>> round(torus_outer_inner_ratio(), 6)
+    2.328928
     """
     R, r = check_torus_radii(R, r)
     from scipy.integrate import quad
@@ -918,6 +1118,14 @@ def relative_error(estimate: npt.ArrayLike, exact: npt.ArrayLike, *, zero_tol: f
     ValueError
         If the shapes differ, ``exact`` holds NaN or infinite values, or ``zero_tol`` is outside
         [0, 1).
+
+    Examples
+    --------
+    NaN where the exact value is (near) zero:
+
+    >>> import numpy as np
+    >>> np.round(relative_error([0.51, 0.0, 2.2], [0.5, 0.0, 2.0]), 6).tolist()
+    [0.02, nan, 0.1]
     """
     est = np.asarray(estimate, dtype=np.float64)
     ex = np.asarray(exact, dtype=np.float64)

@@ -82,6 +82,18 @@ def check_pseudomanifold(simplices: npt.NDArray[np.int64], n_vertices: int) -> N
     ValueError
         Naming a repeated simplex, a ridge in three or more simplices, or a pinched vertex (for
         n >= 2: a vertex whose link is disconnected, its star two fans meeting only there).
+
+    Examples
+    --------
+    Three triangles on one edge are not a pseudo-manifold:
+
+    >>> import numpy as np
+    >>> check_pseudomanifold(np.array([[0, 1, 2], [0, 1, 3]]), 4) is None
+    True
+    >>> check_pseudomanifold(np.array([[0, 1, 2], [0, 1, 3], [0, 1, 4]]), 5)
+    Traceback (most recent call last):
+        ...
+    ValueError: the ridge (0, 1) of simplex 0 lies in three or more top simplices: not a pseudo-manifold
     """
     code, a, b, c, _, _ = _pseudomanifold(simplices, n_vertices)
     if code == 3:
@@ -114,6 +126,14 @@ def pinched_vertices(simplices: npt.NDArray[np.int64], n_vertices: int) -> np.nd
     ------
     ValueError
         On a repeated simplex or a ridge in three or more simplices (no formula applies there).
+
+    Examples
+    --------
+    Two triangles meeting only at vertex 0 (a bow tie) pinch it:
+
+    >>> import numpy as np
+    >>> pinched_vertices(np.array([[0, 1, 2], [0, 3, 4]]), 5).tolist()
+    [True, False, False, False, False]
     """
     return _pseudomanifold(simplices, n_vertices)[4]
 

@@ -35,7 +35,19 @@ __all__ = [
 
 
 class ShapeOperator(NamedTuple):
-    """Per-vertex shape operator in a tangent basis."""
+    """Per-vertex shape operator in a tangent basis.
+
+    Examples
+    --------
+    What :func:`shape_operator` returns: a named tuple of per-vertex arrays.
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import sphere_hull
+    >>> vertices, triangles = sphere_hull(n_points=200, radius=2.0, seed=0)
+    >>> s = shape_operator(vertices, triangles)
+    >>> s.tensor.shape, s.basis.shape, s.normal.shape
+    ((200, 2, 2), (200, 2, 3), (200, 3))
+    """
 
     tensor: np.ndarray  #: (nv, 2, 2) symmetric matrix S in the basis below
     basis: np.ndarray  #: (nv, 2, 3) orthonormal tangent vectors t1, t2 (t1 × t2 = normal)
@@ -43,7 +55,19 @@ class ShapeOperator(NamedTuple):
 
 
 class PrincipalCurvatures(NamedTuple):
-    """Principal curvatures κ1 ≤ κ2 (Definition 3.3) and their unit directions in R^3."""
+    """Principal curvatures κ1 ≤ κ2 (Definition 3.3) and their unit directions in R^3.
+
+    Examples
+    --------
+    What :func:`principal_curvatures` returns: a named tuple of per-vertex arrays.
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import sphere_hull
+    >>> vertices, triangles = sphere_hull(n_points=200, radius=2.0, seed=0)
+    >>> pc = principal_curvatures(vertices, triangles)
+    >>> pc._fields, pc.k1.shape, pc.d1.shape
+    (('k1', 'k2', 'd1', 'd2'), (200,), (200, 3))
+    """
 
     k1: np.ndarray  #: (nv,) minimum normal curvature
     k2: np.ndarray  #: (nv,) maximum normal curvature
@@ -115,6 +139,17 @@ def vertex_normals(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, normals
     ------
     ValueError
         On an invalid or incoherently oriented mesh.
+
+    Examples
+    --------
+    The octahedron's normals point out along the axes:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import convex_hull_surface
+    >>> octahedron = np.array([[1.0, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    >>> faces = convex_hull_surface(octahedron)
+    >>> np.round(vertex_normals(octahedron, faces)[:2], 6).tolist()
+    [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]
     """
     normals = _check_normals(normals)
     return _normals(_oriented_mesh(vertices, simplices), normals)
@@ -154,6 +189,18 @@ def normal_curvatures(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
     (edges, kappa)
         ``edges`` (2e, 2) directed edges (i, j), both directions of every edge; ``kappa`` (2e,) the
         estimate at vertex i in the direction of x_j.  Signs as in the module docstring.
+
+    Examples
+    --------
+    On the octahedron (circumradius 1) every edge estimate is 2 (x_i − x_j)·n_i / ‖x_i − x_j‖² = 1:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import convex_hull_surface
+    >>> octahedron = np.array([[1.0, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    >>> faces = convex_hull_surface(octahedron)
+    >>> edges, kappa = normal_curvatures(octahedron, faces)
+    >>> edges[:2].tolist(), np.unique(np.round(kappa, 6)).tolist()
+    ([[0, 2], [0, 3]], [1.0])
     """
     normals = _check_normals(normals)
     mesh = _oriented_mesh(vertices, simplices)
@@ -208,6 +255,17 @@ def shape_operator(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, edge_we
     ------
     ValueError
         On an invalid mesh, n ≠ 2, incoherent orientation or unknown ``edge_weights``/``normals``.
+
+    Examples
+    --------
+    On a sphere of radius 2 the shape operator is (1/r) times the identity:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import sphere_hull
+    >>> vertices, triangles = sphere_hull(n_points=200, radius=2.0, seed=0)
+    >>> s = shape_operator(vertices, triangles)
+    >>> np.round(np.median(s.tensor, axis=0), 3).tolist()
+    [[0.5, 0.0], [0.0, 0.5]]
     """
     edge_weights = _check_edge_weights(edge_weights)
     normals = _check_normals(normals)
@@ -261,6 +319,17 @@ def principal_curvatures(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, e
     PrincipalCurvatures
         ``k1``, ``k2`` (nv,) and unit directions ``d1``, ``d2`` (nv, 3) in the tangent plane; NaN where
         :func:`shape_operator` is NaN.  Signs as in the module docstring.
+
+    Examples
+    --------
+    On a sphere of radius 2 both principal curvatures are 1/r = 0.5:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import sphere_hull
+    >>> vertices, triangles = sphere_hull(n_points=200, radius=2.0, seed=0)
+    >>> pc = principal_curvatures(vertices, triangles)
+    >>> round(float(np.median(pc.k1)), 3), round(float(np.median(pc.k2)), 3)
+    (0.5, 0.5)
     """
     so = shape_operator(vertices, simplices, edge_weights=edge_weights, normals=normals)
     nv = len(so.tensor)

@@ -165,6 +165,17 @@ def simplex_hyperareas(vertices: np.ndarray, simplices: np.ndarray) -> np.ndarra
     -------
     ndarray of float64, shape (m,)
         The n-dimensional hyperarea of each simplex (1 for n = 0).
+
+    Examples
+    --------
+    Each face of the octahedron is equilateral of side √2, of area √3/2:
+
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import convex_hull_surface
+    >>> octahedron = np.array([[1.0, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    >>> faces = convex_hull_surface(octahedron)
+    >>> np.round(simplex_hyperareas(octahedron, faces), 6).tolist()
+    [0.866025, 0.866025, 0.866025, 0.866025, 0.866025, 0.866025, 0.866025, 0.866025]
     """
     p = vertices[simplices]
     n = simplices.shape[1] - 1
@@ -391,6 +402,14 @@ def boundary_vertices(simplices: npt.ArrayLike, n_vertices: int) -> np.ndarray:
     -------
     ndarray of bool, shape (n_vertices,)
         True at the vertices of the ridges that lie in exactly one top simplex.
+
+    Examples
+    --------
+    A fan of four triangles around vertex 0: the rim is boundary, the centre is not:
+
+    >>> import numpy as np
+    >>> boundary_vertices(np.array([[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]]), 5).tolist()
+    [False, True, True, True, True]
     """
     r, counts = ridges(np.asarray(simplices, dtype=np.int64), n_vertices)
     mask = np.zeros(n_vertices, dtype=bool)
@@ -442,6 +461,16 @@ def validate_mesh(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, count_ri
     ValueError
         On any of the problems listed in the module docstring; the message names the offending
         simplex or ridge.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from thesis_lib.meshes import convex_hull_surface
+    >>> octahedron = np.array([[1.0, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]])
+    >>> faces = convex_hull_surface(octahedron)
+    >>> mesh = validate_mesh(octahedron, faces)
+    >>> mesh.n, mesh.areas.shape, bool(mesh.boundary.any()), round(float(mesh.areas.sum()), 6)
+    (2, (8,), False, 6.928203)
     """
     v = np.asarray(vertices)
     if v.ndim != 2 or v.shape[1] < 2:
@@ -560,6 +589,18 @@ def check_orientation(simplices: npt.ArrayLike) -> None:
     ------
     ValueError
         If two faces traverse an edge in the same direction, or the simplices are not triangles.
+
+    Examples
+    --------
+    Two triangles on the edge (0, 1) are coherent when they run through it in opposite directions:
+
+    >>> import numpy as np
+    >>> check_orientation(np.array([[0, 1, 2], [1, 0, 3]])) is None
+    True
+    >>> check_orientation(np.array([[0, 1, 2], [0, 1, 3]]))
+    Traceback (most recent call last):
+        ...
+    ValueError: inconsistent orientation: faces 0 and 1 both traverse the edge (0, 1) in the same direction
     """
     s = np.asarray(simplices, dtype=np.int64)
     if s.shape[1] != 3:
