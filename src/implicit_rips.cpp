@@ -200,10 +200,8 @@ void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::v
 // Scratch space for the tests on simplices of dimension up to k + 2.
 struct Scratch {
     std::vector<i64> verts, cur, w;
-    std::vector<double> pd;
     explicit Scratch(i64 k)
-        : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)),
-          w(static_cast<std::size_t>(k + 3)), pd(static_cast<std::size_t>((k + 3) * (k + 3))) {}
+        : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)), w(static_cast<std::size_t>(k + 3)) {}
 };
 
 // The earliest coface of the k-simplex s (vertices verts, diameter d) when it has s's diameter
@@ -217,7 +215,7 @@ Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, dou
     if (t.index != -1) {
         if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
             for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
-        apparent = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), x.pd.data(), t.j >= 0) == s;
+        apparent = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), t.j >= 0) == s;
     }
     return t;
 }
@@ -226,7 +224,7 @@ Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, dou
 // when tau is the upper simplex of none.
 // Thesis: Definition 4.30 (a pair of the discrete gradient).
 i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
-    const i64 e = zero_pivot_facet(g, tau, k + 1, d, x.w.data(), x.pd.data(), false);
+    const i64 e = zero_pivot_facet(g, tau, k + 1, d, x.w.data(), false);
     if (e == -1) return -1;
     vertices(g, e, k, x.verts.data());
     double od[1];
@@ -308,12 +306,18 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, b
             out.columns.push_back({d, s, t.index, 1 - 2 * (t.m & 1)});
         }
     };
+    i64 rest = -1;  // f's index without its top vertex, for the last f: a sibling shares its lower vertices
     from.visit(lo, hi, [&](const Simplex& f) {
         if (!generate) {
             vertices(g, f.idx, k, sv.data());
             return meet(f.d, f.idx, uppers.contains(f.idx));
         }
-        vertices(g, f.idx, k - 1, fv.data());
+        fv[0] = top_vertex(g, f.idx, k, g.n - 1);
+        const i64 below = wsub(f.idx, g.binom(fv[0], k));
+        if (below != rest) {
+            vertices(g, below, k - 2, fv.data() + 1, fv[0] - 1);
+            rest = below;
+        }
         std::copy(fv.begin(), fv.end(), sv.begin() + 1);
         const i64 c = cofaces(g, fv.data(), k - 1, f.idx, f.d, cur.data(), od.data(), oi.data(), oj.data(), false, true);
         bool first = true;  // no coface of f's diameter met yet

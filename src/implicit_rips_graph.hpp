@@ -9,6 +9,7 @@
 // Used by implicit_rips.cpp only.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -83,25 +84,36 @@ inline void binomials(Graph& g, i64 rows, i64 kmax) {
     }
 }
 
-// The vertices of the k-simplex idx, decreasing, into out[0..k].
+// The largest v <= top with C(v, kk) <= idx (the top vertex of a simplex of kk vertices and index idx,
+// when it is at most top): binary search down to a range of 8, then a scan down (the range is small
+// for the lower vertices of a high-dimensional simplex of a small complex).
 // Thesis: §2.3.5 (a simplex read back from its index).
-inline void vertices(const Graph& g, i64 idx, i64 k, i64* out) {
-    i64 top = g.n - 1;
+inline i64 top_vertex(const Graph& g, i64 idx, i64 kk, i64 top) {
+    i64 lo = kk - 1, hi = top;  // C(lo, kk) = 0 <= idx: the vertex is in lo .. hi
+    while (hi - lo > 8) {
+        const i64 mid = (lo + hi + 1) >> 1;
+        if (g.binom(mid, kk) <= idx)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    while (g.binom(hi, kk) > idx) --hi;
+    return hi;
+}
+
+// The vertices of the k-simplex idx, all at most top, decreasing, into out[0..k].
+// Thesis: §2.3.5 (a simplex read back from its index).
+inline void vertices(const Graph& g, i64 idx, i64 k, i64* out, i64 top) {
     for (i64 r = 0; r <= k; ++r) {
-        const i64 kk = k + 1 - r;
-        i64 lo = kk - 1, hi = top;
-        while (lo < hi) {
-            const i64 mid = (lo + hi + 1) >> 1;
-            if (g.binom(mid, kk) <= idx)
-                lo = mid;
-            else
-                hi = mid - 1;
-        }
-        out[r] = lo;
-        idx = wsub(idx, g.binom(lo, kk));
-        top = lo - 1;
+        out[r] = top_vertex(g, idx, k + 1 - r, top);
+        idx = wsub(idx, g.binom(out[r], k + 1 - r));
+        top = out[r] - 1;
     }
 }
+
+// The vertices of the k-simplex idx (below n), decreasing, into out[0..k].
+// Thesis: §2.3.5 (a simplex read back from its index).
+inline void vertices(const Graph& g, i64 idx, i64 k, i64* out) { vertices(g, idx, k, out, g.n - 1); }
 
 // First position in the increasing arr[lo..hi) with a value > x.
 inline i64 upper(const double* arr, i64 lo, i64 hi, double x) {
@@ -268,34 +280,35 @@ inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 id
     return with_vertex(g, verts, k, idx, jmax);
 }
 
-// The latest facet of the k1-simplex tau if it has tau's diameter (−1 otherwise) and the position r of
-// the omitted vertex w[r] (its sign in ∂tau is (−1)^r).  With known the vertices of tau are already in w
-// (decreasing); otherwise they are decoded.  pd is a (k1 + 1) × (k1 + 1) scratch matrix.
+// The latest facet of the k1-simplex tau (k1 >= 2) of diameter diam if it has tau's diameter (−1
+// otherwise): tau with w[r] omitted for the least r that avoids an edge of length diam.  When an edge
+// of w[1..k1] has length diam, r = 0 (checked first, up to the first such edge); otherwise every such
+// edge meets w[0], so r = 1 unless the only one is {w[0], w[1]}, and then r = 2.  With known the
+// vertices of tau are already in w (decreasing); otherwise they are decoded.
 // Thesis: Definition 4.30 (the latest facet of a zero apparent pair).
-inline i64 zero_pivot_facet(const Graph& g, i64 tau, i64 k1, double diam, i64* w, double* pd, bool known) {
+inline i64 zero_pivot_facet(const Graph& g, i64 tau, i64 k1, double diam, i64* w, bool known) {
     if (!known) vertices(g, tau, k1, w);
-    const i64 s = k1 + 1;
-    for (i64 a = 0; a <= k1; ++a) {
-        for (i64 b = a + 1; b <= k1; ++b) {
-            const double d = g.dist(w[a], w[b]);
-            pd[a * s + b] = d;
-            pd[b * s + a] = d;
-        }
+    i64 r = -1;
+    for (i64 a = 1; a <= k1 && r == -1; ++a)
+        for (i64 b = a + 1; b <= k1; ++b)
+            if (g.dist(w[a], w[b]) == diam) {
+                r = 0;
+                break;
+            }
+    if (r == -1) {
+        for (i64 b = 1; b <= k1 && r == -1; ++b)
+            if (g.dist(w[0], w[b]) == diam) r = b == 1 ? 2 : 1;
+        if (r == 2)  // {w[0], w[1]} has length diam: r = 1 too if another edge at w[0] does
+            for (i64 b = 2; b <= k1; ++b)
+                if (g.dist(w[0], w[b]) == diam) {
+                    r = 1;
+                    break;
+                }
     }
-    i64 idx_above = 0;
-    i64 idx_below = tau;
-    for (i64 r = 0; r <= k1; ++r) {  // omit w[r]: facet indices increase with r, so the first is the latest
-        idx_below = wsub(idx_below, g.binom(w[r], k1 + 1 - r));
-        double fd = 0.0;
-        for (i64 a = 0; a <= k1; ++a) {
-            if (a == r) continue;
-            for (i64 b = a + 1; b <= k1; ++b)
-                if (b != r && pd[a * s + b] > fd) fd = pd[a * s + b];
-        }
-        if (fd == diam) return wadd(idx_above, idx_below);
-        idx_above = wadd(idx_above, g.binom(w[r], k1 - r));
-    }
-    return -1;
+    if (r == -1) return -1;
+    i64 idx = tau;  // omit w[r]: the vertices above it move down one binomial
+    for (i64 q = 0; q < r; ++q) idx = wadd(wsub(idx, g.binom(w[q], k1 + 1 - q)), g.binom(w[q], k1 - q));
+    return wsub(idx, g.binom(w[r], k1 + 1 - r));
 }
 
 // An open-addressing hash table of non-negative int64 keys (−1: empty), capacity a power of two at
