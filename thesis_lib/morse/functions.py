@@ -103,6 +103,16 @@ def check_discrete_morse_function(values: Values) -> None:
     ValueError
         A simplex breaks condition 1 or 2 of Definition 4.20 (named in the message), or ``values``
         is not a finite value for every simplex of a complex.
+
+    Examples
+    --------
+    >>> f = {(0,): 0, (1,): 1, (2,): 2, (0, 1): 1, (0, 2): 3, (1, 2): 2}
+    >>> check_discrete_morse_function(f) is None
+    True
+    >>> check_discrete_morse_function({**f, (0, 1): 0})
+    Traceback (most recent call last):
+        ...
+    ValueError: simplex (0, 1) breaks condition 2 of Definition 4.20: 2 faces have a value >= f(0, 1) = 0.0
     """
     _checked(values)
 
@@ -128,6 +138,17 @@ def is_discrete_morse_function(values: Values) -> bool:
     ValueError
         Malformed input (missing faces, NaN, non-simplices, non-integer vertex labels) raises
         rather than returning False.
+
+    Examples
+    --------
+    A discrete Morse function on the hollow triangle (a circle), and a change that breaks it (the
+    edge 01 below both its vertices):
+
+    >>> f = {(0,): 0, (1,): 1, (2,): 2, (0, 1): 1, (0, 2): 3, (1, 2): 2}
+    >>> is_discrete_morse_function(f)
+    True
+    >>> is_discrete_morse_function({**f, (0, 1): 0})
+    False
     """
     cx, f = _prepare(values)
     _, _, n_up, n_down = _violations(cx, f)
@@ -153,6 +174,15 @@ def critical_simplices(values: Values) -> list[Simplex]:
     ------
     ValueError
         ``values`` is malformed or not a discrete Morse function.
+
+    Examples
+    --------
+    The function of :func:`is_discrete_morse_function` on the circle has one critical vertex and one
+    critical edge, the minimum number (β = 1, 1):
+
+    >>> f = {(0,): 0, (1,): 1, (2,): 2, (0, 1): 1, (0, 2): 3, (1, 2): 2}
+    >>> critical_simplices(f)
+    [(0,), (0, 2)]
     """
     cx, _, _, n_up, n_down = _checked(values)
     return [cx.simplex(int(g)) for g in np.flatnonzero((n_up == 0) & (n_down == 0))]
@@ -179,6 +209,12 @@ def gradient_pairs(values: Values) -> list[tuple[Simplex, Simplex]]:
     ------
     ValueError
         As :func:`critical_simplices`.
+
+    Examples
+    --------
+    >>> f = {(0,): 0, (1,): 1, (2,): 2, (0, 1): 1, (0, 2): 3, (1, 2): 2}
+    >>> gradient_pairs(f)
+    [((1,), (0, 1)), ((2,), (1, 2))]
     """
     cx, face, cell, _, _ = _checked(values)
     order = np.lexsort((cell, face))
@@ -207,6 +243,12 @@ def sublevel_complex(values: Values, a: float) -> list[Simplex]:
     ------
     ValueError
         ``a`` is NaN, or ``values`` is malformed.
+
+    Examples
+    --------
+    >>> f = {(0,): 0, (1,): 1, (2,): 2, (0, 1): 1, (0, 2): 3, (1, 2): 2}
+    >>> sublevel_complex(f, 1.5)
+    [(0,), (1,), (0, 1)]
     """
     a = float(a)
     if math.isnan(a):
@@ -244,6 +286,16 @@ def discrete_morse_function(simplices: ComplexLike, pairs: Pairs) -> dict[Simple
     ------
     ValueError
         The field has a closed V-path (named), or is not a valid vector field.
+
+    Examples
+    --------
+    Values 1..n for the field of the circle that pairs 1 with 01 and 2 with 12 (Theorem 4.40):
+
+    >>> f = discrete_morse_function([(0, 1), (0, 2), (1, 2)], [((1,), (0, 1)), ((2,), (1, 2))])
+    >>> f
+    {(0,): 1.0, (1,): 3.0, (2,): 5.0, (0, 1): 2.0, (0, 2): 6.0, (1, 2): 4.0}
+    >>> gradient_pairs(f)
+    [((1,), (0, 1)), ((2,), (1, 2))]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

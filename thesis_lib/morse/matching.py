@@ -142,6 +142,16 @@ def morse_matching(
         An unknown heuristic, ``values`` missing for (or given to) a heuristic, or vertex values that are
         not finite, not 1-D or do not cover every vertex; a seed that is not a non-negative
         integer or None (``True``, ``[1, 2]``, ``numpy.array([1])``, ``1.5``, ``-1``).
+
+    Examples
+    --------
+    On the 6-vertex RP² the coreduction heuristic leaves one critical simplex in each dimension, the
+    fewest Z/2 allows (β = 1, 1, 1 over Z/2):
+
+    >>> from thesis_lib.datasets import rp2
+    >>> pairs = morse_matching(rp2())
+    >>> len(pairs), critical_counts(rp2(), pairs)
+    (14, [1, 1, 1])
     """
     if heuristic not in ("coreduction", "collapse", "lower-star"):
         raise ValueError(f"heuristic must be 'coreduction', 'collapse' or 'lower-star', got {heuristic!r}")
@@ -172,6 +182,12 @@ def critical_counts(simplices: ComplexLike, pairs: Pairs) -> list[int]:
     -------
     list of int
         ``out[k]`` the number of critical k-simplices, k = 0..dim K.
+
+    Examples
+    --------
+    >>> from thesis_lib.datasets import torus
+    >>> critical_counts(torus(), morse_matching(torus()))
+    [1, 2, 1]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

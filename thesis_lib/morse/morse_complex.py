@@ -47,6 +47,19 @@ def morse_boundary(simplices: ComplexLike, pairs: Pairs,
     -----
     Orientations are those of Definition 2.18 (vertices ascending).  Integer entries are exact in
     int64 (sums of ±1 over gradient paths).
+
+    Examples
+    --------
+    The Morse complex of RP² from a matching with one critical simplex per dimension: Z ← Z ← Z with
+    ∂̃_1 = 0 and ∂̃_2 = 2 (the two gradient paths from the triangle agree in sign):
+
+    >>> from thesis_lib.datasets import rp2
+    >>> from thesis_lib.morse import morse_matching
+    >>> critical, boundaries = morse_boundary(rp2(), morse_matching(rp2()))
+    >>> critical
+    [[(0,)], [(1, 2)], [(3, 4, 5)]]
+    >>> [b.toarray().tolist() for b in boundaries[1:]]
+    [[[0]], [[2]]]
     """
     return _morse_boundary(simplices, pairs, parse_field(coefficients, max_prime=MAX_EXACT_PRIME))
 
@@ -120,6 +133,15 @@ def chain_complex_homology(boundaries: Sequence[npt.ArrayLike | sp.spmatrix],
     ValueError
         Not a sequence of 2-D integer matrices, mismatched shapes, ∂∂ ≠ 0 (an entry named), an
         empty complex, or coefficients neither 0 nor a prime.
+
+    Examples
+    --------
+    The chain complex Z ← Z ← Z with ∂_1 = 0 and ∂_2 = 2, the Morse complex of RP²:
+
+    >>> import numpy as np
+    >>> boundaries = [np.zeros((0, 1), dtype=int), np.array([[0]]), np.array([[2]])]
+    >>> chain_complex_homology(boundaries)
+    [(1, []), (0, [2]), (0, [])]
     """
     field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
     p = field.p
@@ -188,6 +210,19 @@ def morse_homology(simplices: ComplexLike, pairs: Pairs, *, coefficients: int = 
     ------
     ValueError
         The vector field has a closed V-path or is invalid; coefficients neither 0 nor a prime.
+
+    Examples
+    --------
+    Homology of RP² from three critical simplices (Theorem 4.45): Z, Z/2, 0 over Z; Z/2 in every
+    dimension over Z/2:
+
+    >>> from thesis_lib.datasets import rp2
+    >>> from thesis_lib.morse import morse_matching
+    >>> pairs = morse_matching(rp2())
+    >>> morse_homology(rp2(), pairs)
+    [(1, []), (0, [2]), (0, [])]
+    >>> morse_homology(rp2(), pairs, coefficients=2)
+    [(1, []), (1, []), (1, [])]
     """
     field = parse_field(coefficients, max_prime=MAX_EXACT_PRIME)
     return _chain_homology(_morse_boundary(simplices, pairs, field)[1], field)

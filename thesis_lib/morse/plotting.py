@@ -31,6 +31,15 @@ def spectral_layout(simplices: ComplexLike) -> dict[int, tuple[float, float]]:
         Vertex label → (x, y): the eigenvectors of the second and third smallest eigenvalues of
         the graph Laplacian (signs fixed so that each coordinate's entry of largest magnitude is
         positive); for fewer than three vertices, their order along the x-axis.
+
+    Examples
+    --------
+    The square's cycle graph 0-1-2-3 is laid out with its four vertices on a circle:
+
+    >>> import numpy as np
+    >>> layout = spectral_layout([(0, 1), (1, 2), (2, 3), (0, 3)])
+    >>> sorted(layout), {round(float(np.hypot(*p)), 6) for p in layout.values()}
+    ([0, 1, 2, 3], {0.707107})
     """
     cx = cell_complex(simplices)
     verts = cx.arrays[0][:, 0]
@@ -88,6 +97,19 @@ def draw_gradient_field(
     ------
     ValueError
         A complex of dimension > 2, or an invalid vector field.
+
+    Examples
+    --------
+    The triangle with a gradient field that leaves only the vertex 0 critical: one arrow per pair.
+
+    >>> import matplotlib.pyplot as plt
+    >>> from matplotlib.text import Annotation
+    >>> pairs = [((1,), (0, 1)), ((2,), (0, 2)), ((1, 2), (0, 1, 2))]
+    >>> fig, ax = plt.subplots()
+    >>> ax = draw_gradient_field(ax, [(0, 1, 2)], pairs, positions={0: (0, 0), 1: (1, 0), 2: (0.5, 0.8)})
+    >>> sum(isinstance(t, Annotation) for t in ax.texts)
+    3
+    >>> plt.close(fig)
     """
     cx = cell_complex(simplices)
     if cx.dimension > 2:
@@ -172,6 +194,20 @@ def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
     ------
     ValueError
         The pairs are not a discrete vector field on the complex.
+
+    Examples
+    --------
+    The triangle's Hasse diagram: its seven simplices and nine face relations (arrows).
+
+    >>> import matplotlib.pyplot as plt
+    >>> from matplotlib.text import Annotation
+    >>> fig, ax = plt.subplots()
+    >>> ax = draw_hasse_diagram(ax, [(0, 1, 2)], [((1,), (0, 1)), ((2,), (0, 2)), ((1, 2), (0, 1, 2))])
+    >>> sorted(t.get_text() for t in ax.texts if t.get_text())
+    ['0', '01', '012', '02', '1', '12', '2']
+    >>> sum(isinstance(t, Annotation) for t in ax.texts)
+    9
+    >>> plt.close(fig)
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)

@@ -50,6 +50,13 @@ def torus_height(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
     ------
     ValueError
         Radii without 0 < r < R.
+
+    Examples
+    --------
+    The top of the torus of Example 4.2 (R = 2, r = 1), at u = v = 0, has height R + r = 3:
+
+    >>> float(torus_height(0.0, 0.0))
+    3.0
     """
     R, r = check_torus_radii(R, r)
     return np.cos(u) * (R + r * np.cos(v))
@@ -77,6 +84,16 @@ def torus_height_gradient(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
     ------
     ValueError
         Unless 0 < r < R.
+
+    Examples
+    --------
+    The gradient vanishes at the maximum u = v = 0; at u = π/2, v = 0 it is (−(R + r), 0):
+
+    >>> import numpy as np
+    >>> torus_height_gradient(0.0, 0.0).tolist() == [0.0, 0.0]
+    True
+    >>> bool(np.allclose(torus_height_gradient(np.pi / 2, 0.0), [-3.0, 0.0]))
+    True
     """
     R, r = check_torus_radii(R, r)
     return np.array([-np.sin(u) * (R + r * np.cos(v)), -r * np.cos(u) * np.sin(v)])
@@ -102,6 +119,14 @@ def torus_height_hessian(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 2.0,
     ------
     ValueError
         Radii that are not 0 < r < R (finite).
+
+    Examples
+    --------
+    Negative definite at the maximum, positive definite at the minimum u = π, v = 0:
+
+    >>> import numpy as np
+    >>> torus_height_hessian(0.0, 0.0).tolist(), torus_height_hessian(np.pi, 0.0).tolist()
+    ([[-3.0, 0.0], [0.0, -1.0]], [[3.0, 0.0], [0.0, 1.0]])
     """
     R, r = check_torus_radii(R, r)
     return np.array(
@@ -134,6 +159,14 @@ def morse_index(hessian: npt.ArrayLike, *, tol: float = 1e-9) -> int:
     ------
     ValueError
         The Hessian is not a finite symmetric square matrix, or is degenerate.
+
+    Examples
+    --------
+    Index 2 at the maximum, 0 at the minimum and 1 at the saddle u = 0, v = π:
+
+    >>> import numpy as np
+    >>> [morse_index(torus_height_hessian(u, v)) for u, v in [(0.0, 0.0), (np.pi, 0.0), (0.0, np.pi)]]
+    [2, 0, 1]
     """
     h = np.asarray(hessian, dtype=float)
     if h.ndim != 2 or h.shape[0] != h.shape[1] or not np.all(np.isfinite(h)):
@@ -174,6 +207,13 @@ def torus_critical_points(*, R: float = 2.0, r: float = 1.0, grid: int = 8) -> l
     ------
     ValueError
         Radii without 0 < r < R, or ``grid`` < 2.
+
+    Examples
+    --------
+    The four critical points of the height: a minimum, two saddles and a maximum (Example 4.2):
+
+    >>> [(round(p["value"], 6), p["index"]) for p in torus_critical_points()]
+    [(-3.0, 0), (-1.0, 1), (1.0, 1), (3.0, 2)]
     """
     R, r = check_torus_radii(R, r)
     if int(grid) < 2:
@@ -228,6 +268,16 @@ def morse_inequalities(critical_counts: Sequence[int], betti: Sequence[int]) -> 
     ------
     ValueError
         Lists that are not 1-D or hold negative numbers.
+
+    Examples
+    --------
+    The torus's height function is perfect (Crit = β); critical counts 2, 1, 1 cannot be those of a
+    Morse function on RP² (β = 1, 0, 0 over Z): the Euler equation fails:
+
+    >>> morse_inequalities([1, 2, 1], [1, 2, 1])
+    {'weak': True, 'euler': True, 'strong': True}
+    >>> morse_inequalities([2, 1, 1], [1, 0, 0])["euler"]
+    False
     """
     c = np.asarray(critical_counts, dtype=np.int64)
     b = np.asarray(betti, dtype=np.int64)
@@ -268,6 +318,14 @@ def sphere_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[t
         (``boundaries[0]`` has no rows).
     homology : list of (int, list of int)
         Its homology over Z, as :func:`~thesis_lib.morse.morse_complex.chain_complex_homology`.
+
+    Examples
+    --------
+    >>> names, boundaries, homology = sphere_morse_complex()
+    >>> names
+    [['r1', 'r2'], ['q1', 'q2'], ['p1', 'p2']]
+    >>> [b.toarray().tolist() for b in boundaries[1:]], homology
+    ([[[1, -1], [-1, 1]], [[1, 1], [1, 1]]], [(1, []), (0, []), (1, [])])
     """
     names = [["r1", "r2"], ["q1", "q2"], ["p1", "p2"]]
     mats = _complex([[[1, -1], [-1, 1]], [[1, 1], [1, 1]]], [2, 2, 2])
@@ -284,6 +342,15 @@ def rp2_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tupl
     names, boundaries, homology : list, list, list
         As in :func:`sphere_morse_complex`: the critical points r, q, p; the boundaries, which hold
         the numbers of flow lines (2) and so vanish mod 2; the homology over Z/2 (β = 1, 1, 1).
+
+    Examples
+    --------
+    Two flow lines between consecutive critical points: the boundaries are 2, zero mod 2, so every
+    point survives in Z/2-homology:
+
+    >>> names, boundaries, homology = rp2_morse_complex()
+    >>> names, [b.toarray().tolist() for b in boundaries[1:]], homology
+    ([['r'], ['q'], ['p']], [[[2]], [[2]]], [(1, []), (1, []), (1, [])])
     """
     names = [["r"], ["q"], ["p"]]
     mats = _complex([[[2]], [[2]]], [1, 1, 1])
@@ -300,6 +367,12 @@ def torus_morse_complex() -> tuple[list[list[str]], list[sp.csc_matrix], list[tu
     names, boundaries, homology : list, list, list
         As in :func:`sphere_morse_complex`: the critical points r; q1, q2; p, boundary entries 2
         (the flow-line counts) and the homology over Z/2, β = 1, 2, 1.
+
+    Examples
+    --------
+    >>> names, boundaries, homology = torus_morse_complex()
+    >>> names, homology
+    ([['r'], ['q1', 'q2'], ['p']], [(1, []), (2, []), (1, [])])
     """
     names = [["r"], ["q1", "q2"], ["p"]]
     mats = _complex([[[2, 2]], [[2], [2]]], [1, 2, 1])

@@ -51,6 +51,13 @@ def check_vector_field(simplices: ComplexLike, pairs: Pairs) -> list[tuple[Simpl
     ValueError
         If a pair is not a face of codimension one, a simplex is not in the complex, or a simplex
         lies in two pairs.
+
+    Examples
+    --------
+    Pairs come back with sorted vertices, ordered by sigma:
+
+    >>> check_vector_field([(0, 1), (0, 2), (1, 2)], [((2,), (2, 1)), ((1,), (1, 0))])
+    [((1,), (0, 1)), ((2,), (1, 2))]
     """
     cx = cell_complex(simplices)
     return pairs_from_partner(cx, partner_array(cx, pairs))
@@ -71,6 +78,13 @@ def critical_cells(simplices: ComplexLike, pairs: Pairs) -> list[list[Simplex]]:
     -------
     list of list of tuple
         ``out[k]`` lists the critical k-simplices, lexicographically, for k = 0..dim K.
+
+    Examples
+    --------
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> critical_cells(circle, pairs)
+    [[(0,)], [(0, 2)]]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -97,6 +111,16 @@ def vpath_graph(simplices: ComplexLike, pairs: Pairs) -> tuple[list[Simplex], sp
         All simplices in the global order: by dimension, then lexicographically.
     graph : scipy.sparse.csr_matrix, shape (n, n)
         The int8 adjacency matrix: ``graph[i, j] = 1`` for an edge ``cells[i] → cells[j]``.
+
+    Examples
+    --------
+    The V-path steps on the circle: 1 → 0 (through 01) and 2 → 1 (through 12):
+
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> cells, graph = vpath_graph(circle, pairs)
+    >>> [(cells[i], cells[j]) for i, j in zip(*graph.nonzero())]
+    [((1,), (0,)), ((2,), (1,))]
     """
     cx = cell_complex(simplices)
     return cx.simplices(), vpath_edges(cx, partner_array(cx, pairs))
@@ -120,6 +144,17 @@ def hasse_diagram(simplices: ComplexLike, pairs: Pairs = ()) -> tuple[list[Simpl
     cells, graph : list of tuple, scipy.sparse.csr_matrix
         As in :func:`vpath_graph`: the simplices in the global order and the (n × n) int8
         adjacency matrix, here of the modified Hasse diagram.
+
+    Examples
+    --------
+    The edges of the modified Hasse diagram of the circle: each edge points to its vertices, except
+    the paired ones, reversed (1 → 01, 2 → 12):
+
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> cells, graph = hasse_diagram(circle, pairs)
+    >>> sorted((cells[i], cells[j]) for i, j in zip(*graph.nonzero()))
+    [((0, 1), (0,)), ((0, 2), (0,)), ((0, 2), (2,)), ((1,), (0, 1)), ((1, 2), (1,)), ((2,), (1, 2))]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -150,6 +185,16 @@ def is_acyclic(simplices: ComplexLike, pairs: Pairs, *, method: str = "vpaths") 
     ------
     ValueError
         An invalid vector field or an unknown ``method``.
+
+    Examples
+    --------
+    Pairing each vertex with the next edge round the circle makes a closed V-path:
+
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> cyclic = [((0,), (0, 1)), ((1,), (1, 2)), ((2,), (0, 2))]
+    >>> is_acyclic(circle, pairs), is_acyclic(circle, cyclic)
+    (True, False)
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -179,6 +224,15 @@ def find_closed_vpath(simplices: ComplexLike, pairs: Pairs) -> list[Simplex] | N
     list of tuple or None
         The simplices of one closed V-path, alternating k- and (k+1)-simplices and ending where it
         starts; None when the field is acyclic.
+
+    Examples
+    --------
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> cyclic = [((0,), (0, 1)), ((1,), (1, 2)), ((2,), (0, 2))]
+    >>> find_closed_vpath(circle, cyclic)
+    [(0,), (0, 1), (1,), (1, 2), (2,), (0, 2), (0,)]
+    >>> find_closed_vpath(circle, cyclic[:2]) is None
+    True
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -214,6 +268,15 @@ def vpaths(simplices: ComplexLike, pairs: Pairs, start: Sequence[int],
     ValueError
         A cyclic field (infinitely many paths), ``start`` not in the complex, or more than
         ``max_paths`` paths.
+
+    Examples
+    --------
+    From the vertex 2 the field of the circle flows down to the critical vertex 0:
+
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> vpaths(circle, pairs, (2,))
+    [[(2,), (1, 2), (1,), (0, 1), (0,)]]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
@@ -255,6 +318,16 @@ def gradient_paths(simplices: ComplexLike, pairs: Pairs, tau: Sequence[int],
     ------
     ValueError
         A cyclic field, a simplex not in the complex, or ``tau`` not one dimension above ``sigma``.
+
+    Examples
+    --------
+    Two gradient paths run from the critical edge 02 to the critical vertex 0, with opposite signs: the
+    Morse boundary of 02 is 0, so H_1 of the circle is Z:
+
+    >>> circle = [(0, 1), (0, 2), (1, 2)]
+    >>> pairs = [((1,), (0, 1)), ((2,), (1, 2))]
+    >>> gradient_paths(circle, pairs, (0, 2), (0,))
+    [([(0, 2), (0,)], -1), ([(0, 2), (2,), (1, 2), (1,), (0, 1), (0,)], 1)]
     """
     cx = cell_complex(simplices)
     partner = partner_array(cx, pairs)
