@@ -204,18 +204,27 @@ struct Scratch {
         : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)), w(static_cast<std::size_t>(k + 3)) {}
 };
 
-// The earliest coface of the k-simplex s (vertices verts, diameter d) when it has s's diameter
-// (index −1 otherwise), and whether the two form a zero apparent pair.
+// The earliest coface tau of the k-simplex s (vertices verts, diameter d) when it has s's diameter
+// (index −1 otherwise), and whether the two form a zero apparent pair: always when the new vertex is
+// above s's (s omits tau's top vertex and has tau's diameter: the latest facet), else when tau's
+// latest facet is s.  When they do not, taken says whether tau is the upper simplex of another zero
+// apparent pair (e, tau) (e its latest facet), so that s cannot be paired with tau at once.
 // Thesis: Definition 4.30 (a pair of the discrete gradient), Theorem 4.42's idea.
-Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent) {
+Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent,
+                             bool& taken) {
     double od[1];
     i64 oi[1], oj[1];
     const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, oj);
-    apparent = false;
-    if (t.index != -1) {
-        if (t.j >= 0)  // tau's vertices: s's with j inserted at position m
-            for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
-        apparent = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), t.j >= 0) == s;
+    apparent = t.index != -1 && t.m == 0;
+    taken = false;
+    if (t.index != -1 && t.m > 0) {
+        for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
+        const i64 e = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), true);
+        apparent = e == s;
+        if (e != -1 && e != s) {
+            vertices(g, e, k, x.verts.data());
+            taken = zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == t.index;
+        }
     }
     return t;
 }
@@ -234,7 +243,8 @@ i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
 
 // ---------------------------------------------------------------------------- the columns of a dimension
 // A simplex: its diameter and index.  A column to reduce: its simplex, the earliest coface when that
-// has the simplex's diameter (else −1) and the sign of that coface in the coboundary.
+// has the simplex's diameter and is the upper simplex of no zero apparent pair (else −1: no emergent
+// pair) and the sign of that coface in the coboundary.
 struct Simplex {
     double d;
     i64 idx;
@@ -297,15 +307,17 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, b
         if (keep_all) out.all.push_back({d, s});
         if (upper || cleared.contains(s)) return;
         ++out.candidates;
-        bool app;
-        const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app);
+        bool app, taken;
+        const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app, taken);
         if (app) {
             ++out.apparent;
             if (next && t.m > 0) out.uppers.push_back(t.index);
         } else {
-            out.columns.push_back({d, s, t.index, 1 - 2 * (t.m & 1)});
+            out.columns.push_back({d, s, taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
         }
     };
+    if (generate && keep_all)  // about the mean degree over k + 1 cofaces above each f (reserved, not touched)
+        out.all.reserve(static_cast<std::size_t>((hi - lo) * g.indptr[g.n] / (g.n * (k + 1)) + 16));
     i64 rest = -1;  // f's index without its top vertex, for the last f: a sibling shares its lower vertices
     from.visit(lo, hi, [&](const Simplex& f) {
         if (!generate) {
@@ -604,9 +616,9 @@ struct Reduced {
     i64 emergent = 0, worked = 0, additions = 0, read = 0, most = 0;
 };
 
-// Reduce the coboundary columns of the k-simplices col_i (latest first) over Z/p: col_tau/col_sign
-// give each column's earliest coface when it has the column's diameter (else −1) and its sign; app
-// is the table tau → s of the zero apparent pairs (s, tau) of this dimension.
+// Reduce the coboundary columns of the k-simplices cols (latest first) over Z/p: each column's tau and
+// sign are its earliest coface when that may make an emergent pair (else −1) and its sign; the
+// pivots of zero apparent pairs met are found by zero_apparent_facet.
 // Thesis: Algorithm 1 (Reduce) inside Algorithm 2, §2.3.5, on the cohomology side (Theorem 2.39),
 // with emergent and apparent pairs (Definitions 4.30–4.33).
 Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
@@ -629,7 +641,7 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
         const i64 t = cols[c].tau;
         if (t != -1) {  // emergent pair: the earliest coface has s's diameter and nobody owns it
             const i64 h = piv_t.slot(t);
-            if (piv_t.keys[h] == -1 && zero_apparent_facet(g, t, k, ds, x) == -1) {
+            if (piv_t.keys[h] == -1) {
                 piv_t.keys[h] = t;
                 piv_t.vals[h] = c;
                 pcoef[c] = floor_mod(cols[c].sign, p);
