@@ -60,8 +60,8 @@ def apparent_pairs(filtration: Filtration | Iterable[Any], *,
 
     Examples
     --------
-    The Rips filtration of the unit square: each vertex but the first is paired with its first edge,
-    and a diagonal with a triangle:
+    The Rips filtration of the unit square: each vertex but the first is paired with an edge, and each
+    diagonal with a triangle:
 
     >>> from thesis_lib.complexes import rips
     >>> square = rips([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], max_radius=1.0, max_dim=2)
