@@ -42,7 +42,7 @@ def angle_defects(vertices: npt.ArrayLike, simplices: npt.ArrayLike) -> np.ndarr
     Examples
     --------
     At each vertex of the octahedron four angles π/3 meet: the defect is 2π/3, and the six defects
-    sum to 2πχ = 4π (Theorem 3.11):
+    sum to 2πχ = 4π (Theorem 3.8):
 
     >>> import numpy as np
     >>> from thesis_lib.meshes import convex_hull_surface
