@@ -289,7 +289,7 @@ def discrete_morse_function(simplices: ComplexLike, pairs: Pairs) -> dict[Simple
 
     Examples
     --------
-    Values 1..n for the field of the circle that pairs 1 with 01 and 2 with 12 (Theorem 4.40):
+    Values 1..n for the field of the circle that pairs 1 with 01 and 2 with 12 (Theorem 4.36):
 
     >>> f = discrete_morse_function([(0, 1), (0, 2), (1, 2)], [((1,), (0, 1)), ((2,), (1, 2))])
     >>> f

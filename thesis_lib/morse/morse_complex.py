@@ -213,7 +213,7 @@ def morse_homology(simplices: ComplexLike, pairs: Pairs, *, coefficients: int = 
 
     Examples
     --------
-    Homology of RP² from three critical simplices (Theorem 4.45): Z, Z/2, 0 over Z; Z/2 in every
+    Homology of RP² from three critical simplices (Theorem 4.42): Z, Z/2, 0 over Z; Z/2 in every
     dimension over Z/2:
 
     >>> from thesis_lib.datasets import rp2
