@@ -213,6 +213,17 @@ def test_a_value_out_of_range_is_refused_before_any_kernel_starts(root, capsys, 
     assert resolve_parameters("toy", {"n": "1", "x": "1"})["x"] == 1.0  # the bounds themselves are allowed
 
 
+def test_a_list_parameter_may_need_items(root, capsys, no_kernels):
+    _ranges(root, "[toy]\nsizes = { min = 1, min_items = 2 }\n")
+    assert lab_cli.main(["run", "toy", "-p", "sizes", "[5]"]) == 2
+    assert "parameter 'sizes' of toy needs at least 2 item(s), got [5]" in capsys.readouterr().err
+    assert no_kernels == []
+    assert resolve_parameters("toy", {"sizes": "5,6"})["sizes"] == [5, 6]
+    _ranges(root, "[toy]\nn = { min_items = 1 }\n")  # only a list has items
+    with pytest.raises(ParameterError, match="expected an inline table of min, max, above, below, got"):
+        resolve_parameters("toy")
+
+
 def test_a_default_out_of_range_is_refused_too(root):
     _ranges(root, "[toy]\nn = { max = 2 }\n")
     with pytest.raises(ParameterError, match="parameter 'n' of toy is out of range: got 3; allowed: n <= 2"):

@@ -29,9 +29,11 @@ CONFORMING = (
     "book/intro.ipynb",
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
+    "experiments/hypersurfaces.ipynb",
     "experiments/range-patches.ipynb",
     "experiments/radius-curvature.ipynb",
     "experiments/rp2-morse.ipynb",
+    "experiments/two-circles.ipynb",
 )
 #: the largest median number of code lines per code cell
 MAX_MEDIAN_LINES = 7

@@ -31,7 +31,7 @@ def test_torus_thresholds_follow_the_hilbert_function():
     run = torus_run(X, K, exact=exact, radii=eps, n_kappa=11)
     kappa = np.linspace(K.min(), K.max(), 11)
     hf = hilbert_function(radius_curvature_bifiltration(X, K, complex="alpha", absolute=False), eps, kappa, dims=[1, 2])
-    assert np.array_equal(run.hilbert, hf) and np.array_equal(run.kappa, kappa)
+    assert np.array_equal(run.hilbert, hf) and np.array_equal(run.curvatures, kappa)
     assert hf[0][run.star, -1] == 2 and hf[1][run.star, -1] == 1
     row = hf[0][run.star]
     assert run.one == first_at_least(row, kappa, 1) and run.transient == row.max()
@@ -51,7 +51,7 @@ def test_the_circles_junctions_are_the_most_curved_and_come_last():
     assert run.junction == np.median(kap[near]) > run.rest == np.median(kap[~near])
     three = run.hilbert == 3
     e3 = np.flatnonzero(three[:, -1])[0]
-    assert run.eps3 == run.radii[e3] and run.kappa3 == first_at_least(three[e3], run.kappa, 1)
+    assert run.eps3 == run.radii[e3] and run.kappa3 == first_at_least(three[e3], run.curvatures, 1)
     assert run.kappa3_rank == np.mean(kap < run.kappa3) > 0.5  # the loops need the most curved points
     with pytest.raises(ValueError, match="never reaches 3"):
         circles_run(X, kap, junctions=two_circles_intersections(), max_radius=0.01, n_eps=5, n_kappa=5)

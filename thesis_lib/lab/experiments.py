@@ -302,6 +302,8 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
 
 #: the bounds a range may give: inclusive ``min`` / ``max``, strict ``above`` / ``below``
 _BOUNDS = {"min": ">=", "max": "<=", "above": ">", "below": "<"}
+#: the bound a list parameter may add: its least number of items
+_MIN_ITEMS = "min_items"
 
 
 def ranges_path() -> Path:
@@ -321,7 +323,7 @@ def parameter_ranges(name: str, *, defaults: Mapping[str, object] | None = None)
     ``experiments/parameters.toml`` has one table per experiment, and in it one inline table per
     parameter with any of ``min`` and ``max`` (inclusive) and ``above`` and ``below`` (strict), e.g.
     ``n_trials = { min = 1 }`` or ``top = { above = 0, max = 1 }``.  A list parameter's range holds
-    for each of its items.  :func:`resolve_parameters` checks every value (the defaults included)
+    for each of its items, and ``min_items`` bounds its length (``sizes = { min = 1, min_items = 1 }``).  :func:`resolve_parameters` checks every value (the defaults included)
     against it before any kernel starts.
 
     Parameters
@@ -358,8 +360,9 @@ def parameter_ranges(name: str, *, defaults: Mapping[str, object] | None = None)
         items = defaults[key] if isinstance(defaults[key], list) else [defaults[key]]
         if any(isinstance(v, (bool, str)) for v in items):
             raise ParameterError(f"{where}: a range needs a numeric parameter, its default is {defaults[key]!r}")
-        if not isinstance(bounds, dict) or not bounds or set(bounds) - set(_BOUNDS):
-            raise ParameterError(f"{where}: expected an inline table of {', '.join(_BOUNDS)}, got {bounds!r}")
+        allowed = [*_BOUNDS, _MIN_ITEMS] if isinstance(defaults[key], list) else list(_BOUNDS)
+        if not isinstance(bounds, dict) or not bounds or set(bounds) - set(allowed):
+            raise ParameterError(f"{where}: expected an inline table of {', '.join(allowed)}, got {bounds!r}")
         if any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in bounds.values()):
             raise ParameterError(f"{where}: the bounds must be numbers, got {bounds!r}")
         out[key] = dict(bounds)
@@ -379,6 +382,11 @@ def _range_text(key: str, bounds: Mapping[str, float]) -> str:
 def _check_range(name: str, key: str, value: object, bounds: Mapping[str, float]) -> None:
     tests = {"min": lambda v, b: v >= b, "max": lambda v, b: v <= b,
              "above": lambda v, b: v > b, "below": lambda v, b: v < b}
+    bounds = dict(bounds)
+    least = bounds.pop(_MIN_ITEMS, None)
+    if least is not None and len(value) < least:
+        raise ParameterError(f"parameter {key!r} of {name} needs at least {least:g} item(s), got {value!r} "
+                             f"(declared in {ranges_path()})")
     for item in value if isinstance(value, list) else [value]:
         if not all(tests[k](item, b) for k, b in bounds.items()):
             what = f"item {item!r} of {value!r}" if isinstance(value, list) else repr(value)

@@ -69,7 +69,7 @@ class TorusRun:
     ----------
     bifiltration : the alpha bifiltration, κ the signed estimate.
     hilbert : ``[β₁, β₂]`` on the grid (``hilbert[0][i, j]`` at ε_i, κ_j).
-    kappa : the κ grid (from the least to the largest estimate).
+    curvatures : the κ grid (from the least to the largest estimate).
     star : index of ε*, the middle of the ε band where the whole torus has β₁ = 2 and β₂ = 1.
     sign : the fraction of points whose estimate has the sign of the exact curvature.
     one, two : the first κ at ε* with β₁ ≥ 1, and the κ from which β₁ = 2 for good (NaN if never).
@@ -79,7 +79,7 @@ class TorusRun:
 
     bifiltration: Bifiltration
     hilbert: list[np.ndarray]
-    kappa: np.ndarray
+    curvatures: np.ndarray
     star: int
     sign: float
     one: float
@@ -147,7 +147,7 @@ def torus_run(points: npt.ArrayLike, curvature: npt.ArrayLike, *, exact: npt.Arr
     row = hf[0][star]
     settled = np.flatnonzero(row != 2)  # β₁ = 2 from just after the last κ where it is not 2
     two = kappa[settled[-1] + 1] if settled.size and settled[-1] + 1 < n_kappa else np.nan
-    return TorusRun(bifiltration=bif, hilbert=hf, kappa=kappa, star=star,
+    return TorusRun(bifiltration=bif, hilbert=hf, curvatures=kappa, star=star,
                     sign=np.mean(np.sign(K) == np.sign(exact)), one=first_at_least(row, kappa, 1), two=two,
                     inner=int(np.bincount(row[kappa <= 0]).argmax()), transient=int(row.max()))
 
@@ -162,7 +162,7 @@ class CirclesRun:
     ----------
     bifiltration : the Rips bifiltration, κ = |estimated curvature|.
     hilbert : β₁ on the grid.
-    radii, kappa : the ε grid and the κ grid (quantiles of the estimates).
+    radii, curvatures : the ε grid and the κ grid (quantiles of the estimates).
     junction, rest : the median |κ| near the circles' meeting points and elsewhere.
     eps3 : the smallest ε of the grid with β₁ = 3 at full κ.
     kappa3 : the smallest κ with β₁ = 3 at ``eps3``.
@@ -172,7 +172,7 @@ class CirclesRun:
     bifiltration: Bifiltration
     hilbert: np.ndarray
     radii: np.ndarray
-    kappa: np.ndarray
+    curvatures: np.ndarray
     junction: float
     rest: float
     eps3: float
@@ -236,5 +236,5 @@ def circles_run(points: npt.ArrayLike, curvature: npt.ArrayLike, *, junctions: n
         raise ValueError("β₁ never reaches 3 on the ε grid: raise max_radius")
     e3 = int(full[0])  # the smallest ε with β₁ = 3 at full κ, then the smallest κ with β₁ = 3 there
     kappa3 = first_at_least(three[e3], kappa, 1)
-    return CirclesRun(bifiltration=bif, hilbert=hf, radii=eps, kappa=kappa, junction=np.median(kap[close]),
+    return CirclesRun(bifiltration=bif, hilbert=hf, radii=eps, curvatures=kappa, junction=np.median(kap[close]),
                       rest=np.median(kap[~close]), eps3=eps[e3], kappa3=kappa3, kappa3_rank=np.mean(kap < kappa3))
