@@ -131,3 +131,12 @@ def test_results_names_cannot_leave_the_results_folder(name):
 
     with pytest.raises(ValueError, match="invalid experiment name"):
         results_dir(name)
+
+
+def test_format_result_writes_counts_exactly_and_reals_to_their_digits():
+    from thesis_lib.lab.results import format_result
+
+    assert format_result(1333500) == "1,333,500" and format_result(0) == "0"
+    assert format_result(0.50041283) == "0.5" and format_result(0.1167109) == "0.12"
+    assert format_result(0.1167109, digits=3) == "0.117" and format_result(12345.678, digits=3) == "1.23e+04"
+    assert format_result(float("nan")) == "nan"

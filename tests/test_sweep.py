@@ -48,6 +48,21 @@ def test_kept_sweeps_are_stored_with_the_default_run_without_times(root):
         stored_sweeps("toy", columns=["nothing"])
 
 
+def test_stored_sweeps_for_a_reader_titles_numbers_and_a_note(root):
+    sweep("toy", {"n": [2000, 3], "x": [0.123456, 0.5], "fail": [False, True]}, progress=False, keep=True)
+    (text,) = stored_sweeps("toy", columns=["n", "x", "square"], titles=["points", "$x$", "n²"], digits=2, note=True)
+    lines = text.splitlines()
+    assert lines[2:4] == ["| points | $x$ | n² |", "|---|---|---|"]
+    assert "| 2,000 | 0.12 | 4,000,000 |" in lines and "| 3 | 0.5 | 9 |" in lines
+    assert lines[-1] == "4 of the runs did not finish." and lines[-2] == ""  # fail=True: half of the 8 runs
+    (raw,) = stored_sweeps("toy", columns=["n", "x"])
+    assert "| 2000 | 0.123456 |" in raw and "did not finish" not in raw
+    with pytest.raises(ValueError, match="give columns too"):
+        stored_sweeps("toy", digits=2)
+    with pytest.raises(ValueError, match="one title per column"):
+        stored_sweeps("toy", columns=["n", "x"], titles=["points"])
+
+
 def test_sweep_in_parallel_gives_the_same_table(root):
     _, serial = sweep("toy", {"n": [5, 6]}, progress=False)
     for path in (root / "runs" / "toy").glob("*/complete.json"):

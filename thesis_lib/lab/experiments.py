@@ -323,8 +323,9 @@ def parameter_ranges(name: str, *, defaults: Mapping[str, object] | None = None)
     ``experiments/parameters.toml`` has one table per experiment, and in it one inline table per
     parameter with any of ``min`` and ``max`` (inclusive) and ``above`` and ``below`` (strict), e.g.
     ``n_trials = { min = 1 }`` or ``top = { above = 0, max = 1 }``.  A list parameter's range holds
-    for each of its items, and ``min_items`` bounds its length (``sizes = { min = 1, min_items = 1 }``).  :func:`resolve_parameters` checks every value (the defaults included)
-    against it before any kernel starts.
+    for each of its items, and ``min_items`` bounds its length (``sizes = { min = 1, min_items = 1 }``).
+    :func:`resolve_parameters` checks every value (the defaults included) against it before any
+    kernel starts.
 
     Parameters
     ----------

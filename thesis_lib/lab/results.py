@@ -24,6 +24,7 @@ __all__ = [
     "Recorder",
     "ResultsError",
     "check_name",
+    "format_result",
     "load",
     "read_json",
     "check_table",
@@ -70,6 +71,32 @@ def round_sig(x: float, digits: int) -> float:
     if x == 0 or not math.isfinite(x):
         return x
     return round(x, digits - 1 - math.floor(math.log10(abs(x))))
+
+
+def format_result(value: float, *, digits: int = 2) -> str:
+    """A stored result as the book writes it: a count exactly, with thousands separators; a real
+    to ``digits`` significant digits (the book's rule, :func:`round_sig`).
+
+    Parameters
+    ----------
+    value : int or float
+        The result (a bool counts as a count).
+    digits : int, default 2
+        Significant digits of a real.
+
+    Returns
+    -------
+    str
+        The text.
+
+    Examples
+    --------
+    >>> format_result(1333500), format_result(0.50041283), format_result(0.1167109, digits=3)
+    ('1,333,500', '0.5', '0.117')
+    """
+    if isinstance(value, numbers.Integral):
+        return f"{value:,}"
+    return f"{round_sig(value, digits):.{digits}}"
 
 
 class ResultsError(ValueError):

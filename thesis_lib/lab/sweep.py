@@ -32,7 +32,7 @@ from .._optional import require
 from . import atomic
 from .execute import DEFAULT_MAX_OUTPUT_MB, RunOutput, cancel_runs, execute, kill_kernels, missing_on_worker
 from .experiments import ParameterError, resolve_parameters, run_hash
-from .results import results_dir
+from .results import results_dir, round_sig
 from .runner import RunResult, check_paths, local_spec, read_run, report_corrupt, runs_dir, write_run
 from .tables import markdown_table
 
@@ -503,7 +503,8 @@ def collect(name: str, grid: dict[str, list[object]], *, root: Path | None = Non
     return rows, _write_tables(name, list(grid), points, rows, base, keep)
 
 
-def stored_sweeps(name: str, *, columns: list[str] | None = None) -> list[str]:
+def stored_sweeps(name: str, *, columns: list[str] | None = None, titles: list[str] | None = None,
+                  digits: int | None = None, note: bool = False) -> list[str]:
     """Markdown tables of the sweeps stored with experiment ``name`` (``sweep(..., keep=True)``).
 
     Parameters
@@ -513,18 +514,35 @@ def stored_sweeps(name: str, *, columns: list[str] | None = None) -> list[str]:
     columns : list of str, optional
         Keep only these columns (in that order) of each table, read from its CSV twin; the command
         line stays on top.  By default the stored Markdown as it is.
+    titles : list of str, optional
+        The headers of ``columns`` (one each); by default the column names.
+    digits : int, optional
+        Write numbers for a reader: whole numbers with thousands separators, others to ``digits``
+        significant digits; by default the stored text.
+    note : bool, default False
+        End each table with a line saying whether every run finished (from the ``status`` column).
 
     Returns
     -------
     list of str
-        One Markdown text per stored sweep (the command line, a blank line, the table), by file
-        name; empty when none is stored.
+        One Markdown text per stored sweep (the command line, a blank line, the table, and the note),
+        by file name; empty when none is stored.
 
     Raises
     ------
     ValueError
-        If a stored sweep lacks one of ``columns``.
+        If a stored sweep lacks one of ``columns``, or ``titles``, ``digits`` or ``note`` is given
+        without ``columns``, or ``titles`` has not one title per column.
+
+    Examples
+    --------
+    >>> stored_sweeps("an-experiment-without-sweeps")
+    []
     """
+    if columns is None and (titles is not None or digits is not None or note):
+        raise ValueError("titles, digits and note shape the chosen columns: give columns too")
+    if titles is not None and len(titles) != len(columns):
+        raise ValueError(f"titles must have one title per column ({len(columns)}), got {len(titles)}")
     tables = []
     for md in sorted((results_dir(name) / "sweeps").glob("*.md")):
         if columns is None:
@@ -532,9 +550,23 @@ def stored_sweeps(name: str, *, columns: list[str] | None = None) -> list[str]:
             continue
         with md.with_suffix(".csv").open(newline="") as fh:
             rows = list(csv.DictReader(fh))
-        missing = [c for c in columns if rows and c not in rows[0]]
+        missing = [c for c in [*columns, *(["status"] if note else [])] if rows and c not in rows[0]]
         if missing:
             raise ValueError(f"the stored sweep {md.name} of {name!r} has no columns {missing}")
         command = md.read_text().split("\n", 1)[0]
-        tables.append(f"{command}\n\n" + markdown_table(columns, [[r[c] for c in columns] for r in rows]))
+        cells = [[_readable(r[c], digits) if digits is not None else r[c] for c in columns] for r in rows]
+        text = f"{command}\n\n" + markdown_table(titles or columns, cells)
+        if note:
+            failed = sum(r["status"].strip() != "ok" for r in rows)
+            text += "\n" + (f"{failed} of the runs did not finish." if failed else "Every run finished.")
+        tables.append(text)
     return tables
+
+
+def _readable(text: str, digits: int) -> str:
+    """A stored cell for a reader: whole numbers with thousands separators, others to ``digits`` digits."""
+    try:
+        number = float(text)
+    except ValueError:
+        return text
+    return f"{int(number):,}" if number.is_integer() else f"{round_sig(number, digits):g}"

@@ -427,7 +427,7 @@ class Barcode:
         Examples
         --------
         Example 2.38: the components of a and b merge at 1; c and d, born at 1 and joined at once by cd,
-    join them at 2; e, born at 2, joins at 3:
+        join them at 2; e, born at 2, joins at 3:
 
         >>> from thesis_lib.datasets import example_filtration
         >>> from thesis_lib.persistence import persistence
