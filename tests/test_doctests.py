@@ -25,14 +25,6 @@ PACKAGES = (
     "thesis_lib.morse",
 )
 
-#: public names defined in files that are edited elsewhere; their examples are still to be written
-WITHOUT_EXAMPLES = {
-    "thesis_lib.morse.examples.rp2_gradient_field",
-    "thesis_lib.morse.examples.rp2_chart",
-    "thesis_lib.morse.examples.example_4_45",
-    "thesis_lib.morse.examples.experiment_complex",
-}
-
 
 def exported_names(package: str) -> list[str]:
     module = importlib.import_module(package)
@@ -91,14 +83,9 @@ def test_the_scope_is_large_enough_to_mean_something():
 def test_every_public_name_has_an_example(package):
     missing = sorted(
         q for q, obj in PER_PACKAGE[package].items()
-        if ">>>" not in (inspect.getdoc(obj) or "") and q not in WITHOUT_EXAMPLES
+        if ">>>" not in (inspect.getdoc(obj) or "")
     )
     assert not missing, f"{package}: public names without a >>> example: {missing}"
-
-
-def test_the_exceptions_are_still_needed():
-    have = [q for q in WITHOUT_EXAMPLES if ">>>" in (inspect.getdoc(TARGETS[q]) or "")]
-    assert not have, f"remove from WITHOUT_EXAMPLES, they have examples now: {have}"
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -31,6 +31,13 @@ def rp2_gradient_field() -> list[tuple[Simplex, Simplex]]:
     -------
     list of (tuple, tuple)
         The 14 pairs ``(sigma, tau)`` of the field, sigma a facet of tau.
+
+    Examples
+    --------
+    >>> from thesis_lib.morse import critical_cells, is_acyclic
+    >>> field = rp2_gradient_field()
+    >>> critical_cells(RP2_FACETS, field), is_acyclic(RP2_FACETS, field)  # a, σ = ac and τ = ace
+    ([[(0,)], [(0, 2)], [(0, 2, 4)]], True)
     """
     return [
         ((0, 3), (0, 3, 5)), ((0, 4), (0, 1, 4)), ((0, 5), (0, 2, 5)), ((1,), (0, 1)),
@@ -53,6 +60,12 @@ def rp2_chart() -> dict[Simplex, list[tuple[float, float]]]:
         For each triangle of ``RP2_FACETS``, the (x, y) positions of its three vertices, in the
         triangle's vertex order; the chart argument of
         :func:`~thesis_lib.morse.plotting.draw_gradient_field`.
+
+    Examples
+    --------
+    >>> chart = rp2_chart()
+    >>> len(chart), [tuple(round(x, 3) for x in corner) for corner in chart[(0, 1, 3)]]
+    (10, [(0.0, 1.0), (0.866, 0.5), (0.39, 0.225)])
     """
     import numpy as np
 
@@ -84,6 +97,13 @@ def example_4_45() -> tuple[list[Simplex], list[tuple[Simplex, Simplex]]]:
         The facets (123, 24, 34).
     pairs : list of (tuple, tuple)
         The acyclic vector field, pairs ``(sigma, tau)``.
+
+    Examples
+    --------
+    >>> from thesis_lib.morse import critical_cells
+    >>> simplices, pairs = example_4_45()
+    >>> critical_cells(simplices, pairs)  # v_2 and e_23
+    [[(2,)], [(2, 3)], []]
     """
     simplices = [(1, 2, 3), (2, 4), (3, 4)]
     pairs = [((1,), (1, 2)), ((1, 3), (1, 2, 3)), ((3,), (3, 4)), ((4,), (2, 4))]
@@ -123,6 +143,12 @@ def experiment_complex(name: str, *, seed: int = 0) -> tuple[
     ------
     ValueError
         An unknown name.
+
+    Examples
+    --------
+    >>> facets, positions, chart = experiment_complex("random-flag", seed=0)
+    >>> len(facets), len(positions), chart is None
+    (62, 14, True)
     """
     from ..complexes.rips import rips
     from ..datasets import dunce_hat, klein_bottle, torus, two_circles
