@@ -284,25 +284,32 @@ struct Blocks {
     }
 };
 
-// The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`: with
-// generate, `from` holds every (k − 1)-simplex f and its cofaces tau = f ∪ {j} with j above f's
-// vertices are met (each k-simplex once, its vertices known); otherwise `from` holds the k-simplices
-// themselves.  A simplex met is kept in all when keep_all; it is a candidate unless it is a pivot of
-// dimension k − 1 (cleared) or the upper simplex of a zero apparent pair (e, tau) of dimension k − 1,
-// and a column unless it is the lower simplex of one.  The upper simplices need no table when e = f:
-// f is tau's latest facet exactly when the two have one diameter (f omits tau's top vertex), so the
-// first such coface met from f is f's earliest coface and the pair's upper simplex, and the later
-// ones are no upper simplex.  Only the pairs whose new vertex is below the lower simplex's top
-// vertex are kept in uppers (when next: a dimension k + 1 follows), and looked up only for the
-// cofaces above f's diameter.
+// The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`, which
+// holds the (k − levels)-simplices: with levels 0 the k-simplices themselves; with 1 each (k − 1)-simplex
+// f and its cofaces tau = f ∪ {j} with j above f's vertices are met (each k-simplex once, its
+// vertices known); with 2 the (k − 1)-simplices f are met the same way from the (k − 2)-simplices,
+// and not stored (the top dimension's facets, the largest list).  A simplex met is kept in all when
+// keep_all; it is a candidate unless it is a pivot of dimension k − 1 (cleared) or the upper simplex
+// of a zero apparent pair (e, tau) of dimension k − 1, and a column unless it is the lower simplex of
+// one.  The upper simplices need no table when e = f: f is tau's latest facet exactly when the two
+// have one diameter (f omits tau's top vertex), so the first such coface met from f is f's earliest
+// coface and the pair's upper simplex, and the later ones are no upper simplex.  Only the pairs whose
+// new vertex is below the lower simplex's top vertex are kept in uppers (when next: a dimension k + 1
+// follows), and looked up only for the cofaces above f's diameter.
 // Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
 // flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
-void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, bool generate, bool keep_all,
+void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i64 levels, bool keep_all,
                     bool next, const Table& cleared, const Table& uppers, i64 maxdeg, Assembled& out) {
     Scratch x(k);
+    const std::size_t width = static_cast<std::size_t>(maxdeg + 1);
     std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
-        cur(static_cast<std::size_t>(k)), oi(static_cast<std::size_t>(maxdeg + 1)), oj(static_cast<std::size_t>(maxdeg + 1));
-    std::vector<double> od(static_cast<std::size_t>(maxdeg + 1));
+        cur(static_cast<std::size_t>(k)), oi(width), oj(width), oi2, oj2;
+    std::vector<double> od(width), od2;
+    if (levels == 2) {
+        oi2.resize(width);
+        oj2.resize(width);
+        od2.resize(width);
+    }
     auto meet = [&](double d, i64 s, bool upper) {  // s of diameter d and vertices sv
         if (keep_all) out.all.push_back({d, s});
         if (upper || cleared.contains(s)) return;
@@ -316,46 +323,65 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, b
             out.columns.push_back({d, s, taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
         }
     };
-    if (generate && keep_all)  // about the mean degree over k + 1 cofaces above each f (reserved, not touched)
-        out.all.reserve(static_cast<std::size_t>((hi - lo) * g.indptr[g.n] / (g.n * (k + 1)) + 16));
-    i64 rest = -1;  // f's index without its top vertex, for the last f: a sibling shares its lower vertices
-    from.visit(lo, hi, [&](const Simplex& f) {
-        if (!generate) {
-            vertices(g, f.idx, k, sv.data());
-            return meet(f.d, f.idx, uppers.contains(f.idx));
-        }
-        fv[0] = top_vertex(g, f.idx, k, g.n - 1);
-        const i64 below = wsub(f.idx, g.binom(fv[0], k));
-        if (below != rest) {
-            vertices(g, below, k - 2, fv.data() + 1, fv[0] - 1);
-            rest = below;
-        }
+    auto above = [&](double fd, i64 fidx) {  // the cofaces of f (vertices fv) above its vertices
         std::copy(fv.begin(), fv.end(), sv.begin() + 1);
-        const i64 c = cofaces(g, fv.data(), k - 1, f.idx, f.d, cur.data(), od.data(), oi.data(), oj.data(), false, true);
+        const i64 c = cofaces(g, fv.data(), k - 1, fidx, fd, cur.data(), od.data(), oi.data(), oj.data(), false, true);
         bool first = true;  // no coface of f's diameter met yet
         for (i64 t = 0; t < c; ++t) {
             sv[0] = oj[t];
-            if (od[t] == f.d) {
+            if (od[t] == fd) {
                 meet(od[t], oi[t], first);
                 first = false;
             } else {
                 meet(od[t], oi[t], uppers.contains(oi[t]));
             }
         }
+    };
+    // The vertices of the simplex idx of nv vertices into v; after a sibling (the same vertices below
+    // its top, index rest without its top vertex) only the top vertex is decoded.
+    auto decode = [&](i64 idx, i64 nv, i64* v, i64& rest) {
+        v[0] = top_vertex(g, idx, nv, g.n - 1);
+        const i64 below = wsub(idx, g.binom(v[0], nv));
+        if (below != rest) {
+            vertices(g, below, nv - 2, v + 1, v[0] - 1);
+            rest = below;
+        }
+    };
+    if (levels == 1 && keep_all)  // about the mean degree over k + 1 cofaces above each f (reserved, not touched)
+        out.all.reserve(static_cast<std::size_t>((hi - lo) * g.indptr[g.n] / (g.n * (k + 1)) + 16));
+    i64 rest = -1;
+    std::vector<i64> hv(static_cast<std::size_t>(k > 1 ? k - 1 : 1));
+    from.visit(lo, hi, [&](const Simplex& f) {
+        if (levels == 0) {
+            vertices(g, f.idx, k, sv.data());
+            meet(f.d, f.idx, uppers.contains(f.idx));
+        } else if (levels == 1) {
+            decode(f.idx, k, fv.data(), rest);
+            above(f.d, f.idx);
+        } else {  // f is a (k − 2)-simplex: its cofaces above it are the facets met
+            decode(f.idx, k - 1, hv.data(), rest);
+            const i64 c = cofaces(g, hv.data(), k - 2, f.idx, f.d, cur.data(), od2.data(), oi2.data(), oj2.data(), false,
+                                  true);
+            std::copy(hv.begin(), hv.end(), fv.begin() + 1);
+            for (i64 t = 0; t < c; ++t) {
+                fv[0] = oj2[t];
+                above(od2[t], oi2[t]);
+            }
+        }
     });
 }
 
 // assemble_block over all of `from`: on one thread when fewer than parallel_min k-simplices are to be
-// met (with generate, estimated as |from| times the mean degree over k + 1), else in 8 · threads
-// blocks shared by the threads; the blocks' shares are kept in block order, so nothing depends on
-// how the blocks were shared.
-std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool generate, bool keep_all, bool next,
+// met (estimated as |from| times the mean degree over k + 1 per level, over k for a second), else in
+// 8 · threads blocks shared by the threads; the blocks' shares are kept in block order, so nothing
+// depends on how the blocks were shared.
+std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, i64 levels, bool keep_all, bool next,
                                 const Table& cleared, const Table& uppers, i64 maxdeg, int threads,
                                 i64 parallel_min) {
     const i64 m = from.size();
-    const double met = generate ? static_cast<double>(m) * static_cast<double>(g.indptr[g.n]) /
-                                      static_cast<double>(g.n * (k + 1))
-                                : static_cast<double>(m);
+    const double degree = static_cast<double>(g.indptr[g.n]) / static_cast<double>(g.n);
+    double met = static_cast<double>(m);
+    for (i64 l = 0; l < levels; ++l) met *= degree / static_cast<double>(k + 1 - l);
     const i64 nblocks = (met < static_cast<double>(parallel_min) || threads <= 1) ? 1 : 8 * static_cast<i64>(threads);
     const i64 size = (m + nblocks - 1) / nblocks;
     std::vector<Assembled> out(static_cast<std::size_t>(nblocks));
@@ -365,7 +391,7 @@ std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, bool 
     auto work = [&](int t) {
         try {
             for (i64 b = taken++; b < nblocks; b = taken++)
-                assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), generate, keep_all,
+                assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), levels, keep_all,
                                next, cleared, uppers, maxdeg, out[static_cast<std::size_t>(b)]);
         } catch (...) {
             errors[static_cast<std::size_t>(t)] = std::current_exception();
@@ -829,13 +855,18 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         std::vector<i64>().swap(ei);
         Table cleared(0), uppers(0);
         for (i64 k = 1; k < max_dim; ++k) {
-            const bool next = k + 1 < max_dim;  // the k-simplices build dimension k + 1
+            // the k-simplices are kept to build dimension k + 1, unless that is the top dimension and at least
+            // 3: it is built from the (k − 1)-simplices kept in all, two levels up (the top dimension's facets
+            // are the longest list, and it is only walked once)
+            const bool next = k + 1 < max_dim;
+            const bool two = k >= 3 && !next;
+            const bool keep = next && !(k + 2 == max_dim && k >= 2);
             std::vector<Assembled> parts = k == 1
-                ? assemble(g, 1, from, false, false, next, cleared, uppers, maxdeg, threads, parallel_min)
-                : assemble(g, k, all, true, next, next, cleared, uppers, maxdeg, threads, parallel_min);
-            if (k >= 2) {
+                ? assemble(g, 1, from, 0, false, next, cleared, uppers, maxdeg, threads, parallel_min)
+                : assemble(g, k, all, two ? 2 : 1, keep, next, cleared, uppers, maxdeg, threads, parallel_min);
+            if (k >= 2 && (keep || !next)) {
                 all.parts.clear();
-                if (next)
+                if (keep)
                     for (Assembled& a : parts) all.parts.push_back(std::move(a.all));
             }
             i64 ncand = 0, napp = 0;
