@@ -44,10 +44,14 @@ The reduction is Ripser's (Bauer 2021), on the cohomology side with clearing:
 The columns of each dimension are only the candidates that survive clearing and the apparent
 pairs, and they are assembled in one pass over the cofaces of the (k − 1)-simplices (Ripser 1.2's
 ``assemble_columns_to_reduce``): whether a simplex is in a zero apparent pair is decided where it is
-met, and no table of those pairs is kept.  So memory holds the graph, the (k − 1)-simplices while
-dimension k is assembled (not in the top dimension), one column record per column, the pivot
-table, the reduction chains of the columns that needed work and, while a column is reduced, its
-enumerators.
+met.  A k-simplex τ = f ∪ {j} is met from the facet f that omits its top vertex j, which is τ's
+latest facet when the two have one diameter; so the first such coface of f is the upper simplex of
+the pair (f, τ), and only the pairs whose added vertex is not the top one are kept in a table to be
+cleared from the next dimension.  The top dimension's facets, the longest list, are not stored: they
+are met again as cofaces of the (k − 2)-simplices.  So memory holds the graph (with a dense distance
+matrix for up to 2048 points, or a hash of the edges), the (k − 1)-simplices while dimension k < top
+is assembled, one column record per column, the pivot table, the reduction chains of the columns
+that needed work and, while a column is reduced, its enumerators.
 
 Everything after the graph is compiled C++ (``src/implicit_rips.cpp``, with the graph and the
 combinatorial number system in ``src/implicit_rips_graph.hpp``).
