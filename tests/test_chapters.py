@@ -176,3 +176,39 @@ def test_the_stored_numbers_are_the_texts():
     for cid in ("preface-mean-curvature-chapter", "introduction-chapter-1-is-2", "introduction-chapter-2-is-3",
                 "summary-chapter-1-is-2", "summary-chapter-2-is-3"):
         assert rows[cid]["status"] == "erratum", rows[cid]
+
+
+def test_the_numbering_record_reads_every_reference_and_the_headings():
+    from thesis_lib.lab.chapters import (
+        REFERENCES,
+        chapters,
+        numbering_disagreements,
+        numbering_record,
+        read_thesis,
+        reference_table,
+        resolve,
+        slips_text,
+    )
+
+    text = read_thesis()
+    record, refs = numbering_record(text), resolve(text)
+    assert len(record) == 2 * len(REFERENCES) + 3
+    for key, r in refs.items():
+        assert (record[f"{key}_printed"], record[f"{key}_chapter"]) == (r.printed, r.chapter.number)
+    assert record["numbering_disagreements"] == len(numbering_disagreements(text))
+    heads = chapters(text)
+    assert "Morse" in heads[record["morse_approach_position"]].title  # position among the chapters 2..4
+    slipped = [r for r in refs.values() if r.printed != r.chapter.number]
+    assert slipped and slips_text(refs.values()).count("; ") == len(slipped) - 1
+    assert slips_text([r for r in refs.values() if r.printed == r.chapter.number]) == ""
+    table = reference_table(refs.values(), words=3).splitlines()
+    assert len(table) == 2 + len(refs) and all(line.count(" | ") == 4 for line in table[2:])
+
+
+def test_chapter_tally_counts_statuses_in_their_order():
+    from thesis_lib.lab.report import STATUSES, chapter_tally
+
+    counts = {"by_chapter": {"3": {"differs": 2, "reproduced": 5, "new": 0}}}
+    assert chapter_tally(counts, "3") == (7, "5 reproduced, 2 differs")
+    assert STATUSES.index("reproduced") < STATUSES.index("differs")
+    assert chapter_tally(counts, "2") == (0, "")

@@ -27,6 +27,7 @@ CONFORMING = (
     "book/ch4-apparent-pairs.ipynb",
     "book/ch5-crust-nd.ipynb",
     "book/ch5-radius-curvature.ipynb",
+    "book/ch5-summary.ipynb",
     "book/intro.ipynb",
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",

@@ -14,6 +14,7 @@ sentences' words and the sections' titles.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,7 +22,8 @@ from .paths import shared_dir
 
 __all__ = ["Chapter", "Reference", "Resolved", "REFERENCES", "FRONT_AND_SUMMARY", "THESIS_TEXT", "read_thesis",
            "chapters", "chapter_at", "part_lines", "numbering_disagreements",
-           "chapter_references", "section_chapter", "section_at", "resolve"]
+           "chapter_references", "section_chapter", "section_at", "resolve", "numbering_record", "reference_table",
+           "slips_text"]
 
 THESIS_TEXT = "botnan-2011-three-approaches.txt"
 
@@ -356,3 +358,108 @@ def resolve(text: str) -> dict[str, Resolved]:
         out[key] = Resolved(key, part, hits[0].sentence, hits[0].number, heading, chap,
                             section_at(text, hits[0].line) or part)
     return out
+
+
+def numbering_record(text: str) -> dict[str, int]:
+    """What the book records about the thesis's chapter numbers: each reference's printed number and
+    its subject's chapter, the headings that disagree, and where the Morse chapter stands.
+
+    Thesis: the Preface, the Introduction and the Summary (their "Chapter N"), and the chapter headings.
+
+    Parameters
+    ----------
+    text : str
+        The thesis text.
+
+    Returns
+    -------
+    dict of str to int
+        ``<key>_printed`` and ``<key>_chapter`` for each reference of :data:`REFERENCES`,
+        ``numbering_disagreements`` (:func:`numbering_disagreements`), ``approach_chapters`` (the
+        chapters between the Introduction and the Summary) and ``morse_approach_position`` (the
+        Morse chapter's place among them, from 1).
+
+    Raises
+    ------
+    ValueError
+        As :func:`resolve`, or when no chapter between the Introduction and the Summary is on Morse theory.
+
+    Examples
+    --------
+    >>> record = numbering_record(read_thesis())
+    >>> record["approach_chapters"], record["morse_approach_position"], record["summary_curvature_printed"]
+    (3, 3, 2)
+    """
+    out: dict[str, int] = {}
+    for key, r in resolve(text).items():
+        out[f"{key}_printed"] = r.printed
+        out[f"{key}_chapter"] = r.chapter.number
+    approaches = chapters(text)[1:-1]  # the chapters between the Introduction and the Summary
+    morse = [i for i, c in enumerate(approaches) if "Morse" in c.title]
+    if not morse:
+        raise ValueError("no chapter between the Introduction and the Summary is on Morse theory")
+    out["numbering_disagreements"] = len(numbering_disagreements(text))
+    out["approach_chapters"] = len(approaches)
+    out["morse_approach_position"] = 1 + morse[0]
+    return out
+
+
+def reference_table(refs: Iterable[Resolved], *, words: int = 12) -> str:
+    """The references as a Markdown table: part, the sentence's first words, the number printed, the
+    section of the subject and the chapter heading it stands under.
+
+    Thesis: the Preface, the Introduction and the Summary (their "Chapter N").
+
+    Parameters
+    ----------
+    refs : iterable of Resolved
+        The references (:func:`resolve`'s values).
+    words : int, default 12
+        Words of each sentence shown (the rest as "…"); Markdown bold marks are dropped.
+
+    Returns
+    -------
+    str
+        The table (no final newline).
+
+    Examples
+    --------
+    >>> refs = resolve(read_thesis())
+    >>> print(reference_table([refs["summary_curvature"]], words=4).splitlines()[-1])
+    | Summary | In Chapter 2 we … | 2 | §3.3 Discrete Versions | 3 Discrete Differential Geometry |
+    """
+    def shown(sentence: str) -> str:
+        w = sentence.replace("**", "").split()
+        return " ".join(w[:words]) + (" …" if len(w) > words else "")
+
+    lines = ["| part | sentence | printed | subject in | chapter heading |", "|---|---|---|---|---|"]
+    lines += [f"| {r.part} | {shown(r.sentence)} | {r.printed} | §{r.section} | {r.chapter.number} {r.chapter.title} |"
+              for r in refs]
+    return "\n".join(lines)
+
+
+def slips_text(refs: Iterable[Resolved]) -> str:
+    """The references whose printed number is not their subject's chapter, each as a phrase: where it
+    stands, what it says, and where its subject is.
+
+    Thesis: the body's references back to its chapters (§3, §4: "Chapter 1" for Chapter 2).
+
+    Parameters
+    ----------
+    refs : iterable of Resolved
+        The references (:func:`resolve`'s values).
+
+    Returns
+    -------
+    str
+        The phrases joined by "; " (empty when every number is right).
+
+    Examples
+    --------
+    >>> refs = resolve(read_thesis())
+    >>> slips_text([refs["body_voronoi"]]).startswith("§3.")
+    True
+    """
+    return "; ".join(f"§{r.where}: “{r.sentence.split('Chapter')[0].strip()} Chapter {r.printed}”, "
+                     f"where §{r.section.split()[0]} is in Chapter {r.chapter.number}"
+                     for r in refs if r.printed != r.chapter.number)

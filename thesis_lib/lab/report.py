@@ -37,7 +37,7 @@ from .registry import read_tables
 from .results import ResultsError, check_name, load
 from .tables import header, markdown_table
 
-__all__ = ["BADGES", "COULD_FAIL", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
+__all__ = ["BADGES", "COULD_FAIL", "chapter_tally", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
            "ClaimError", "STATUSES", "compared_as", "errata_markdown", "headline", "load_claims", "evaluate",
            "math_text", "number_text", "report", "summary", "summary_markdown", "markdown", "table_cell", "to_json",
            "place_line", "why"]
@@ -605,6 +605,35 @@ def summary(rows: list[dict[str, object]] | None = None) -> dict[str, object]:
         "by_provenance": dict(Counter(r["provenance"] for r in rows)),
         "beyond": len(rows) - len(thesis),
     }
+
+
+def chapter_tally(counts: dict[str, object], chapter: str) -> tuple[int, str]:
+    """How many of a chapter's claims the report holds, and their statuses in words.
+
+    Thesis: the checkable statements of the chapter (the reproduction report).
+
+    Parameters
+    ----------
+    counts : dict
+        :func:`summary` of the report.
+    chapter : str
+        The chapter (``"2"``, ``"3"``, ``"4"``, ``"5"`` or ``"front"``).
+
+    Returns
+    -------
+    (int, str)
+        The number of claims, and ``"n status, m status, ..."`` in the order of :data:`STATUSES`
+        (statuses with no claim left out).
+
+    Examples
+    --------
+    >>> chapter_tally({"by_chapter": {"2": {"reproduced": 3, "differs": 1}}}, "2")
+    (4, '3 reproduced, 1 differs')
+    >>> chapter_tally({"by_chapter": {}}, "4")
+    (0, '')
+    """
+    n = counts["by_chapter"].get(chapter, {})
+    return sum(n.values()), ", ".join(f"{n[s]} {s}" for s in STATUSES if n.get(s))
 
 
 def _count(n: int, one: str, many: str) -> str:
