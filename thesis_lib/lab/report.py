@@ -37,10 +37,10 @@ from .registry import read_tables
 from .results import ResultsError, check_name, load
 from .tables import header, markdown_table
 
-__all__ = ["BADGES", "COULD_FAIL", "chapter_tally", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
+__all__ = ["BADGES", "COULD_FAIL", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
            "ClaimError", "STATUSES", "compared_as", "errata_markdown", "headline", "load_claims", "evaluate",
            "math_text", "number_text", "report", "summary", "summary_markdown", "markdown", "table_cell", "to_json",
-           "place_line", "why"]
+           "place_line", "why", "chapter_tally"]
 
 #: every status a claim can have, in the report's order (computed, never typed in)
 STATUSES = ("reproduced", "erratum", "differs", "identity", "consistent", "not-comparable", "figure-only",
