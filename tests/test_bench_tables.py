@@ -47,3 +47,18 @@ def test_markdown_rows_by_values_and_digits(tmp_path, monkeypatch):
     assert bench.markdown("x", columns=["case", "ours_s"], where={"topic": "t1", "case": "a"},
                           digits=2).splitlines()[2:] == ["| a | 0.12 |"]
     assert "No stored rows" in bench.markdown("x", where={"topic": "t3"})
+
+
+def test_empty_rows_are_skipped_and_targets_may_add_keys(tmp_path, monkeypatch):
+    monkeypatch.setenv("THESIS_LAB_PROJECT", str(tmp_path))
+    (tmp_path / "benchmarks" / "results").mkdir(parents=True)
+    rows = [{"case": "a", "ours_mb": 10.0, "ours_baseline_mb": 30.0, "reference": "GUDHI", "kind": "alpha"},
+            {"case": "b", "ours_mb": None, "reference": "GUDHI", "kind": "rips"}]
+    (tmp_path / "benchmarks" / "results" / "x.json").write_text(json.dumps(rows))
+    assert len(bench.markdown("x", columns=["case", "ours_mb"]).splitlines()) == 4
+    assert bench.markdown("x", columns=["case", "ours_mb"], skip_empty=True).splitlines()[2:] == ["| a | 10 |"]
+    spec = dict(label="memory", topic="x", cases=["a"], value=["ours_mb", "ours_baseline_mb"], bound=50, unit=" MB")
+    assert "| 40 MB (a) | 50 MB | yes |" in bench.targets([spec])
+    assert "| no |" in bench.targets([{**spec, "bound": 39}])
+    assert bench.references("x", key="kind") == "- alpha: GUDHI\n- rips: GUDHI"
+    assert bench.references("x") == "Reference: GUDHI."

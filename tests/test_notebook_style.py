@@ -29,6 +29,7 @@ CONFORMING = (
     "book/ch5-radius-curvature.ipynb",
     "book/ch5-summary.ipynb",
     "book/intro.ipynb",
+    "book/performance.ipynb",
     "book/report.ipynb",
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",

@@ -25,7 +25,7 @@ if TYPE_CHECKING:  # matplotlib is imported only when a figure is drawn
     from matplotlib.figure import Figure
 
 __all__ = ["topics", "load", "meta", "markdown", "header", "ratios", "fit_exponent", "ratio_figure",
-           "scaling_figure", "provenance", "targets"]
+           "scaling_figure", "provenance", "targets", "show", "references"]
 
 #: the peers' display names (row keys ratio_<key>, <key>_s, <key>_mb)
 PEERS = {"ripser": "ripser.py", "gph": "giotto-ph", "gudhi": "GUDHI", "explicit": "explicit engine", "ref": "reference",
@@ -190,7 +190,7 @@ def provenance(topic: str) -> str:
 
 def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] | None = None,
              where: Callable[[dict], bool] | Mapping[str, object] | None = None,
-             headers: bool | Mapping[str, str] = False, digits: int = 3) -> str:
+             headers: bool | Mapping[str, str] = False, digits: int = 3, skip_empty: bool = False) -> str:
     """One benchmark as a Markdown table.
 
     Parameters
@@ -209,6 +209,8 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
         headers for the keys it names and :func:`header` for the others.
     digits : int, default 3
         Significant digits of float cells.
+    skip_empty : bool, default False
+        Leave out the rows that hold none of the columns after the first (the case).
 
     Returns
     -------
@@ -229,6 +231,8 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
         return where is None or where(row)
 
     rows = [r for r in load(topic) if (cases is None or r.get("case") in cases) and kept(r)]
+    if skip_empty and columns is not None:
+        rows = [r for r in rows if any(r.get(c) is not None for c in columns[1:])]
     if not rows:
         return f"*No stored rows of `{topic}` for the cases {', '.join(cases or [])}: run `make bench`.*\n"
     if columns is None:
@@ -246,6 +250,67 @@ def markdown(topic: str, *, columns: list[str] | None = None, cases: list[str] |
     return markdown_table(names, ([r.get(c) for c in columns] for r in rows), digits=digits)
 
 
+def show(topic: str, *tables: list[str], headers: bool | Mapping[str, str] | None = None) -> None:
+    """Display one benchmark in a notebook: its ratio bars, then one table per list of columns, each
+    with only the rows that hold one of its values.
+
+    Thesis: none (the performance page).
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark.
+    *tables : list of str
+        The columns of each table (the case first).
+    headers : bool or mapping, optional
+        As :func:`markdown`; default True (readable headers with units).
+
+    Examples
+    --------
+    >>> show("no-such-benchmark", ["case"])  # in a notebook: the rendered tables
+    <IPython.core.display.Markdown object>
+    """
+    from IPython.display import Markdown, display
+
+    if topic not in topics():
+        return display(Markdown(f"*No stored results for `{topic}` yet: run `make bench`.*"))
+    if meta(topic) and ratios(topic):  # figures only from runs of the current harness
+        plt = require("matplotlib.pyplot", extra="plot", purpose="drawing the benchmark's ratios")
+        fig = ratio_figure(topic)
+        display(fig)
+        plt.close(fig)
+    for columns in tables:
+        display(Markdown(markdown(topic, columns=columns, headers=True if headers is None else headers,
+                                  skip_empty=True)))
+    return None
+
+
+def references(topic: str, *, key: str | None = None) -> str:
+    """What the cases of a benchmark were compared with, as Markdown: one line per value of ``key``.
+
+    Thesis: none (the performance page).
+
+    Parameters
+    ----------
+    topic : str
+        The stored benchmark.
+    key : str, optional
+        A row key naming the kind of case (e.g. ``"kind"``); without it, one sentence.
+
+    Returns
+    -------
+    str
+        ``- <kind>: <reference>`` lines, or ``Reference: <reference>.``, each reference once.
+
+    Examples
+    --------
+    >>> references("complexes", key="kind").startswith("- ")
+    True
+    """
+    pairs = dict.fromkeys((r.get(key) if key else None, r.get("reference")) for r in load(topic))
+    return "\n".join(f"- {k}: {ref}" if k else f"Reference: {ref}." for k, ref in pairs)
+
+
 def targets(specs: Sequence[Mapping[str, Any]]) -> str:
     """The performance targets beside the stored figures, as a Markdown table.
 
@@ -254,7 +319,8 @@ def targets(specs: Sequence[Mapping[str, Any]]) -> str:
     specs : sequence of mapping
         One per target: ``label`` (str), ``topic`` (str), ``cases`` (list of case names; a missing
         one is reported as not measured), ``value`` (a row key, or a callable of the row giving the
-        number), ``bound`` (float) and optionally ``unit`` (str, shown after the numbers).  A
+        number, or a list of row keys whose values are added), ``bound`` (float) and optionally
+        ``unit`` (str, shown after the numbers).  A
         target is met when the largest value over its cases is at most ``bound``.
 
     Returns
@@ -274,7 +340,8 @@ def targets(specs: Sequence[Mapping[str, Any]]) -> str:
         if missing:
             raise ValueError(f"target spec {spec!r} lacks {missing}")
         rows = {r.get("case"): r for r in load(spec["topic"])}
-        value = spec["value"] if callable(spec["value"]) else (lambda row, key=spec["value"]: row[key])
+        keys = spec["value"] if isinstance(spec["value"], (list, tuple)) else [spec["value"]]
+        value = spec["value"] if callable(spec["value"]) else (lambda row, keys=keys: sum(row[k] for k in keys))
         unit = spec.get("unit", "")
         found = [(float(value(rows[c])), c) for c in spec["cases"] if c in rows]
         if len(found) < len(spec["cases"]):
