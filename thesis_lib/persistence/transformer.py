@@ -7,12 +7,16 @@ clouds).  It has ``get_params``/``set_params`` like any scikit-learn estimator, 
 ``sklearn.base.clone``, ``Pipeline`` and grid searches accept it, but scikit-learn is not needed to
 use it.  Diagrams are in the ripser/persim format (one ``(m, 2)`` array per dimension) with this
 library's values, ε, half the diameter, or with ``scale="diameter"`` ripser's and giotto-ph's 2ε;
-``homology_dimensions`` chooses the dimensions as giotto-ph's ``VietorisRipsPersistence`` does.
+``homology_dimensions`` chooses the dimensions as giotto-ph's ``VietorisRipsPersistence`` does,
+``output="padded"`` gives giotto-tda's padded array of triples, and ``n_jobs`` computes the clouds in
+parallel threads (the engine releases the interpreter while it works).
 """
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
+from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
 import numpy as np
@@ -32,7 +36,10 @@ from .._validate import (
 )
 from .implicit import rips_barcode
 
-__all__ = ["RipsDiagrams"]
+__all__ = ["RipsDiagrams", "OUTPUTS"]
+
+#: the layouts of :meth:`RipsDiagrams.transform`: a list of arrays per cloud, or giotto-tda's padded array
+OUTPUTS = ("list", "padded")
 
 
 class RipsDiagrams:
@@ -61,6 +68,17 @@ class RipsDiagrams:
         Points with ``death − birth <= min_persistence`` (in the values returned, after ``scale``)
         are left out; 0: only the zero-length ones.  1e-12 drops the bars of length ~1e-16 that
         tied distances give (ripser.py, on float32 distances, does not report them).
+    n_jobs : int, optional
+        Clouds computed at once, in threads; None or 1: one after the other (each with the engine's
+        own threads), -1: one per core.  With more than one job each cloud's engine runs on one
+        thread.  The diagrams do not depend on it.
+    output : {"list", "padded"}, default "list"
+        ``"list"``: per cloud, one (m, 2) array per homology dimension (ripser's and persim's
+        format).  ``"padded"``: one array of shape (n_clouds, n_points, 3) of triples (birth, death,
+        dimension), giotto-tda's format: per dimension q, every cloud padded to the most points any
+        cloud has in q (at least one) with triples (b_q, b_q, q) on the diagonal, b_q the least
+        birth in q over all clouds (0 when there is none).  Unlike giotto-tda, essential classes
+        keep their death ∞ and the essential H₀ class is kept.
 
     Examples
     --------
@@ -72,13 +90,15 @@ class RipsDiagrams:
 
     def __init__(self, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
                  homology_dimensions: Iterable[int] | None = None, scale: str = "epsilon",
-                 min_persistence: float = 0.0) -> None:
+                 min_persistence: float = 0.0, n_jobs: int | None = None, output: str = "list") -> None:
         self.max_radius = max_radius
         self.max_dim = max_dim
         self.coefficients = coefficients
         self.homology_dimensions = homology_dimensions
         self.scale = scale
         self.min_persistence = min_persistence
+        self.n_jobs = n_jobs
+        self.output = output
 
     def get_params(self, deep: bool = True) -> dict[str, Any]:
         """The constructor's parameters, as scikit-learn's ``BaseEstimator.get_params``.
@@ -92,19 +112,19 @@ class RipsDiagrams:
         -------
         dict
             ``{"max_radius": ..., "max_dim": ..., "coefficients": ..., "homology_dimensions": ...,
-            "scale": ..., "min_persistence": ...}``.
+            "scale": ..., "min_persistence": ..., "n_jobs": ..., "output": ...}``.
 
         Examples
         --------
         >>> params = RipsDiagrams(max_dim=2).get_params()
         >>> sorted(params)
-        ['coefficients', 'homology_dimensions', 'max_dim', 'max_radius', 'min_persistence', 'scale']
+        ['coefficients', 'homology_dimensions', 'max_dim', 'max_radius', 'min_persistence', 'n_jobs', 'output', 'scale']
         >>> params["max_dim"], params["coefficients"], params["scale"]
         (2, 2, 'epsilon')
         """
         return {"max_radius": self.max_radius, "max_dim": self.max_dim, "coefficients": self.coefficients,
                 "homology_dimensions": self.homology_dimensions, "scale": self.scale,
-                "min_persistence": self.min_persistence}
+                "min_persistence": self.min_persistence, "n_jobs": self.n_jobs, "output": self.output}
 
     def set_params(self, **params: Any) -> RipsDiagrams:
         """Set constructor parameters by name, as scikit-learn's ``BaseEstimator.set_params``.
@@ -113,7 +133,7 @@ class RipsDiagrams:
         ----------
         **params : Any
             New values of ``max_radius``, ``max_dim``, ``coefficients``, ``homology_dimensions``,
-            ``scale`` or ``min_persistence``.
+            ``scale``, ``min_persistence``, ``n_jobs`` or ``output``.
 
         Returns
         -------
@@ -152,8 +172,8 @@ class RipsDiagrams:
         ------
         ValueError
             On an invalid ``max_radius``, ``max_dim`` (below 1), ``coefficients`` (not a prime),
-            ``homology_dimensions`` (empty, negative, or disagreeing with ``max_dim``), ``scale`` or
-            ``min_persistence``.
+            ``homology_dimensions`` (empty, negative, or disagreeing with ``max_dim``), ``scale``,
+            ``min_persistence``, ``n_jobs`` (not -1 or a positive integer) or ``output``.
 
         Examples
         --------
@@ -172,6 +192,9 @@ class RipsDiagrams:
         field = parse_field(self.coefficients, field=True)
         check_scale(self.scale)
         check_min_persistence(self.min_persistence)
+        _jobs(self.n_jobs)
+        if self.output not in OUTPUTS:
+            raise ValueError(f"output must be one of {', '.join(map(repr, OUTPUTS))}, got {self.output!r}")
         if self.homology_dimensions is None:
             if max_dim < 1:
                 raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
@@ -182,7 +205,7 @@ class RipsDiagrams:
                              f"{dims[-1]} needs max_dim={dims[-1] + 1} (give homology_dimensions alone)")
         return eps, dims[-1] + 1, field, dims
 
-    def transform(self, X: Iterable[npt.ArrayLike]) -> list[list[np.ndarray]]:
+    def transform(self, X: Iterable[npt.ArrayLike]) -> list[list[np.ndarray]] | np.ndarray:
         """The persistence diagrams of each point cloud.
 
         Parameters
@@ -193,10 +216,11 @@ class RipsDiagrams:
 
         Returns
         -------
-        list of list of ndarray
+        list of list of ndarray, or ndarray
             For each cloud, one array of shape (m, 2) per homology dimension (0 .. max_dim − 1, or
             the sorted ``homology_dimensions``): the (birth, death) pairs (``inf`` for essential
-            classes) in ``scale``'s values, as ``Barcode.to_diagrams``.
+            classes) in ``scale``'s values, as ``Barcode.to_diagrams``; with ``output="padded"``
+            the array of triples of shape (n_clouds, n_points, 3) described above.
 
         Warns
         -----
@@ -226,17 +250,28 @@ class RipsDiagrams:
             raise InvalidTypeError(f"X must be a list of point clouds, got {type(X).__name__}")
         if isinstance(X, np.ndarray) and X.ndim == 2:
             raise ValueError("X must be a list of point clouds; got one 2-D array (wrap it in a list)")
-        out = []
+        clouds = []
         for i, cloud in enumerate(X):
             try:
-                barcode = rips_barcode(parse_points(cloud, warn_square=True), eps, max_dim, field)
+                clouds.append(parse_points(cloud, warn_square=True))
             except ValueError as err:
                 raise ValueError(f"point cloud {i}: {err}") from None
-            diagrams = barcode.to_diagrams(dims=range(max_dim), scale=self.scale, min_persistence=self.min_persistence)
-            out.append([diagrams[k] for k in dims])
-        return out
+        jobs = _jobs(self.n_jobs)
+        threads = 1 if jobs > 1 else 0  # one engine thread per job; alone, the engine's own default
 
-    def fit_transform(self, X: Iterable[npt.ArrayLike], y: Any = None) -> list[list[np.ndarray]]:
+        def diagrams(points) -> list[np.ndarray]:
+            barcode = rips_barcode(points, eps, max_dim, field, n_threads=threads)
+            out = barcode.to_diagrams(dims=range(max_dim), scale=self.scale, min_persistence=self.min_persistence)
+            return [out[k] for k in dims]
+
+        if jobs > 1 and len(clouds) > 1:
+            with ThreadPoolExecutor(max_workers=min(jobs, len(clouds))) as pool:
+                result = list(pool.map(diagrams, clouds))
+        else:
+            result = [diagrams(points) for points in clouds]
+        return _padded(result, dims) if self.output == "padded" else result
+
+    def fit_transform(self, X: Iterable[npt.ArrayLike], y: Any = None) -> list[list[np.ndarray]] | np.ndarray:
         """:meth:`fit`, then :meth:`transform`.
 
         Parameters
@@ -273,3 +308,27 @@ def _homology_dimensions(dims) -> tuple[int, ...]:
     if not out:
         raise ValueError("homology_dimensions is empty")
     return out
+
+
+def _jobs(n_jobs: object) -> int:
+    """The number of threads ``n_jobs`` asks for (None: 1, -1: one per core), or the ValueError."""
+    if n_jobs is None:
+        return 1
+    if isinstance(n_jobs, (int, np.integer)) and not isinstance(n_jobs, bool) and int(n_jobs) == -1:
+        return os.cpu_count() or 1
+    return check_int(n_jobs, "n_jobs (-1 for one per core)", minimum=1)
+
+
+def _padded(result: list[list[np.ndarray]], dims: tuple[int, ...]) -> np.ndarray:
+    """giotto-tda's layout: per dimension, every cloud padded to the most points with (b, b, q) triples."""
+    blocks = []
+    for j, q in enumerate(dims):
+        arrays = [d[j] for d in result]
+        rows = max(1, max((len(a) for a in arrays), default=0))
+        births = [a[:, 0].min() for a in arrays if len(a)]
+        pad = float(min(births)) if births else 0.0
+        block = np.full((len(arrays), rows, 3), [pad, pad, q], dtype=np.float64)
+        for i, a in enumerate(arrays):
+            block[i, : len(a), :2] = a
+        blocks.append(block)
+    return np.concatenate(blocks, axis=1) if blocks else np.zeros((len(result), 0, 3))
