@@ -64,7 +64,7 @@ def test_sklearn_clone_pipeline_and_parameter_grid():
         expected = [len(RipsDiagrams(max_radius=params["diagrams__max_radius"]).transform([c])[0][1]) for c in data]
         assert pipe.fit_transform(data)[:, 0].tolist() == expected
     assert repr(est) == ("RipsDiagrams(max_radius=0.3, max_dim=2, coefficients=3, homology_dimensions=None, "
-                         "scale='epsilon', min_persistence=0.0, n_jobs=None, output='list')")
+                         "scale='epsilon', min_persistence=0.0, n_jobs=None, output='list', metric='euclidean')")
 
 
 @pytest.mark.parametrize("params, match", [

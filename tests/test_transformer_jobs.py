@@ -56,3 +56,22 @@ def test_scikit_learn_clones_the_new_parameters():
     base = pytest.importorskip("sklearn.base")
     copy = base.clone(RipsDiagrams(n_jobs=2, output="padded"))
     assert copy.get_params()["n_jobs"] == 2 and copy.get_params()["output"] == "padded"
+
+
+def test_distance_matrices_give_the_diagrams_of_their_points():
+    import scipy.sparse
+    from scipy.spatial.distance import cdist
+
+    clouds = _clouds(3)
+    expected = RipsDiagrams(max_dim=2).fit_transform(clouds)
+    dense = RipsDiagrams(max_dim=2, metric="precomputed").fit_transform([cdist(c, c) for c in clouds])
+    assert all(np.allclose(a, b, rtol=1e-12, atol=0) for e, d in zip(expected, dense) for a, b in zip(e, d))
+    D = cdist(clouds[0], clouds[0])
+    sparse = scipy.sparse.coo_matrix(np.where(D <= 1.0, D, 0.0))
+    thresholded = RipsDiagrams(max_dim=2, max_radius=0.5, metric="precomputed").fit_transform([D])
+    from_sparse = RipsDiagrams(max_dim=2, max_radius=0.5, metric="precomputed").fit_transform([sparse])
+    assert all(np.array_equal(a, b) for a, b in zip(thresholded[0], from_sparse[0]))
+    with pytest.raises(ValueError, match="distance matrix 0"):
+        RipsDiagrams(metric="precomputed").fit_transform([np.ones((3, 2))])
+    with pytest.raises(ValueError, match="metric must be one of 'euclidean', 'precomputed'"):
+        RipsDiagrams(metric="cosine").fit()

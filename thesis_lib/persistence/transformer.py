@@ -33,13 +33,16 @@ from .._validate import (
     check_scale,
     parse_field,
     parse_points,
+    parse_rips_input,
 )
 from .implicit import rips_barcode
 
-__all__ = ["RipsDiagrams", "OUTPUTS"]
+__all__ = ["RipsDiagrams", "OUTPUTS", "METRICS"]
 
 #: the layouts of :meth:`RipsDiagrams.transform`: a list of arrays per cloud, or giotto-tda's padded array
 OUTPUTS = ("list", "padded")
+#: what each item of ``X`` is: a point cloud (Euclidean distances) or a distance matrix, as giotto-ph's ``metric``
+METRICS = ("euclidean", "precomputed")
 
 
 class RipsDiagrams:
@@ -79,6 +82,10 @@ class RipsDiagrams:
         cloud has in q (at least one) with triples (b_q, b_q, q) on the diagonal, b_q the least
         birth in q over all clouds (0 when there is none).  Unlike giotto-tda, essential classes
         keep their death ∞ and the essential H₀ class is kept.
+    metric : {"euclidean", "precomputed"}, default "euclidean"
+        Each item of ``X`` is a point cloud, or (``"precomputed"``) a distance matrix: dense and
+        symmetric, or scipy.sparse whose stored entries are the only edges (as
+        :func:`~thesis_lib.persistence.rips_persistence`'s ``distance_matrix``).
 
     Examples
     --------
@@ -90,7 +97,8 @@ class RipsDiagrams:
 
     def __init__(self, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
                  homology_dimensions: Iterable[int] | None = None, scale: str = "epsilon",
-                 min_persistence: float = 0.0, n_jobs: int | None = None, output: str = "list") -> None:
+                 min_persistence: float = 0.0, n_jobs: int | None = None, output: str = "list",
+                 metric: str = "euclidean") -> None:
         self.max_radius = max_radius
         self.max_dim = max_dim
         self.coefficients = coefficients
@@ -99,6 +107,7 @@ class RipsDiagrams:
         self.min_persistence = min_persistence
         self.n_jobs = n_jobs
         self.output = output
+        self.metric = metric
 
     def get_params(self, deep: bool = True) -> dict[str, Any]:
         """The constructor's parameters, as scikit-learn's ``BaseEstimator.get_params``.
@@ -112,19 +121,20 @@ class RipsDiagrams:
         -------
         dict
             ``{"max_radius": ..., "max_dim": ..., "coefficients": ..., "homology_dimensions": ...,
-            "scale": ..., "min_persistence": ..., "n_jobs": ..., "output": ...}``.
+            "scale": ..., "min_persistence": ..., "n_jobs": ..., "output": ..., "metric": ...}``.
 
         Examples
         --------
         >>> params = RipsDiagrams(max_dim=2).get_params()
-        >>> sorted(params)
-        ['coefficients', 'homology_dimensions', 'max_dim', 'max_radius', 'min_persistence', 'n_jobs', 'output', 'scale']
+        >>> len(params), sorted(params)[:4]
+        (9, ['coefficients', 'homology_dimensions', 'max_dim', 'max_radius'])
         >>> params["max_dim"], params["coefficients"], params["scale"]
         (2, 2, 'epsilon')
         """
         return {"max_radius": self.max_radius, "max_dim": self.max_dim, "coefficients": self.coefficients,
                 "homology_dimensions": self.homology_dimensions, "scale": self.scale,
-                "min_persistence": self.min_persistence, "n_jobs": self.n_jobs, "output": self.output}
+                "min_persistence": self.min_persistence, "n_jobs": self.n_jobs, "output": self.output,
+                "metric": self.metric}
 
     def set_params(self, **params: Any) -> RipsDiagrams:
         """Set constructor parameters by name, as scikit-learn's ``BaseEstimator.set_params``.
@@ -133,7 +143,7 @@ class RipsDiagrams:
         ----------
         **params : Any
             New values of ``max_radius``, ``max_dim``, ``coefficients``, ``homology_dimensions``,
-            ``scale``, ``min_persistence``, ``n_jobs`` or ``output``.
+            ``scale``, ``min_persistence``, ``n_jobs``, ``output`` or ``metric``.
 
         Returns
         -------
@@ -173,7 +183,7 @@ class RipsDiagrams:
         ValueError
             On an invalid ``max_radius``, ``max_dim`` (below 1), ``coefficients`` (not a prime),
             ``homology_dimensions`` (empty, negative, or disagreeing with ``max_dim``), ``scale``,
-            ``min_persistence``, ``n_jobs`` (not -1 or a positive integer) or ``output``.
+            ``min_persistence``, ``n_jobs`` (not -1 or a positive integer), ``output`` or ``metric``.
 
         Examples
         --------
@@ -195,6 +205,8 @@ class RipsDiagrams:
         _jobs(self.n_jobs)
         if self.output not in OUTPUTS:
             raise ValueError(f"output must be one of {', '.join(map(repr, OUTPUTS))}, got {self.output!r}")
+        if self.metric not in METRICS:
+            raise ValueError(f"metric must be one of {', '.join(map(repr, METRICS))}, got {self.metric!r}")
         if self.homology_dimensions is None:
             if max_dim < 1:
                 raise ValueError("max_dim must be >= 1: the top dimension of the complex has no complete homology")
@@ -211,8 +223,9 @@ class RipsDiagrams:
         Parameters
         ----------
         X : iterable of array_like, each of shape (n_i, d)
-            Point clouds (finite).  Duplicate points are allowed: each row is a vertex, joined to its
-            copies at 0 (their H0 bars have length zero and are left out).
+            Point clouds (finite), or with ``metric="precomputed"`` distance matrices.  Duplicate
+            points are allowed: each row is a vertex, joined to its copies at 0 (their H0 bars have
+            length zero and are left out).
 
         Returns
         -------
@@ -253,9 +266,11 @@ class RipsDiagrams:
         clouds = []
         for i, cloud in enumerate(X):
             try:
-                clouds.append(parse_points(cloud, warn_square=True))
+                clouds.append(parse_rips_input(None, cloud, sparse=True) if self.metric == "precomputed"
+                              else parse_points(cloud, warn_square=True))
             except ValueError as err:
-                raise ValueError(f"point cloud {i}: {err}") from None
+                raise ValueError(f"{'distance matrix' if self.metric == 'precomputed' else 'point cloud'} {i}: {err}") \
+                    from None
         jobs = _jobs(self.n_jobs)
         threads = 1 if jobs > 1 else 0  # one engine thread per job; alone, the engine's own default
 
