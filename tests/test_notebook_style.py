@@ -37,6 +37,7 @@ CONFORMING = (
     "experiments/range-patches.ipynb",
     "experiments/radius-curvature.ipynb",
     "experiments/rp2-morse.ipynb",
+    "experiments/two-circles-landmarks.ipynb",
     "experiments/two-circles.ipynb",
 )
 #: the largest median number of code lines per code cell
