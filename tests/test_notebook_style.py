@@ -34,9 +34,10 @@ CONFORMING = (
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
     "experiments/hypersurfaces.ipynb",
-    "experiments/range-patches.ipynb",
     "experiments/radius-curvature.ipynb",
+    "experiments/range-patches.ipynb",
     "experiments/rp2-morse.ipynb",
+    "experiments/torus-curvature.ipynb",
     "experiments/two-circles-landmarks.ipynb",
     "experiments/two-circles.ipynb",
 )
