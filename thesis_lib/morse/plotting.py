@@ -1,4 +1,5 @@
-"""Drawings of chapter 4: gradient fields as arrows (Figures 4.4, 4.6) and modified Hasse diagrams (4.7–4.8)."""
+"""Drawings of chapter 4: the torus's height (Figure 4.1), gradient fields as arrows (Figures 4.4, 4.6) and
+modified Hasse diagrams (4.7–4.8)."""
 
 from __future__ import annotations
 
@@ -8,11 +9,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ._cells import ComplexLike, Pairs, cell_complex, partner_array
+from .smooth import torus_height
 
 if TYPE_CHECKING:  # matplotlib is imported only by whoever draws
     from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
-__all__ = ["draw_gradient_field", "draw_hasse_diagram", "spectral_layout"]
+__all__ = ["draw_gradient_field", "draw_hasse_diagram", "hasse_figure", "spectral_layout", "torus_height_figure"]
 
 
 def spectral_layout(simplices: ComplexLike) -> dict[int, tuple[float, float]]:
@@ -234,3 +237,97 @@ def draw_hasse_diagram(ax: Axes, simplices: ComplexLike, pairs: Pairs = (),
     ax.set_ylim(-0.5, cx.dimension + 0.5)
     ax.set_axis_off()
     return ax
+
+
+def hasse_figure(simplices: ComplexLike, pairs: Pairs) -> Figure:
+    """The Hasse diagram of a complex beside the modified diagram of a vector field on it.
+
+    Thesis: §4.2.6, Figures 4.7–4.8 (the diagram, then its paired edges reversed).
+
+    Parameters
+    ----------
+    simplices : Filtration or iterable of simplices
+        A small complex (all faces are added).
+    pairs : iterable of (sigma, tau)
+        The discrete vector field of the right panel.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Two panels, "Hasse diagram" and "modified" (:func:`draw_hasse_diagram`).
+
+    Raises
+    ------
+    ValueError
+        The pairs are not a discrete vector field on the complex.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> fig = hasse_figure([(0, 1, 2)], [((1,), (0, 1))])
+    >>> [ax.get_title() for ax in fig.axes]
+    ['Hasse diagram', 'modified']
+    >>> plt.close(fig)
+    """
+    import matplotlib.pyplot as plt
+
+    partner_array(cell_complex(simplices), pairs)  # a bad field fails before a figure is made
+    fig, axs = plt.subplots(1, 2, figsize=(7, 3.2))
+    draw_hasse_diagram(axs[0], simplices)
+    draw_hasse_diagram(axs[1], simplices, pairs)
+    axs[0].set_title("Hasse diagram")
+    axs[1].set_title("modified")
+    return fig
+
+
+def torus_height_figure(critical: Sequence[Mapping], *, names: Sequence[str], R: float = 2.0,
+                        r: float = 1.0) -> Figure:
+    """The height of the upright torus over its parameter square, with its critical points and indices.
+
+    Thesis: Example 4.2 and Figure 4.1 (the height function h(u, v) = cos u (R + r cos v)).
+
+    Parameters
+    ----------
+    critical : sequence of mapping
+        The critical points (``u``, ``v``, ``index``), :func:`~thesis_lib.morse.torus_critical_points`.
+    names : sequence of str
+        A label per critical point.
+    R, r : float, default 2.0 and 1.0
+        The torus's radii.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Filled contours of h on a 200 × 200 grid with a colour bar, each critical point marked and
+        labelled "name (index k)".
+
+    Raises
+    ------
+    ValueError
+        If ``names`` has not one label per critical point.
+
+    Examples
+    --------
+    >>> import matplotlib.pyplot as plt
+    >>> from thesis_lib.morse import torus_critical_points
+    >>> fig = torus_height_figure(torus_critical_points(), names=["r", "q1", "q2", "p"])
+    >>> [t.get_text() for t in fig.axes[0].texts]
+    ['r (index 0)', 'q1 (index 1)', 'q2 (index 1)', 'p (index 2)']
+    >>> plt.close(fig)
+    """
+    import matplotlib.pyplot as plt
+
+    if len(names) != len(critical):
+        raise ValueError(f"names: one per critical point ({len(critical)}), got {len(names)}")
+    uu, vv = np.meshgrid(np.linspace(0, 2 * np.pi, 200), np.linspace(0, 2 * np.pi, 200))
+    fig, ax = plt.subplots(figsize=(5.5, 4.2))
+    cs = ax.contourf(uu, vv, torus_height(uu, vv, R=R, r=r), levels=20, cmap="viridis")
+    cbar = fig.colorbar(cs, ax=ax)
+    cbar.ax.set_title("$h$", fontsize=11)
+    for c, name in zip(critical, names):
+        ax.plot(c["u"], c["v"], "o", color="crimson")
+        ax.annotate(f"{name} (index {c['index']})", (c["u"], c["v"]), xytext=(5, 5), textcoords="offset points",
+                    color="white", fontsize=10)
+    ax.set_xlabel("$u$")
+    ax.set_ylabel("$v$")
+    return fig
