@@ -35,6 +35,7 @@ CONFORMING = (
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
     "experiments/hypersurfaces.ipynb",
+    "experiments/proteins.ipynb",
     "experiments/radius-curvature.ipynb",
     "experiments/range-patches.ipynb",
     "experiments/rp2-morse.ipynb",
