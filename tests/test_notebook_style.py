@@ -34,6 +34,7 @@ CONFORMING = (
     "book/report.ipynb",
     "book/user-guide.ipynb",
     "experiments/flat-torus.ipynb",
+    "experiments/hypersurface-crust.ipynb",
     "experiments/hypersurfaces.ipynb",
     "experiments/proteins.ipynb",
     "experiments/radius-curvature.ipynb",
