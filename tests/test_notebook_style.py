@@ -22,6 +22,7 @@ from thesis_lib.lab.paths import project_root
 ROOT = project_root()
 #: the notebooks that keep to the rule
 CONFORMING = (
+    "book/ch2-complexes.ipynb",
     "book/ch2-experiments.ipynb",
     "book/ch2-persistence.ipynb",
     "book/ch4-apparent-pairs.ipynb",

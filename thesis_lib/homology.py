@@ -37,6 +37,8 @@ __all__ = [
     "betti_numbers",
     "euler_characteristic",
     "simplex_counts",
+    "universal_coefficient_betti",
+    "group_latex",
     "smith_normal_form",  # re-exported: DESIGN.md lists it under thesis_lib.homology
 ]
 
@@ -274,3 +276,79 @@ def betti_numbers(simplices: Filtration | Iterable[Sequence[int]] | np.ndarray, 
     ([1, 0, 0], [1, 1, 1])
     """
     return [b for b, _ in homology(simplices, coefficients=coefficients)]
+
+
+def universal_coefficient_betti(integral: Sequence[tuple[int, Sequence[int]]], *, coefficients: int) -> list[int]:
+    """The Betti numbers over Z/q predicted from the integral homology by the universal coefficient theorem.
+
+    Thesis: §2.2.1 and Example 2.21 (torsion of H_p(Z) decides β_p over Z/2 against Z).
+
+    β_p(Z/q) = rank H_p + #{torsion coefficients t of H_p with q | t} + #{those of H_{p−1}}:
+    H_p ⊗ Z/q and Tor(H_{p−1}, Z/q) each contribute one Z/q per torsion coefficient divisible by q.
+
+    Parameters
+    ----------
+    integral : sequence of (int, sequence of int)
+        H_0, …, H_top over Z as :func:`homology` returns them (``(rank, torsion coefficients)``).
+    coefficients : int
+        The prime q.
+
+    Returns
+    -------
+    list of int
+        β_0, …, β_top over Z/q.
+
+    Raises
+    ------
+    ValueError
+        ``coefficients`` not a prime.
+
+    Examples
+    --------
+    >>> from thesis_lib.datasets import rp2
+    >>> h = homology(rp2())
+    >>> universal_coefficient_betti(h, coefficients=2), universal_coefficient_betti(h, coefficients=3)
+    ([1, 1, 1], [1, 0, 0])
+    """
+    q = parse_field(coefficients, field=True, max_prime=MAX_EXACT_PRIME).p
+    groups = [(int(rank), [int(t) for t in torsion]) for rank, torsion in integral]
+    return [rank + sum(t % q == 0 for t in torsion) + (sum(t % q == 0 for t in groups[p - 1][1]) if p else 0)
+            for p, (rank, torsion) in enumerate(groups)]
+
+
+def group_latex(rank: int, torsion: Sequence[int]) -> str:
+    r"""An abelian group Z^rank ⊕ Z/t_1 ⊕ … written in LaTeX, as the chapter's tables show H_p.
+
+    Thesis: Example 2.21 (H_0 = Z, H_1 = Z/2, H_2 = 0 for RP²).
+
+    Parameters
+    ----------
+    rank : int
+        The free rank, ≥ 0.
+    torsion : sequence of int
+        The torsion coefficients.
+
+    Returns
+    -------
+    str
+        ``$...$``: ``\\mathbb{Z}`` for rank 1, ``\\mathbb{Z}^{r}`` above, the torsion summands after it,
+        ``$0$`` for the trivial group.
+
+    Raises
+    ------
+    ValueError
+        A negative rank or a torsion coefficient below 2.
+
+    Examples
+    --------
+    >>> from thesis_lib.datasets import rp2
+    >>> [group_latex(rank, torsion) for rank, torsion in homology(rp2())]
+    ['$\\mathbb{Z}$', '$\\mathbb{Z}/2$', '$0$']
+    >>> group_latex(2, [2, 4]), group_latex(0, [])
+    ('$\\mathbb{Z}^{2} \\oplus \\mathbb{Z}/2 \\oplus \\mathbb{Z}/4$', '$0$')
+    """
+    if int(rank) < 0 or any(int(t) < 2 for t in torsion):
+        raise ValueError(f"need a rank ≥ 0 and torsion coefficients ≥ 2, got {rank} and {list(torsion)}")
+    parts = ([f"\\mathbb{{Z}}^{{{rank}}}" if rank > 1 else "\\mathbb{Z}"] if rank else [])
+    parts += [f"\\mathbb{{Z}}/{t}" for t in torsion]
+    return "$" + (" \\oplus ".join(parts) if parts else "0") + "$"

@@ -19,6 +19,7 @@ form over Z of the symmetric residues: ``rank_p(A) = #{i : p ∤ s_i}``.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
@@ -29,7 +30,15 @@ from ._elimination import LIMIT, markowitz_eliminate
 from ._modular import dense_invariants
 from ._validate import MAX_EXACT_PRIME, MAX_PRIME, Field, parse_field
 
-__all__ = ["smith_normal_form", "rank_mod_p", "reduce_matrix", "reduce_checked", "Reduction", "dense_smith_diagonal"]
+__all__ = [
+    "smith_normal_form",
+    "rank_mod_p",
+    "reduce_matrix",
+    "reduce_checked",
+    "Reduction",
+    "dense_smith_diagonal",
+    "diagonal_text",
+]
 
 #: largest dense matrix (entries) the modular stage accepts for a matrix with entries beyond 2³¹
 MAX_DENSE_ENTRIES = 5 * 10**7
@@ -336,3 +345,35 @@ def rank_mod_p(matrix: npt.ArrayLike | sp.spmatrix | sp.sparray, *, coefficients
     if not field.is_field:
         raise ValueError("rank_mod_p needs a prime p, got 0")
     return reduce_checked(_as_matrix(matrix), field=field).rank
+
+
+def diagonal_text(diagonal: Sequence[int]) -> str:
+    """A Smith diagonal written as the thesis reads it: ``1 (r times)`` followed by the other terms.
+
+    Thesis: Example 2.21 (M̃_2 has nine 1s and one 2 on its diagonal).
+
+    Parameters
+    ----------
+    diagonal : sequence of int
+        The nonzero invariant factors, as :func:`smith_normal_form` returns them.
+
+    Returns
+    -------
+    str
+        ``"1 (r times)"``, then the factors other than 1, joined by ``", "``.
+
+    Raises
+    ------
+    ValueError
+        A factor below 1.
+
+    Examples
+    --------
+    >>> diagonal_text(smith_normal_form([[2, 0, 0], [0, 1, 0], [0, 0, 1]]))
+    '1 (2 times), 2'
+    """
+    values = [int(x) for x in diagonal]
+    if any(x < 1 for x in values):
+        raise ValueError(f"invariant factors are positive, got {values}")
+    ones = sum(1 for x in values if x == 1)
+    return ", ".join([f"1 ({ones} times)"] + [str(x) for x in values if x != 1])
