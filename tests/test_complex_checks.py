@@ -79,11 +79,13 @@ def test_jung_ratios_in_space_stay_below_the_bound_and_the_simplex_attains_it():
 
 
 @pytest.mark.parametrize("kwargs, match", [
-    ({"dims": (0,)}, "dim"), ({"n_sets": 0}, "n_sets"), ({"max_points": 1}, "max_points"),
+    ({"dims": (0,)}, "dim"), ({"n_sets": 0}, "n_sets"), ({"max_points": 1}, "max_points"), ({"seed": -1}, "seed"),
 ])
 def test_jung_ratios_bad_options(kwargs, match):
     with pytest.raises(ValueError, match=match):
         jung_ratios(**kwargs)
+    with pytest.raises(TypeError, match="seed"):
+        jung_ratios(seed=1.5)
 
 
 def test_cech_rips_ratios_against_brute_force_circles():

@@ -83,6 +83,8 @@ def test_plot_cech_rips_one_ball_per_point_and_the_two_complexes():
     assert sum(isinstance(p, Polygon) for p in left.patches) == 0  # the Čech complex has no triangle here
     assert sum(isinstance(p, Polygon) for p in right.patches) == 1  # the Rips complex fills the hole
     assert right.get_title() == "Vietoris–Rips complex, ε = 0.54"
+    assert right.get_xlim() == (-0.7, 3.1)
+    assert plot_cech_rips(pts, 0.54, c, r, xlim=(0.0, 1.0), ylim=(0.0, 2.0)).axes[0].get_ylim() == (0.0, 2.0)
     with pytest.raises(ValueError, match="eps"):
         plot_cech_rips(pts, 0.0, c, r)
 

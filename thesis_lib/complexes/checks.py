@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points, check_int
+from .._validate import as_points, check_int, check_seed
 from ..filtration import Filtration
 from .alpha import alpha
 from .cech import cech
@@ -125,7 +125,9 @@ def jung_ratios(*, dims: Sequence[int] = (2, 3), n_sets: int = 1000, max_points:
     Raises
     ------
     ValueError
-        A dimension below 1, ``n_sets`` below 1 or ``max_points`` below 2.
+        A dimension below 1, ``n_sets`` below 1, ``max_points`` below 2 or a negative seed.
+    TypeError
+        A seed that is not an integer.
 
     Examples
     --------
@@ -135,7 +137,7 @@ def jung_ratios(*, dims: Sequence[int] = (2, 3), n_sets: int = 1000, max_points:
     dims = [check_int(n, "dim", minimum=1) for n in dims]
     n_sets = check_int(n_sets, "n_sets", minimum=1)
     max_points = check_int(max_points, "max_points", minimum=2)
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(check_seed(seed))
     out = []
     for n in dims:
         bound = np.sqrt(n / (2 * (n + 1)))

@@ -194,7 +194,8 @@ def plot_complex_examples(glued: Sequence[Sequence[int]], circle: Sequence[Seque
 
 
 def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[Sequence[int]],
-                   rips_simplices: Iterable[Sequence[int]]) -> Figure:
+                   rips_simplices: Iterable[Sequence[int]], *, xlim: tuple[float, float] = (-0.7, 3.1),
+                   ylim: tuple[float, float] = (-0.7, 1.6)) -> Figure:
     """Figure 2.4: the balls B(x, ε) with the Čech complex (left) and the Vietoris–Rips complex (right).
 
     Thesis: Definitions 2.9 and 2.11, Figure 2.4.
@@ -207,6 +208,8 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
         The radius ε (> 0).
     cech_simplices, rips_simplices : iterable of sequence of int
         The two complexes at ε.
+    xlim, ylim : (float, float), default (-0.7, 3.1) and (-0.7, 1.6)
+        The range shown in both panels (the defaults fit the points of Figure 2.4).
 
     Returns
     -------
@@ -240,8 +243,8 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
         for p in pts:
             ax.add_patch(Circle(p, eps, color=COLORS["points"], alpha=0.18))
         draw_complex(ax, pts, cx, color=color)
-        ax.set_xlim(-0.7, 3.1)
-        ax.set_ylim(-0.7, 1.6)
+        ax.set_xlim(*xlim)
+        ax.set_ylim(*ylim)
         ax.set_title(f"{title}, ε = {eps}")
     return fig
 
