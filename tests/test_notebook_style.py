@@ -25,6 +25,7 @@ CONFORMING = (
     "book/ch2-complexes.ipynb",
     "book/ch2-experiments.ipynb",
     "book/ch2-persistence.ipynb",
+    "book/ch3-curvature.ipynb",
     "book/ch4-apparent-pairs.ipynb",
     "book/ch4-morse.ipynb",
     "book/ch5-crust-nd.ipynb",
