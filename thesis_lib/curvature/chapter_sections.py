@@ -131,6 +131,11 @@ def ellipsoid_parametrisation(axes: Sequence[float]) -> tuple[Surface, Surface]:
     tuple of callables
         ``X(w)`` and ``N(w)`` for angles ``w`` of shape ``(..., n)``.
 
+    Raises
+    ------
+    ValueError
+        If ``axes`` is not a list of at least two positive numbers.
+
     Examples
     --------
     >>> X, N = ellipsoid_parametrisation([1.0, 1.5, 2.0])
@@ -363,6 +368,11 @@ def flower_curve(n: int = 2000) -> np.ndarray:
     Returns
     -------
     ndarray of shape (n, 2)
+
+    Raises
+    ------
+    ValueError
+        If ``n`` is below 3.
 
     Examples
     --------
@@ -1150,6 +1160,12 @@ _HS_2G = (
 )
 
 
+def _require_keys(results: Mapping[str, float], keys: Sequence[str], experiment: str) -> None:
+    missing = [k for k in keys if k not in results]
+    if missing:
+        raise ValueError(f"the results of {experiment!r} lack {missing}")
+
+
 def torus_experiment_glue(torus_curvature: Mapping[str, float]) -> Section:
     """The stored results of the experiment ``torus-curvature`` that the chapter's prose quotes, formatted.
 
@@ -1168,6 +1184,11 @@ def torus_experiment_glue(torus_curvature: Mapping[str, float]) -> Section:
     Section
         ``glued`` (name → text, ``tc_*``) and two results.
 
+    Raises
+    ------
+    ValueError
+        If a result the prose quotes is missing.
+
     Examples
     --------
     >>> from thesis_lib.lab.results import load
@@ -1176,6 +1197,10 @@ def torus_experiment_glue(torus_curvature: Mapping[str, float]) -> Section:
     ('4', ['fig310_z_gain_100000_over_1000', 'fig310_z_gain_1000_over_100'])
     """
     tc = torus_curvature
+    ratio_keys = [f"random_{n}_outer_inner_{k}" for n in (100, 1000, 100000)
+                  for k in ("ratio", "ratio_exact", "ratio_se", "ratio_est_se", "z")]
+    _require_keys(tc, [*_TC_G2, *_TC_INT, *ratio_keys, "crust_grid_fixed_diagonal_fraction", "exact_outer_inner_ratio",
+                       "random_100000_over_grid_median_rel_err_H"], "torus-curvature")
     glued = {f"tc_{k}": format(tc[k], ".2g") for k in _TC_G2}
     glued["tc_crust_grid_fixed_diagonal_fraction"] = format(100 * tc["crust_grid_fixed_diagonal_fraction"], ".0f")
     glued |= {f"tc_{k}": format(tc[k], "d") for k in _TC_INT}
@@ -1210,6 +1235,11 @@ def hypersurface_experiment_glue(hypersurfaces: Mapping[str, float]) -> Section:
     Section
         ``glued`` (name → text, ``hs_*``; errors to 2 significant digits).
 
+    Raises
+    ------
+    ValueError
+        If a result the prose quotes is missing.
+
     Examples
     --------
     >>> sec = hypersurface_experiment_glue({k: 0.123456 for k in _HS_4F + _HS_2G})
@@ -1217,6 +1247,7 @@ def hypersurface_experiment_glue(hypersurfaces: Mapping[str, float]) -> Section:
     ('0.1235', '0.12')
     """
     hs = hypersurfaces
+    _require_keys(hs, [*_HS_4F, *_HS_2G], "hypersurfaces")
     glued = {f"hs_{k}": format(hs[k], ".4f") for k in _HS_4F}
     glued |= {f"hs_{k}": format(hs[k], ".2g") for k in _HS_2G}
     return Section(glued=glued)
