@@ -102,7 +102,7 @@ def test_flower_curve_is_non_convex_and_refuses_too_few_samples():
     d1, d2 = np.roll(curve, -1, 0) - curve, curve - np.roll(curve, 1, 0)
     turn = d2[:, 0] * d1[:, 1] - d2[:, 1] * d1[:, 0]
     assert (turn > 0).any() and (turn < 0).any()  # turns both ways: non-convex
-    with pytest.raises(ValueError, match="at least 3"):
+    with pytest.raises(ValueError, match="n must be >= 3"):
         cs.flower_curve(2)
 
 
@@ -276,3 +276,31 @@ def test_hypersurface_experiment_glue():
     assert len(glued) == 12
     with pytest.raises(ValueError, match="hypersurfaces"):
         cs.hypersurface_experiment_glue({})
+
+
+@pytest.mark.parametrize(("call", "match"), [
+    (lambda: cs.rounded_error(0.1, -1), "digits must be >= 0"),
+    (lambda: cs.octant_quadrature(0), "nodes must be >= 1"),
+    (lambda: cs.torus_shape_operator_section(R=5.0, r=5.0), "r < R"),
+    (lambda: cs.torus_shape_operator_section(R=10.0, r=-1.0), "r must be positive"),
+    (lambda: cs.discrete_gauss_bonnet_section(n=2), "n must be >= 3"),
+    (lambda: cs.gauss_image_section(eps=(0.1, 0.0)), "eps must be positive"),
+    (lambda: cs.gauss_bonnet_caps_section("no equation here"), "does not occur"),
+    (lambda: cs.gauss_bonnet_caps_section("Theorem 3.5. = 2\\pi \\quad (3.4)", psi0=(-1.0,)), "psi0 must be positive"),
+    (lambda: cs.gauss_bonnet_chern_section(dims=(2, 3)), "even dimensions"),
+    (lambda: cs.gauss_bonnet_chern_section(dims=()), "even dimensions"),
+    (lambda: cs.theorem_3_18_section(dims=(1,)), "dims must be >= 2"),
+    (lambda: cs.corollary_height_section(dims=()), "dimensions >= 2"),
+    (lambda: cs.catenoid_section(dims=(1,)), "dims must be >= 2"),
+    (lambda: cs.vector_norm_section(np.eye(3), np.array([[0, 1, 2]]), H=0.0), "H must be positive"),
+])
+def test_bad_options_are_refused(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+def test_non_integer_dimensions_are_refused():
+    with pytest.raises(TypeError, match="dims must be an integer"):
+        cs.theorem_3_18_section(dims=(2.5,))
+    with pytest.raises(TypeError, match="seed"):
+        cs.catenoid_section(seed="x")

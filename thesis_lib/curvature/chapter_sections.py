@@ -12,6 +12,7 @@ from math import factorial
 
 import numpy as np
 
+from .._validate import check_int, check_real, check_seed
 from ..lab.results import round_sig
 from ..meshes import euler_characteristic, hypersphere_freudenthal, sphere_hull, torus_grid
 from ..morse.chapter_tables import Section
@@ -86,6 +87,20 @@ ELLIPSOID_3 = (1.0, 1.25, 1.5, 1.75)
 ELLIPSOID_4 = (1.0, 1.25, 1.5, 1.75, 2.0)
 
 
+def _radii(R: float, r: float) -> tuple[float, float]:
+    R, r = check_real(R, "R", positive=True), check_real(r, "r", positive=True)
+    if not r < R:
+        raise ValueError(f"the torus needs r < R, got R={R}, r={r}")
+    return R, r
+
+
+def _dims(dims: Sequence[int], name: str, *, minimum: int, even: bool = False) -> list[int]:
+    out = [check_int(n, name, minimum=minimum) for n in dims]
+    if not out or (even and any(n % 2 for n in out)):
+        raise ValueError(f"{name} must hold {'even ' if even else ''}dimensions >= {minimum}, got {list(dims)!r}")
+    return out
+
+
 def rounded_error(x: float, digits: int) -> tuple[float, str]:
     """A numerical error rounded to ``digits`` decimals, and as text ("below 10⁻ᵈ" when it rounds to 0).
 
@@ -105,6 +120,11 @@ def rounded_error(x: float, digits: int) -> tuple[float, str]:
     tuple of (float, str)
         The rounded value (``-0.0`` made ``0.0``) and its text.
 
+    Raises
+    ------
+    ValueError
+        If ``digits`` is negative (TypeError if it is not an integer).
+
     Examples
     --------
     >>> rounded_error(3e-15, 12)
@@ -112,7 +132,7 @@ def rounded_error(x: float, digits: int) -> tuple[float, str]:
     >>> rounded_error(0.0123, 3)
     (0.012, '0.012')
     """
-    value = round(float(x), digits) + 0.0
+    value = round(float(x), check_int(digits, "digits", minimum=0)) + 0.0
     return value, (f"below $10^{{-{digits}}}$" if value == 0 else f"{value:g}")
 
 
@@ -218,12 +238,18 @@ def torus_shape_operator_section(*, R: float = 10.0, r: float = 5.0) -> Section:
     Section
         One text, the disagreement counts at 200 random points and the largest asymmetries.
 
+    Raises
+    ------
+    ValueError
+        If ``R`` or ``r`` is not positive, or ``r >= R``.
+
     Examples
     --------
     >>> sec = torus_shape_operator_section()
     >>> sec.results["torus_S_disagreements"], sec.results["torus_gauss_map_derivative_disagreements"]
     (0, 0)
     """
+    R, r = _radii(R, r)
     torus = _torus(R, r)
     uv = np.random.default_rng(0).uniform(0, 2 * np.pi, (200, 2))
     S_num = parametric_shape_operator(torus, uv)
@@ -281,12 +307,18 @@ def gauss_image_section(*, eps: Sequence[float] = (0.1, 0.01, 0.001)) -> Section
     Section
         A table and the ratios.
 
+    Raises
+    ------
+    ValueError
+        If a radius is not positive.
+
     Examples
     --------
     >>> sec = gauss_image_section(eps=(0.1, 0.01, 0.001))
     >>> abs(sec.results["eq33_gauss_image_ratio_eps_1e_3"] - 1) < 1e-3
     True
     """
+    eps = [check_real(e, "eps", positive=True) for e in eps]
     ell2, _ = ellipsoid_parametrisation(ELLIPSOID_2)
     gauss_image = {e: ct.gauss_map_area_ratio(ell2, [0.7, 0.4], e) for e in eps}
     results = {
@@ -326,6 +358,11 @@ def gauss_bonnet_caps_section(thesis: str, *, psi0: Sequence[float] = (0.8, 1.3,
     Section
         A table and the ratios.
 
+    Raises
+    ------
+    ValueError
+        If a cap's ψ₀ is not positive, or the text lacks eq. (3.4).
+
     Examples
     --------
     >>> text = "Theorem 3.5. ... = 2\\\\pi \\\\quad (3.4) ..."
@@ -333,6 +370,7 @@ def gauss_bonnet_caps_section(thesis: str, *, psi0: Sequence[float] = (0.8, 1.3,
     >>> sec.results["thm35_cap_8_total_over_2pi"], sec.results["thm35_number_of_the_statement_with_eq_3_4"]
     (1.0, 3.5)
     """
+    psi0 = [check_real(p, "psi0", positive=True) for p in psi0]
     ell2, _ = ellipsoid_parametrisation(ELLIPSOID_2)
     caps = {}
     for p in psi0:
@@ -380,8 +418,7 @@ def flower_curve(n: int = 2000) -> np.ndarray:
     >>> round(float(exterior_angles(curve).sum() / (2 * np.pi)), 9)
     1.0
     """
-    if n < 3:
-        raise ValueError(f"a closed curve needs at least 3 samples, got n={n}")
+    n = check_int(n, "n", minimum=3)
     t = 2 * np.pi * np.arange(n) / n
     rho = 1 + 0.3 * np.cos(3 * t)  # non-convex: its exterior angles change sign
     return np.column_stack([rho * np.cos(t), rho * np.sin(t)])
@@ -402,13 +439,18 @@ def octant_quadrature(nodes: int = 24) -> tuple[np.ndarray, np.ndarray]:
     tuple of ndarray
         Parameters of shape (nodes², 2) and weights of shape (nodes²,).
 
+    Raises
+    ------
+    ValueError
+        If ``nodes`` is below 1.
+
     Examples
     --------
     >>> params, weights = octant_quadrature(8)
     >>> params.shape, round(float(weights.sum() / (np.pi / 2) ** 2), 12)
     ((64, 2), 1.0)
     """
-    x, w = np.polynomial.legendre.leggauss(nodes)
+    x, w = np.polynomial.legendre.leggauss(check_int(nodes, "nodes", minimum=1))
     grid = np.pi / 4 * (x + 1)
     params = np.stack(np.meshgrid(grid, grid, indexing="ij"), -1).reshape(-1, 2)
     return params, np.outer(np.pi / 4 * w, np.pi / 4 * w).ravel()
@@ -487,12 +529,19 @@ def discrete_gauss_bonnet_section(*, R: float = 10.0, r: float = 5.0, n: int = 8
     Section
         One text with a table, six results.
 
+    Raises
+    ------
+    ValueError
+        If ``R`` or ``r`` is not positive, ``r >= R``, or ``n`` is below 3.
+
     Examples
     --------
     >>> sec = discrete_gauss_bonnet_section(n=20)
     >>> [float(sec.results[f"thm38_{m}_defects_over_2pi"]) for m in ("torus_grid", "sphere_hull")]
     [0.0, 2.0]
     """
+    R, r = _radii(R, r)
+    n = check_int(n, "n", minimum=3)
     grid_uv = np.stack(np.meshgrid(*[2 * np.pi * np.arange(120) / 120] * 2, indexing="ij"), -1).reshape(-1, 2)
     torus_K = total_gauss_kronecker_curvature(_torus(R, r), grid_uv, np.full(len(grid_uv), (2 * np.pi / 120) ** 2))
     ell2, _ = ellipsoid_parametrisation(ELLIPSOID_2)
@@ -692,12 +741,18 @@ def gauss_bonnet_chern_section(*, dims: Sequence[int] = (2, 4, 6, 8)) -> Section
     Section
         A table, one result per dimension and the ellipsoid's ratio.
 
+    Raises
+    ------
+    ValueError
+        If ``dims`` is empty or holds an odd dimension or one below 2.
+
     Examples
     --------
     >>> sec = gauss_bonnet_chern_section(dims=(2, 4))
     >>> sec.results["thm311_constant_ratio_n2"], round(sec.results["thm311_ellipsoid4_integral_K_over_formula"], 4)
     (1.0, 1.0)
     """
+    dims = _dims(dims, "dims", minimum=2, even=True)
     ratios = {n: hypersphere_volume(n) / 2 / gauss_bonnet_chern_constant(n) for n in dims}
     axes4 = list(ELLIPSOID_4)
     params4, weights4 = hypersphere_quadrature(4, nodes=20)
@@ -824,12 +879,18 @@ def theorem_3_18_section(*, dims: Sequence[int] = (2, 3, 4, 5, 6)) -> Section:
     Section
         One table, the coefficients per n and the Gram-matrix fractions.
 
+    Raises
+    ------
+    ValueError
+        If ``dims`` is empty or holds a dimension below 2.
+
     Examples
     --------
     >>> sec = theorem_3_18_section(dims=(2,))
     >>> sec.results["cor319_coefficient_times_nfact_n2"], sec.results["thm318_proof_gram_equal_fraction"]
     (1.0, 1.0)
     """
+    dims = _dims(dims, "dims", minimum=2)
     thm318, cor319 = {}, {}
     for n in dims:
         simplices = random_simplices(n, 200, seed=n)
@@ -905,12 +966,17 @@ def corollary_height_section(*, dims: Sequence[int] = (2, 3, 4, 5)) -> Section:
     Section
         A table and one median ratio per n.
 
+    Raises
+    ------
+    ValueError
+        If ``dims`` is empty or holds a dimension below 2.
+
     Examples
     --------
     >>> corollary_height_section(dims=(3,)).results
     {'cor319_printed_height_over_true_n3': 0.5}
     """
-    height_ratio = {n: _height_ratio(n) for n in dims}
+    height_ratio = {n: _height_ratio(n) for n in _dims(dims, "dims", minimum=2)}
     results = {f"cor319_printed_height_over_true_n{n}": round_sig(q, 6) for n, q in height_ratio.items()}
     text = "| $n$ | printed $h$ / true $h$ | $1/(n-1)$ |\n|---:|---:|---:|\n" + "\n".join(
         f"| {n} | {q:.6f} | {1 / (n - 1):.6f} |" for n, q in height_ratio.items()
@@ -935,12 +1001,18 @@ def vector_norm_section(points: np.ndarray, faces: np.ndarray, *, H: float = 0.5
     Section
         One text, two results.
 
+    Raises
+    ------
+    ValueError
+        If ``H`` is not positive.
+
     Examples
     --------
     >>> pts, faces = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
     >>> round(vector_norm_section(pts, faces).results["sec331_norm_over_n_area_over_H"], 2)
     1.0
     """
+    H = check_real(H, "H", positive=True)
     Hd = mean_curvature_vector(points, faces)
     A_vor = vertex_areas(points, faces, area="voronoi")
     norm_over_n = float(np.median(np.linalg.norm(Hd, axis=1) / 2 / H))
@@ -1065,6 +1137,11 @@ def shape_operator_section(points: np.ndarray, faces: np.ndarray, *, R: float = 
     Section
         A table and text, eight results.
 
+    Raises
+    ------
+    ValueError
+        If ``R`` or ``r`` is not positive, or ``r >= R``.
+
     Examples
     --------
     >>> pts, faces = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
@@ -1072,6 +1149,7 @@ def shape_operator_section(points: np.ndarray, faces: np.ndarray, *, R: float = 
     >>> sec.results["eq323_integral_over_k1_plus_k2"], sec.results["sec334_weights_sum_over_voronoi_area_max_err"]
     (3.14159, 0.0)
     """
+    R, r = _radii(R, r)
     torus = _torus(R, r)
     kn = normal_curvature_circle(torus, np.array([[0.0, 0.0], [0.3, 1.2]]), nodes=64)
     S_at = torus_shape_operator(np.array([0.0, 0.3]), np.array([0.0, 1.2]), R=R, r=r)
@@ -1303,12 +1381,18 @@ def catenoid_section(*, dims: Sequence[int] = (2, 3), seed: int = 3) -> Section:
     Section
         A table and two counts per n.
 
+    Raises
+    ------
+    ValueError
+        If ``dims`` is empty or holds a dimension below 2.
+
     Examples
     --------
     >>> catenoid_section(dims=(2,)).results
     {'catenoid_n2_H_nonzero': 0, 'catenoid_n2_kappa_disagreements': 0}
     """
-    cat_rng = np.random.default_rng(seed)
+    dims = _dims(dims, "dims", minimum=2)
+    cat_rng = np.random.default_rng(check_seed(seed))
     minimal = {}
     for n in dims:
         w_cat = np.column_stack([cat_rng.uniform(-np.pi, np.pi, 200), cat_rng.uniform(-1, 1, (200, n - 1))])
