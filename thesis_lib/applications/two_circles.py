@@ -64,7 +64,7 @@ class RipsRun:
 
     @property
     def summary(self) -> str:
-        """Two lines: the complex's size against the complete one, and its long H₁ bars."""
+        """The complex's size against the complete one, and its long H₁ bars, on two lines."""
         return (f"{self.n:4d} points per circle: {self.n_simplices:>9,d} simplices (complete 2-skeleton "
                 f"{self.complete:,d})\n     {self.within_diameter:,d} of diameter at most {self.max_radius:g}; "
                 f"{len(self.long)} long H₁ bars")

@@ -36,10 +36,6 @@ __all__ = [
 NOT_A_COMPLEX = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 1.2], [0.6, 0.0], [1.4, 0.0], [1.0, -1.0]])
 
 
-def _pyplot(purpose: str):
-    return require("matplotlib.pyplot", extra="plot", purpose=purpose)
-
-
 def _planar(points: npt.ArrayLike) -> np.ndarray:
     pts = as_points(points)
     if pts.shape[1] != 2:
@@ -83,7 +79,7 @@ def draw_complex(ax: Axes, points: npt.ArrayLike, simplices: Iterable[Sequence[i
     (1, 1)
     >>> plt.close(fig)
     """
-    _pyplot("drawing complexes")
+    require("matplotlib.pyplot", extra="plot", purpose="drawing complexes")
     from matplotlib.patches import Polygon
 
     from .style import COLORS
@@ -122,7 +118,7 @@ def plot_simplices() -> Figure:
 
     from .style import COLORS
 
-    plt = _pyplot("drawing simplices")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing simplices")
     fig, axes = plt.subplots(1, 4, figsize=(7, 2.0))
     shapes = [np.array([[0.0, 0.0]]), np.array([[0.0, 0.0], [1.0, 0.3]]),
               np.array([[0.0, 0.0], [1.0, 0.0], [0.4, 0.8]]),
@@ -176,7 +172,7 @@ def plot_complex_examples(glued: Sequence[Sequence[int]], circle: Sequence[Seque
 
     if any(not 0 <= int(v) <= 5 for s in glued for v in s) or any(not 0 <= int(v) <= 2 for s in circle for v in s):
         raise ValueError("glued takes vertices 0-5 and circle vertices 0-2 (the vertices of the drawing)")
-    plt = _pyplot("drawing complexes")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing complexes")
     fig, axes = plt.subplots(1, 3, figsize=(7, 2.4))
     v = np.array([[0.0, 0.0], [1.2, -0.2], [0.6, 1.0], [0.8, 0.35], [1.8, 0.6], [1.4, 1.3]])
     draw_complex(axes[0], v, [tuple(r) for a in closure([tuple(s) for s in glued])[:3] for r in a])
@@ -236,7 +232,7 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
     pts = _planar(points)
     if not (np.isfinite(eps) and eps > 0):
         raise ValueError(f"eps must be a positive number, got {eps!r}")
-    plt = _pyplot("drawing complexes")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing complexes")
     fig, axes = plt.subplots(1, 2, figsize=(7, 2.6))
     for ax, cx, title, color in [(axes[0], cech_simplices, "Čech complex", COLORS["first"]),
                                  (axes[1], rips_simplices, "Vietoris–Rips complex", COLORS["second"])]:
@@ -286,7 +282,7 @@ def plot_voronoi_delaunay(points: npt.ArrayLike, simplices: Iterable[Sequence[in
     from .style import COLORS
 
     pts = _planar(points)
-    plt = _pyplot("drawing Voronoi diagrams")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing Voronoi diagrams")
     fig, axes = plt.subplots(1, 2, figsize=(7, 3.4))
     for ax in axes:
         voronoi_plot_2d(Voronoi(pts), ax=ax, show_vertices=False, line_colors=COLORS["points"], point_size=0)
@@ -346,7 +342,7 @@ def plot_alpha_complexes(points: npt.ArrayLike, filtration: Filtration, radii: S
     eps = [float(r) for r in radii]
     if not eps or not all(np.isfinite(r) and r > 0 for r in eps):
         raise ValueError(f"radii must be one or more positive numbers, got {list(radii)!r}")
-    plt = _pyplot("drawing alpha complexes")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing alpha complexes")
     fig, axes = plt.subplots(1, len(eps), figsize=(7, 2.6), squeeze=False)
     for ax, eps_a in zip(axes[0], radii):
         sub = filtration.threshold(eps_a**2)
@@ -398,7 +394,7 @@ def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simpli
     from .style import COLORS
 
     pts = _planar(points)
-    plt = _pyplot("drawing witness complexes")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing witness complexes")
     fig, ax = plt.subplots(figsize=(3.6, 3.6))
     ax.scatter(*pts.T, s=3, color=COLORS["points"])
     draw_complex(ax, pts[np.asarray(landmarks)], simplices, color=COLORS["first"])
@@ -450,7 +446,7 @@ def plot_rp2_orientation(triangles: Sequence[Sequence[int]], chart: Mapping[tupl
     missing = [tuple(t) for t in triangles if tuple(sorted(t)) not in chart]
     if missing:
         raise ValueError(f"triangles missing from the chart: {missing}")
-    plt = _pyplot("drawing RP²")
+    plt = require("matplotlib.pyplot", extra="plot", purpose="drawing RP²")
     fig, ax = plt.subplots(figsize=(3.8, 3.8))
     for tri in triangles:
         corners = dict(zip(sorted(tri), chart[tuple(sorted(tri))]))

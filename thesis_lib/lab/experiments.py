@@ -280,7 +280,8 @@ def resolve_parameters(name: str, overrides: Mapping[str, object] | None = None)
     ------
     ParameterError
         For an unknown experiment, an unknown parameter, ``output_dir``, a value of the wrong type
-        (NaN and infinity included), or a value outside the range :func:`parameter_ranges` declares.
+        (NaN and infinity included), or a value outside the range
+        :func:`~thesis_lib.lab.experiments.parameter_ranges` declares.
     """
     defaults = experiment_parameters(name)
     if overrides is not None and not isinstance(overrides, Mapping):
