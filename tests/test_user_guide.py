@@ -77,8 +77,8 @@ def test_every_name_the_prose_mentions_exists(dotted):
 
 
 def test_the_guide_is_in_the_sidebar_and_keeps_to_the_notebook_rule():
-    from test_notebook_style import CONFORMING, style_violations
+    from test_notebook_style import NOTEBOOKS, style_violations
 
-    assert "book/user-guide.ipynb" in CONFORMING
+    assert "book/user-guide.ipynb" in NOTEBOOKS
     assert style_violations(GUIDE) == []
     assert "file: user-guide" in (ROOT / "book" / "_toc.yml").read_text(encoding="utf-8")
