@@ -103,7 +103,7 @@ def test_every_toc_page_is_built(built_book):
 
 def test_book_has_intro_landmarks_report_and_references(built_book):
     assert "Why three approaches" in (built_book / "intro.html").read_text()
-    assert "covering_radius_maxmin" in (built_book / "experiments" / "two-circles-landmarks.html").read_text()
+    assert "covering radius: maxmin" in (built_book / "experiments" / "two-circles-landmarks.html").read_text()
     report_text = re.sub(r"<[^>]+>", "", (built_book / "report.html").read_text())
     assert "Reproduction report" in report_text and f"The registry holds {len(report())} claims" in report_text
     refs = (built_book / "references.html").read_text()

@@ -152,7 +152,7 @@ class CoverStudy:
 
     @property
     def summary(self) -> str:
-        """Four lines: the covering radii of the first sample, their ratio over all, the near landmarks."""
+        """The covering radii of the first sample, their ratio over all, the near landmarks (four lines)."""
         r, n = self.record, len(self.ratios)
         return (f"covering radius: maxmin {r['covering_radius_maxmin']:.3f}, random {r['covering_radius_random']:.3f}"
                 f" (ratio {r['covering_radius_ratio']:.2f})\n"
@@ -163,7 +163,7 @@ class CoverStudy:
 
     @property
     def texts(self) -> dict[str, str]:
-        """The numbers the prose quotes, as text: ``ratio``, ``ratio_min``, ``near_maxmin``, ``near_random``."""
+        """The numbers the prose quotes, as text (``ratio``, ``ratio_min``, ``near_maxmin``, ``near_random``)."""
         r = self.record
         return {"ratio": f"{r['covering_radius_ratio']:.2f}", "ratio_min": f"{r['covering_radius_ratio_min']:.2f}",
                 "near_maxmin": f"{r['near_intersections_mean_maxmin']:.2f}",
@@ -346,7 +346,7 @@ class OutlierStudy:
 
     @property
     def ratios(self) -> np.ndarray:
-        """Maxmin's covering radius over random's, per sample (above 1: random covers better)."""
+        """Maxmin's covering radius over random's, per sample (above 1 where random covers better)."""
         return self.cover["maxmin"] / self.cover["random"]
 
     @property

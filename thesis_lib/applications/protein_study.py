@@ -66,8 +66,8 @@ __all__ = [
     "plot_window_sensitivity",
 ]
 
-#: the thesis's counts of dimension-2 generators of 1ECA (Example 2.43): at increments 0.02 (``step``),
-#: at 0.05 (``coarse``), and at 0.05 ignoring bars shorter than 0.03 (``long``)
+#: the thesis's counts of dimension-2 generators of 1ECA in Example 2.43, at increments 0.02
+#: (``step``), at 0.05 (``coarse``), and at 0.05 ignoring bars shorter than 0.03 (``long``)
 THESIS_1ECA_VOIDS = {"step": 12, "coarse": 16, "long": 9}
 
 
@@ -81,7 +81,7 @@ class Structure:
     ----------
     name : the entry as given (a PDB id such as ``"1grm"``, or a path).
     model : the 1-based model number.
-    radii_set : the radius table (:data:`~thesis_lib.applications.proteins.RADII_SETS`).
+    radii_set : the radius table (``thesis_lib.applications.proteins.RADII_SETS``).
     atoms : the atoms (:func:`~thesis_lib.applications.proteins.read_pdb`).
     radii : one radius per atom (Å).
     fallback : the atoms whose radius came from the single-element table.
@@ -216,7 +216,7 @@ class RadiiRings:
 
     @property
     def table(self) -> list[list[object]]:
-        """A header and one line: atoms, fallbacks, the Betti numbers, β₁ with the second table."""
+        """A header and one line of atoms, fallbacks, the Betti numbers, β₁ with the second table."""
         s = self.structure
         return [["", "heavy atoms", "radius fallbacks", "β₀", "β₁", "β₂", f"β₁ with {self.compare_radii_set} radii"],
                 [f"{s.label} model {s.model} ({s.radii_set})", len(s.atoms), int(s.fallback.sum()), *self.betti,
@@ -525,14 +525,14 @@ class VoidSurvey:
 
     @property
     def exact_table(self) -> list[list[object]]:
-        """Per entry: atoms, radius fallbacks, bars alive at the radii, exact bars in the window, long ones."""
+        """Per entry the atoms, radius fallbacks, bars alive at the radii, exact bars in the window, long ones."""
         return self._table(["entry", "atoms", "radius fallbacks", "alive at the radii", "exact",
                             f"exact, ≥ {self.min_length:g}"],
                            ("atoms", "radius_fallbacks", "at_radii", "exact", "exact_long"))
 
     @property
     def sampled_table(self) -> list[list[object]]:
-        """Per entry: the bars at each increment (and how many distinct), those only the finer one sees,
+        """Per entry the bars at each increment (and how many distinct), those only the finer one sees,
         the long bars at the coarse one."""
         fine, coarse = self.increment_fine, self.increment_coarse
         return self._table(["entry", f"step {self.increment:g}", "distinct", f"step {fine:g}", "distinct",

@@ -31,8 +31,8 @@ __all__ = [
     "plot_rp2_orientation",
 ]
 
-#: Figure 2.2 (b): the upper triangle 0, 1, 2 and the lower one 3, 4, 5, whose top edge 3–4 lies
-#: inside the edge 0–1 of the upper one
+#: the points of Figure 2.2 (b), the upper triangle 0, 1, 2 and the lower one 3, 4, 5, whose top
+#: edge 3–4 lies inside the edge 0–1 of the upper one
 NOT_A_COMPLEX = np.array([[0.0, 0.0], [2.0, 0.0], [1.0, 1.2], [0.6, 0.0], [1.4, 0.0], [1.0, -1.0]])
 
 

@@ -94,7 +94,7 @@ def plot_hyperplane_slices(vertices: npt.ArrayLike, simplices: npt.ArrayLike, va
     ImportError
         If pyvista or matplotlib is not installed (the ``[mesh]`` and ``[plot]`` extras).
     ValueError
-        If ``levels`` is empty, or on an invalid mesh (:func:`~thesis_lib.meshes.slicing.hyperplane_slice`).
+        If ``levels`` is empty, or on an invalid mesh (``thesis_lib.meshes.slicing.hyperplane_slice``).
 
     Examples
     --------

@@ -123,8 +123,8 @@ def plot_mean_curvature_errors(errors: Mapping[tuple[str, str], npt.ArrayLike], 
     ----------
     errors : mapping of (str, str) to array_like
         ``errors[triangulation, area]``: the relative errors at the n_grid × n_grid chosen points, u
-        major (:attr:`~thesis_lib.meshes.torus_study.GridErrors.H`), for the triangulations
-        ``"crust"`` and ``"fixed"`` and the areas ``"voronoi"`` and ``"barycentric"``.
+        major (``GridErrors.H`` of :func:`~thesis_lib.meshes.torus_study.grid_curvature_errors`), for
+        the triangulations ``"crust"`` and ``"fixed"`` and the areas ``"voronoi"`` and ``"barycentric"``.
     n_grid : int
         Chosen points per circle.
 
@@ -179,8 +179,9 @@ def plot_gaussian_curvature_errors(errors: Mapping[tuple[str, str], npt.ArrayLik
     Parameters
     ----------
     errors : mapping of (str, str) to array_like
-        ``errors[triangulation, area]`` (:attr:`~thesis_lib.meshes.torus_study.GridErrors.K`), for the
-        triangulations ``"crust"`` and ``"fixed"``.
+        ``errors[triangulation, area]`` (``GridErrors.K`` of
+        :func:`~thesis_lib.meshes.torus_study.grid_curvature_errors`), for the triangulations
+        ``"crust"`` and ``"fixed"``.
     n_grid : int
         Chosen points per circle.
     area : str

@@ -74,7 +74,7 @@ def _errors(surface: str, H: np.ndarray, params, where: np.ndarray) -> np.ndarra
 
 def crust_curvature_errors(surface: str, n_samples: int, *, seed: int = 0, area: str = "voronoi",
                            theta: float = np.pi / 4) -> dict:
-    """Reconstruct ``n_samples`` random samples with :func:`crust_nd` and estimate |H| by Theorem 3.18.
+    """Reconstruct ``n_samples`` random samples with the Crust and estimate |H| by Theorem 3.18.
 
     Thesis: Theorem 3.18 and §3.3.2 (areas) on the Crust of Chapter 5's "natural next step".
 

@@ -279,7 +279,7 @@ def grid_curvature_errors(vertices: npt.ArrayLike, triangulations: Mapping[str, 
     Returns
     -------
     GridErrors
-        The errors with every vertex area of :data:`~thesis_lib.curvature.AREA_KINDS`.
+        The errors with every vertex area of ``thesis_lib.curvature.AREA_KINDS``.
 
     Raises
     ------
@@ -352,7 +352,7 @@ class RandomTorusRun:
 
     @property
     def z(self) -> float:
-        """How clearly the outer half is more curved: (ratio − 1) / its standard error.
+        """How clearly the outer half is more curved, as (ratio − 1) / its standard error.
 
         Returns
         -------
