@@ -122,8 +122,8 @@ def test_threads_on_small_inputs_forced_parallel():
             _same(ref, _barcode(graph, max_dim=3, n_threads=threads, parallel_min=0))
 
 
-def test_dense_matrix_and_neighbour_search_agree():
-    """Above DENSE_MAX points distances are found in the neighbour lists: the same barcode."""
+def test_dense_matrix_and_edge_hash_agree():
+    """Without the dense matrix (above DENSE_MAX points) lengths come from the edge hash: the same barcode."""
     for seed in range(4):
         rng = np.random.default_rng(seed)
         pts = np.round(rng.random((60, 3)), 1)

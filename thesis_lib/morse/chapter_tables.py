@@ -81,7 +81,7 @@ _EMPTY = np.zeros((0, 1), np.int64)
 
 @dataclass(frozen=True, kw_only=True)
 class Section:
-    """What a section of the chapter 4 page shows, records and glues.
+    """What a section of a chapter page shows, records and glues.
 
     Attributes: ``texts`` (Markdown, shown in turn), ``results`` (flat name → number, for
     :meth:`thesis_lib.lab.results.Recorder.record`) and ``glued`` (name → value for the prose).
