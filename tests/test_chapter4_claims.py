@@ -53,7 +53,7 @@ def test_statuses_of_the_chapter_4_rows():
 # ------------------------------------------------------------------------------------ smooth checks
 @pytest.mark.parametrize("R, r", [(2.0, 1.0), (3.0, 0.5)])
 def test_torus_height_critical_points_are_the_four_on_the_z_axis(R, r):
-    crit = checks.surface_critical_points(checks.torus_surface(R, r), checks.linear_function([0, 0, 1]))
+    crit = checks.surface_critical_points(checks.torus_surface(R=R, r=r), checks.linear_function([0, 0, 1]))
     assert [c["index"] for c in crit] == [0, 1, 1, 2]
     heights = [-(R + r), -(R - r), R - r, R + r]
     for c, z in zip(crit, heights):
@@ -80,7 +80,7 @@ def test_sphere_quadratic_critical_points_indices_and_homology(c):
 
 
 def test_upright_torus_has_saddle_connections_and_a_tilt_removes_them():
-    T = checks.torus_surface(2.0, 1.0)
+    T = checks.torus_surface(R=2.0, r=1.0)
     up = checks.surface_morse_complex(T, checks.linear_function([0, 0, 1]),
                                       checks.surface_critical_points(T, checks.linear_function([0, 0, 1])))
     assert up["saddle_connection_branches"] == 4
@@ -92,7 +92,7 @@ def test_upright_torus_has_saddle_connections_and_a_tilt_removes_them():
 
 
 def test_flow_limits_of_the_torus_height():
-    T, h = checks.torus_surface(2.0, 1.0), checks.linear_function([0, 0, 1])
+    T, h = checks.torus_surface(R=2.0, r=1.0), checks.linear_function([0, 0, 1])
     crit = checks.surface_critical_points(T, h)
     forward, backward = checks.flow_limit_fractions(T, h, crit, n=8, seed=3)
     assert forward.tolist() == [1, 0, 0, 0] and backward.tolist() == [0, 0, 0, 1]

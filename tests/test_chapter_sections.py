@@ -96,18 +96,18 @@ def test_turning_octant_and_hemisphere():
 
 
 def test_flower_curve_is_non_convex_and_refuses_too_few_samples():
-    curve = cs.flower_curve(500)
+    curve = cs.flower_curve(n=500)
     rho = np.linalg.norm(curve, axis=1)
     assert rho.min() == pytest.approx(0.7, abs=1e-3) and rho.max() == pytest.approx(1.3)
     d1, d2 = np.roll(curve, -1, 0) - curve, curve - np.roll(curve, 1, 0)
     turn = d2[:, 0] * d1[:, 1] - d2[:, 1] * d1[:, 0]
     assert (turn > 0).any() and (turn < 0).any()  # turns both ways: non-convex
     with pytest.raises(ValueError, match="n must be >= 3"):
-        cs.flower_curve(2)
+        cs.flower_curve(n=2)
 
 
 def test_octant_quadrature_integrates_the_sphere_area_element():
-    params, weights = cs.octant_quadrature(16)
+    params, weights = cs.octant_quadrature(nodes=16)
     area = np.sum(weights * np.sin(params[:, 0]))  # dA = sin ψ dψ dφ on the unit sphere
     assert area == pytest.approx(4 * pi / 8, rel=1e-12)
 
@@ -280,11 +280,11 @@ def test_hypersurface_experiment_glue():
 
 @pytest.mark.parametrize(("call", "match"), [
     (lambda: cs.rounded_error(0.1, -1), "digits must be >= 0"),
-    (lambda: cs.octant_quadrature(0), "nodes must be >= 1"),
+    (lambda: cs.octant_quadrature(nodes=0), "nodes must be >= 1"),
     (lambda: cs.torus_shape_operator_section(R=5.0, r=5.0), "r < R"),
     (lambda: cs.torus_shape_operator_section(R=10.0, r=-1.0), "r must be positive"),
     (lambda: cs.discrete_gauss_bonnet_section(n=2), "n must be >= 3"),
-    (lambda: cs.gauss_image_section(eps=(0.1, 0.0)), "eps must be positive"),
+    (lambda: cs.gauss_image_section(radii=(0.1, 0.0)), "radii must be positive"),
     (lambda: cs.gauss_bonnet_caps_section("no equation here"), "does not occur"),
     (lambda: cs.gauss_bonnet_caps_section("Theorem 3.5. = 2\\pi \\quad (3.4)", psi0=(-1.0,)), "psi0 must be positive"),
     (lambda: cs.gauss_bonnet_chern_section(dims=(2, 3)), "even dimensions"),

@@ -48,11 +48,11 @@ def circle_radius(points: np.ndarray) -> float:
 
 
 def test_jung_bound_is_the_circumradius_of_the_unit_regular_simplex():
-    assert jung_bound(1) == pytest.approx(0.5)
-    assert jung_bound(2) == pytest.approx(1 / np.sqrt(3))
-    assert jung_bound(3) == pytest.approx(np.sqrt(6) / 4)  # circumradius of the unit tetrahedron
+    assert jung_bound(dim=1) == pytest.approx(0.5)
+    assert jung_bound(dim=2) == pytest.approx(1 / np.sqrt(3))
+    assert jung_bound(dim=3) == pytest.approx(np.sqrt(6) / 4)  # circumradius of the unit tetrahedron
     with pytest.raises(ValueError, match="dim"):
-        jung_bound(0)
+        jung_bound(dim=0)
 
 
 def test_jung_ratios_match_brute_force_circles_on_the_same_draws():

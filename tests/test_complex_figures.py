@@ -77,16 +77,16 @@ def test_plot_cech_rips_one_ball_per_point_and_the_two_complexes():
     pts = np.array([[0.0, 0.0], [1.0, 0.0], [0.5, np.sqrt(3) / 2], [1.9, 0.3], [2.4, 0.9]])
     c = [s for s, _ in cech(pts, max_radius=0.54, max_dim=2)]
     r = [s for s, _ in rips(pts, max_radius=0.54, max_dim=2)]
-    fig = plot_cech_rips(pts, 0.54, c, r)
+    fig = plot_cech_rips(pts, c, r, max_radius=0.54)
     left, right = fig.axes
     assert sum(isinstance(p, Circle) for p in left.patches) == 5
     assert sum(isinstance(p, Polygon) for p in left.patches) == 0  # the Čech complex has no triangle here
     assert sum(isinstance(p, Polygon) for p in right.patches) == 1  # the Rips complex fills the hole
     assert right.get_title() == "Vietoris–Rips complex, ε = 0.54"
     assert right.get_xlim() == (-0.7, 3.1)
-    assert plot_cech_rips(pts, 0.54, c, r, xlim=(0.0, 1.0), ylim=(0.0, 2.0)).axes[0].get_ylim() == (0.0, 2.0)
-    with pytest.raises(ValueError, match="eps"):
-        plot_cech_rips(pts, 0.0, c, r)
+    assert plot_cech_rips(pts, c, r, max_radius=0.54, xlim=(0.0, 1.0), ylim=(0.0, 2.0)).axes[0].get_ylim() == (0.0, 2.0)
+    with pytest.raises(ValueError, match="max_radius"):
+        plot_cech_rips(pts, c, r, max_radius=0.0)
 
 
 def test_plot_voronoi_delaunay_triangles_are_the_delaunay_triangles():
@@ -116,7 +116,7 @@ def test_plot_alpha_complexes_titles_carry_the_betti_numbers_over_z2():
 def test_plot_witness_complex_draws_on_the_landmarks():
     pts = np.random.default_rng(1).random((30, 2))
     lm = [3, 7, 11]
-    fig = plot_witness_complex(pts, lm, [(0, 1), (1, 2), (0, 1, 2)], 0.2)
+    fig = plot_witness_complex(pts, lm, [(0, 1), (1, 2), (0, 1, 2)], max_radius=0.2)
     ax = fig.axes[0]
     assert np.allclose(ax.collections[1].get_offsets(), pts[lm]) and len(ax.patches) == 1
     assert ax.get_title() == "3 maxmin landmarks, ε = 0.2"

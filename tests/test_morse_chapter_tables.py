@@ -141,7 +141,7 @@ def test_smooth_inequalities_section_on_the_sphere():
 
 
 def test_flow_limits_section_every_point_flows_to_the_extremes():
-    torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], "z")
+    torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], name="z")
     crit = checks.surface_critical_points(torus, height)
     s = tables.flow_limits_section(torus, height, crit, names=["r", "q_1", "q_2", "p"], n=6, seed=1)
     rows = table_rows(s.texts[0])
@@ -154,7 +154,7 @@ def test_flow_limits_section_every_point_flows_to_the_extremes():
 
 
 def test_saddle_connections_upright_and_tilted(tilted):
-    torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], "z")
+    torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], name="z")
     upright = checks.surface_morse_complex(torus, height, checks.surface_critical_points(torus, height))
     s = tables.saddle_connection_section(upright, tilted)
     assert table_rows(s.texts[0]) == [["0", "4"], ["0.1", "0"], ["0.2", "0"]]

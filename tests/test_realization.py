@@ -24,7 +24,7 @@ from thesis_lib.morse import rp2_chart
 
 @pytest.mark.parametrize("n, d", [(1, 0), (5, 1), (7, 2), (6, 5), (4, 9)])
 def test_full_skeleton_counts_binomials_and_is_closed(n, d):
-    cx = full_skeleton(n, d)
+    cx = full_skeleton(n, max_dim=d)
     assert len(cx) == sum(math.comb(n, k) for k in range(1, d + 2))
     assert len(set(cx)) == len(cx) and all(list(s) == sorted(s) for s in cx)
     faces = {f for s in cx for k in range(1, len(s)) for f in itertools.combinations(s, k)}
@@ -33,14 +33,14 @@ def test_full_skeleton_counts_binomials_and_is_closed(n, d):
 
 def test_full_skeleton_bad_counts():
     with pytest.raises(ValueError, match="n_vertices"):
-        full_skeleton(0, 1)
+        full_skeleton(0, max_dim=1)
     with pytest.raises(ValueError, match="max_dim"):
-        full_skeleton(3, -1)
+        full_skeleton(3, max_dim=-1)
 
 
 def test_theorem_2_6_on_full_skeleta():
     for d in (1, 2):
-        cx = full_skeleton(7, d)
+        cx = full_skeleton(7, max_dim=d)
         assert realization_failures(cx, moment_curve(7, 2 * d + 1)) == 0
         assert realization_failures(cx, moment_curve(7, 2 * d)) > 0
 

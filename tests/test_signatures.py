@@ -53,6 +53,7 @@ DATA_ARGUMENTS = {
     "datasets.filtrations.named_chain": ("terms",),
     "filtration.Filtration": ("simplices", "values"),
     "lab.bench.scaling_figure": ("topic",),
+    "lab.chapters.read_thesis": ("path",),
     "lab.cli.main": ("argv",),
     "lab.data.check_parameter_paths": ("params",),
     "lab.data.manifest": ("manifest_file",),
@@ -110,6 +111,8 @@ METHOD_USERS = frozenset({
     "curvature.mean.mean_curvature",
     "curvature.mean.mean_curvature_vector",
     "meshes.stencil.neighbour_grid_mean_curvature",
+    "meshes.torus_study.grid_curvature_errors",
+    "meshes.torus_study.random_torus_run",
     "morse.vector_field.is_acyclic",
 })
 

@@ -43,7 +43,7 @@ def _simplex_set(simplices: Filtration | Iterable[Sequence[int]]) -> list[tuple[
     return [tuple(sorted(int(v) for v in s)) for s in items]
 
 
-def jung_bound(dim: int) -> float:
+def jung_bound(*, dim: int) -> float:
     """Jung's constant: a set of diameter d in R^n lies in a ball of radius d·√(n / (2(n + 1))).
 
     Thesis: Theorem 2.10 (Jung's theorem).
@@ -65,7 +65,7 @@ def jung_bound(dim: int) -> float:
 
     Examples
     --------
-    >>> round(jung_bound(2), 6), round(1 / 3**0.5, 6)
+    >>> round(jung_bound(dim=2), 6), round(1 / 3**0.5, 6)
     (0.57735, 0.57735)
     """
     n = check_int(dim, "dim", minimum=1)

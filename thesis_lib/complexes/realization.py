@@ -104,7 +104,7 @@ def realization_failures(simplices: Iterable[Sequence[int]], points: Sequence[Se
     return failures
 
 
-def full_skeleton(n_vertices: int, max_dim: int) -> list[tuple[int, ...]]:
+def full_skeleton(n_vertices: int, *, max_dim: int) -> list[tuple[int, ...]]:
     """Every simplex of dimension 0, …, max_dim on the vertices 0, …, n_vertices − 1.
 
     Thesis: Theorem 2.6 (the complexes of dimension d tested on the moment curve).
@@ -130,9 +130,9 @@ def full_skeleton(n_vertices: int, max_dim: int) -> list[tuple[int, ...]]:
 
     Examples
     --------
-    >>> full_skeleton(3, 1)
+    >>> full_skeleton(3, max_dim=1)
     [(0,), (1,), (2,), (0, 1), (0, 2), (1, 2)]
-    >>> len(full_skeleton(7, 2))
+    >>> len(full_skeleton(7, max_dim=2))
     63
     """
     if int(n_vertices) < 1 or int(max_dim) < 0:

@@ -290,7 +290,7 @@ def torus_shape_operator_section(*, R: float = 10.0, r: float = 5.0) -> Section:
     return Section(texts=(text,), results=results)
 
 
-def gauss_image_section(*, eps: Sequence[float] = (0.1, 0.01, 0.001)) -> Section:
+def gauss_image_section(*, radii: Sequence[float] = (0.1, 0.01, 0.001)) -> Section:
     """The area of the Gauss image of shrinking discs over their area and |K| (eq. 3.3).
 
     Thesis: §3.1.2, eq. (3.3) (N_u ∧ N_v = K X_u ∧ X_v).
@@ -299,8 +299,8 @@ def gauss_image_section(*, eps: Sequence[float] = (0.1, 0.01, 0.001)) -> Section
 
     Parameters
     ----------
-    eps : sequence of float
-        The discs' radii; the results name 0.1, 0.01 and 0.001.
+    radii : sequence of float
+        The discs' radii ε; the results name 0.1, 0.01 and 0.001.
 
     Returns
     -------
@@ -314,11 +314,11 @@ def gauss_image_section(*, eps: Sequence[float] = (0.1, 0.01, 0.001)) -> Section
 
     Examples
     --------
-    >>> sec = gauss_image_section(eps=(0.1, 0.01, 0.001))
+    >>> sec = gauss_image_section(radii=(0.1, 0.01, 0.001))
     >>> abs(sec.results["eq33_gauss_image_ratio_eps_1e_3"] - 1) < 1e-3
     True
     """
-    eps = [check_real(e, "eps", positive=True) for e in eps]
+    eps = [check_real(e, "radii", positive=True) for e in radii]
     ell2, _ = ellipsoid_parametrisation(ELLIPSOID_2)
     gauss_image = {e: ct.gauss_map_area_ratio(ell2, [0.7, 0.4], e) for e in eps}
     results = {
@@ -393,7 +393,7 @@ def gauss_bonnet_caps_section(thesis: str, *, psi0: Sequence[float] = (0.8, 1.3,
     return Section(texts=(text,), results=results)
 
 
-def flower_curve(n: int = 2000) -> np.ndarray:
+def flower_curve(*, n: int = 2000) -> np.ndarray:
     """The non-convex closed plane curve ρ = 1 + 0.3 cos 3t, sampled at ``n`` angles.
 
     Thesis: Example 3.6 (the turning of a closed plane curve is 2π).
@@ -414,7 +414,7 @@ def flower_curve(n: int = 2000) -> np.ndarray:
 
     Examples
     --------
-    >>> curve = flower_curve(400)
+    >>> curve = flower_curve(n=400)
     >>> round(float(exterior_angles(curve).sum() / (2 * np.pi)), 9)
     1.0
     """
@@ -424,7 +424,7 @@ def flower_curve(n: int = 2000) -> np.ndarray:
     return np.column_stack([rho * np.cos(t), rho * np.sin(t)])
 
 
-def octant_quadrature(nodes: int = 24) -> tuple[np.ndarray, np.ndarray]:
+def octant_quadrature(*, nodes: int = 24) -> tuple[np.ndarray, np.ndarray]:
     """Gauss–Legendre nodes and weights on the angles (ψ, φ) ∈ [0, π/2]² of the sphere's first octant.
 
     Thesis: eq. (3.7) and Example 3.7 (the octant, a triangle with three right angles).
@@ -446,7 +446,7 @@ def octant_quadrature(nodes: int = 24) -> tuple[np.ndarray, np.ndarray]:
 
     Examples
     --------
-    >>> params, weights = octant_quadrature(8)
+    >>> params, weights = octant_quadrature(nodes=8)
     >>> params.shape, round(float(weights.sum() / (np.pi / 2) ** 2), 12)
     ((64, 2), 1.0)
     """
@@ -984,14 +984,14 @@ def corollary_height_section(*, dims: Sequence[int] = (2, 3, 4, 5)) -> Section:
     return Section(texts=(text,), results=results)
 
 
-def vector_norm_section(points: np.ndarray, faces: np.ndarray, *, H: float = 0.5) -> Section:
+def vector_norm_section(points: np.ndarray, simplices: np.ndarray, *, H: float = 0.5) -> Section:
     """The norm of the discrete mean curvature vector over n|H| and over n A(p)|H| (end of §3.3.1).
 
     Thesis: §3.3.1 ("the norm of the vector divided by n").
 
     Parameters
     ----------
-    points, faces : ndarray
+    points, simplices : ndarray
         A triangulated sphere in ℝ³.
     H : float
         Its exact mean curvature (1/radius).
@@ -1008,13 +1008,13 @@ def vector_norm_section(points: np.ndarray, faces: np.ndarray, *, H: float = 0.5
 
     Examples
     --------
-    >>> pts, faces = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
-    >>> round(vector_norm_section(pts, faces).results["sec331_norm_over_n_area_over_H"], 2)
+    >>> pts, simplices = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
+    >>> round(vector_norm_section(pts, simplices).results["sec331_norm_over_n_area_over_H"], 2)
     1.0
     """
     H = check_real(H, "H", positive=True)
-    Hd = mean_curvature_vector(points, faces)
-    A_vor = vertex_areas(points, faces, area="voronoi")
+    Hd = mean_curvature_vector(points, simplices)
+    A_vor = vertex_areas(points, simplices, area="voronoi")
     norm_over_n = float(np.median(np.linalg.norm(Hd, axis=1) / 2 / H))
     norm_over_nA = float(np.median(np.linalg.norm(Hd, axis=1) / (2 * A_vor) / H))
     results = dict(
@@ -1085,14 +1085,14 @@ def chapter_of_voronoi_section(thesis: str) -> Section:
     return Section(texts=(text,), results=results)
 
 
-def voronoi_area_section(points: np.ndarray, faces: np.ndarray) -> Section:
+def voronoi_area_section(points: np.ndarray, simplices: np.ndarray) -> Section:
     """Eq. (3.19) on an ellipsoid's octant and the angle defect over the Voronoi area (eq. 3.20) on a sphere.
 
     Thesis: eqs. (3.19)–(3.20) (K ≈ (2π − Σθ_j)/A_vor).
 
     Parameters
     ----------
-    points, faces : ndarray
+    points, simplices : ndarray
         A triangulated sphere of radius 2 in ℝ³.
 
     Returns
@@ -1102,13 +1102,14 @@ def voronoi_area_section(points: np.ndarray, faces: np.ndarray) -> Section:
 
     Examples
     --------
-    >>> pts, faces = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
-    >>> voronoi_area_section(pts, faces).results["eq319_ellipsoid_octant_integral_K_over_formula"]
+    >>> pts, simplices = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
+    >>> voronoi_area_section(pts, simplices).results["eq319_ellipsoid_octant_integral_K_over_formula"]
     1.0
     """
     ell2, _ = ellipsoid_parametrisation(ELLIPSOID_2)
     ell_octant_K = total_gauss_kronecker_curvature(ell2, *octant_quadrature())
-    defect_over_area = float(np.median(angle_defects(points, faces) / vertex_areas(points, faces, area="voronoi")))
+    defects = angle_defects(points, simplices)
+    defect_over_area = float(np.median(defects / vertex_areas(points, simplices, area="voronoi")))
     results = dict(
         eq319_ellipsoid_octant_integral_K_over_formula=round_sig(ell_octant_K / (2 * np.pi - 3 * np.pi / 2), 6),
         eq320_defect_over_voronoi_area_sphere_r2=round_sig(defect_over_area, 4),
@@ -1120,14 +1121,14 @@ def voronoi_area_section(points: np.ndarray, faces: np.ndarray) -> Section:
     return Section(texts=(text,), results=results)
 
 
-def shape_operator_section(points: np.ndarray, faces: np.ndarray, *, R: float = 10.0, r: float = 5.0) -> Section:
+def shape_operator_section(points: np.ndarray, simplices: np.ndarray, *, R: float = 10.0, r: float = 5.0) -> Section:
     """Mean curvature as a quadrature of normal curvatures (eq. 3.23), eq. (3.24), cotangent weights, the printed sum.
 
     Thesis: §3.3.4, Definition 3.3 and eqs. (3.23)–(3.24).
 
     Parameters
     ----------
-    points, faces : ndarray
+    points, simplices : ndarray
         A triangulated sphere of radius 2 in ℝ³.
     R, r : float
         The torus's radii (normal curvatures at two points, and the 100 × 100 grid of the printed sum).
@@ -1144,8 +1145,8 @@ def shape_operator_section(points: np.ndarray, faces: np.ndarray, *, R: float = 
 
     Examples
     --------
-    >>> pts, faces = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
-    >>> sec = shape_operator_section(pts, faces)
+    >>> pts, simplices = sphere_hull(n_dims=3, n_points=400, radius=2.0, seed=0)
+    >>> sec = shape_operator_section(pts, simplices)
     >>> sec.results["eq323_integral_over_k1_plus_k2"], sec.results["sec334_weights_sum_over_voronoi_area_max_err"]
     (3.14159, 0.0)
     """
@@ -1155,17 +1156,17 @@ def shape_operator_section(points: np.ndarray, faces: np.ndarray, *, R: float = 
     S_at = torus_shape_operator(np.array([0.0, 0.3]), np.array([0.0, 1.2]), R=R, r=r)
     k_sum = np.trace(S_at, axis1=1, axis2=2)
     integral = 2 * np.pi * kn.mean(axis=1)  # the trapezoid rule, exact for this degree-2 trigonometric polynomial
-    _, kappa = normal_curvatures(points, faces)
+    _, kappa = normal_curvatures(points, simplices)
     radius_formula = 1.0 / kappa  # eq. (3.24) as printed: ‖d‖² / (2 d·n)
-    A_vor = vertex_areas(points, faces, area="voronoi")
-    quadrature = np.einsum("ia,ia->i", mean_curvature_vector(points, faces), vertex_normals(points, faces))
+    A_vor = vertex_areas(points, simplices, area="voronoi")
+    quadrature = np.einsum("ia,ia->i", mean_curvature_vector(points, simplices), vertex_normals(points, simplices))
     quadrature /= 2 * A_vor  # = 1/(4A) Σ (cot α + cot β)(x_i − x_j)·n
     printed = printed_sum_gradient(*torus_grid(100, R=R, r=r))
     eig = np.linalg.eigvalsh(S_at)
     extremes_err = float(np.max(np.abs(np.column_stack([kn.min(axis=1), kn.max(axis=1)]) - eig)))
     edge_w = np.zeros(len(points))
     for k in range(3):  # w_ij = ⅛ cot γ ‖x_i − x_j‖² for the edge opposite the angle γ, to both ends
-        c_, a_, b_ = faces[:, k], faces[:, (k + 1) % 3], faces[:, (k + 2) % 3]
+        c_, a_, b_ = simplices[:, k], simplices[:, (k + 1) % 3], simplices[:, (k + 2) % 3]
         da, db = points[a_] - points[c_], points[b_] - points[c_]
         cot = np.einsum("ma,ma->m", da, db) / np.linalg.norm(np.cross(da, db), axis=1)
         wgt = cot * np.einsum("ma,ma->m", points[a_] - points[b_], points[a_] - points[b_]) / 8

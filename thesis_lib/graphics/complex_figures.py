@@ -189,9 +189,9 @@ def plot_complex_examples(glued: Sequence[Sequence[int]], circle: Sequence[Seque
     return fig
 
 
-def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[Sequence[int]],
-                   rips_simplices: Iterable[Sequence[int]], *, xlim: tuple[float, float] = (-0.7, 3.1),
-                   ylim: tuple[float, float] = (-0.7, 1.6)) -> Figure:
+def plot_cech_rips(points: npt.ArrayLike, cech_simplices: Iterable[Sequence[int]],
+                   rips_simplices: Iterable[Sequence[int]], *, max_radius: float,
+                   xlim: tuple[float, float] = (-0.7, 3.1), ylim: tuple[float, float] = (-0.7, 1.6)) -> Figure:
     """Figure 2.4: the balls B(x, ε) with the Čech complex (left) and the Vietoris–Rips complex (right).
 
     Thesis: Definitions 2.9 and 2.11, Figure 2.4.
@@ -200,10 +200,10 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
     ----------
     points : array_like, shape (n, 2)
         The centres.
-    eps : float
-        The radius ε (> 0).
     cech_simplices, rips_simplices : iterable of sequence of int
         The two complexes at ε.
+    max_radius : float
+        The radius ε (> 0) of the balls and the complexes.
     xlim, ylim : (float, float), default (-0.7, 3.1) and (-0.7, 1.6)
         The range shown in both panels (the defaults fit the points of Figure 2.4).
 
@@ -220,7 +220,7 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
     Examples
     --------
     >>> import matplotlib.pyplot as plt
-    >>> fig = plot_cech_rips([[0.0, 0.0], [1.0, 0.0]], 0.6, [(0, 1)], [(0, 1)])
+    >>> fig = plot_cech_rips([[0.0, 0.0], [1.0, 0.0]], [(0, 1)], [(0, 1)], max_radius=0.6)
     >>> [ax.get_title() for ax in fig.axes]
     ['Čech complex, ε = 0.6', 'Vietoris–Rips complex, ε = 0.6']
     >>> plt.close(fig)
@@ -230,8 +230,9 @@ def plot_cech_rips(points: npt.ArrayLike, eps: float, cech_simplices: Iterable[S
     from .style import COLORS
 
     pts = _planar(points)
+    eps = max_radius
     if not (np.isfinite(eps) and eps > 0):
-        raise ValueError(f"eps must be a positive number, got {eps!r}")
+        raise ValueError(f"max_radius must be a positive number, got {eps!r}")
     plt = require("matplotlib.pyplot", extra="plot", purpose="drawing complexes")
     fig, axes = plt.subplots(1, 2, figsize=(7, 2.6))
     for ax, cx, title, color in [(axes[0], cech_simplices, "Čech complex", COLORS["first"]),
@@ -356,8 +357,8 @@ def plot_alpha_complexes(points: npt.ArrayLike, filtration: Filtration, radii: S
     return fig
 
 
-def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simplices: Iterable[Sequence[int]],
-                         eps: float) -> Figure:
+def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simplices: Iterable[Sequence[int]], *,
+                         max_radius: float) -> Figure:
     """A witness complex drawn on its landmarks over the whole point cloud.
 
     Thesis: Definition 2.16 (the witness complex W(X, L, ε)).
@@ -370,7 +371,7 @@ def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simpli
         The indices of the landmarks L in ``points``; the simplices' vertices index this list.
     simplices : iterable of sequence of int
         The witness complex.
-    eps : float
+    max_radius : float
         The ε of the complex (shown in the title).
 
     Returns
@@ -386,7 +387,7 @@ def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simpli
     Examples
     --------
     >>> import matplotlib.pyplot as plt
-    >>> fig = plot_witness_complex([[0.0, 0.0], [1.0, 0.0], [0.5, 0.5]], [0, 1], [(0, 1)], 0.1)
+    >>> fig = plot_witness_complex([[0.0, 0.0], [1.0, 0.0], [0.5, 0.5]], [0, 1], [(0, 1)], max_radius=0.1)
     >>> fig.axes[0].get_title()
     '2 maxmin landmarks, ε = 0.1'
     >>> plt.close(fig)
@@ -398,7 +399,7 @@ def plot_witness_complex(points: npt.ArrayLike, landmarks: Sequence[int], simpli
     fig, ax = plt.subplots(figsize=(3.6, 3.6))
     ax.scatter(*pts.T, s=3, color=COLORS["points"])
     draw_complex(ax, pts[np.asarray(landmarks)], simplices, color=COLORS["first"])
-    ax.set_title(f"{len(landmarks)} maxmin landmarks, ε = {eps}")
+    ax.set_title(f"{len(landmarks)} maxmin landmarks, ε = {max_radius}")
     return fig
 
 

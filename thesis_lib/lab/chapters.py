@@ -311,7 +311,7 @@ def _section(text: str, title: str) -> tuple[str, Chapter]:
     return found[0]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Resolved:
     """One reference of :data:`REFERENCES` read from the text."""
 
@@ -355,8 +355,8 @@ def resolve(text: str) -> dict[str, Resolved]:
         if len(hits) != 1:
             raise ValueError(f"{key}: {len(hits)} sentences of the {part} with a chapter number and {words!r}")
         heading, chap = _section(text, title)
-        out[key] = Resolved(key, part, hits[0].sentence, hits[0].number, heading, chap,
-                            section_at(text, hits[0].line) or part)
+        out[key] = Resolved(key=key, part=part, sentence=hits[0].sentence, printed=hits[0].number, section=heading,
+                            chapter=chap, where=section_at(text, hits[0].line) or part)
     return out
 
 

@@ -29,7 +29,7 @@ HYPERSURFACES = ("sphere", "catenoid")
 SPHERE_RADIUS = 2.0
 
 
-def sample_hypersurface(surface: str, n_samples: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray | None]:
+def sample_hypersurface(surface: str, n_samples: int, *, seed: int = 0) -> tuple[np.ndarray, np.ndarray | None]:
     """Uniform random samples of the 3-sphere of radius 2 or of the 3-catenoid piece
     u ∈ [0, 2π), v, w ∈ [−1, 1] (the thesis's region), with their parameters (None for the sphere).
 
@@ -114,7 +114,7 @@ def crust_curvature_errors(surface: str, n_samples: int, *, seed: int = 0, area:
     The error is |H − 1/2| / (1/2) on the sphere, and |H| cosh² v (|H| over the largest principal
     curvature) on the catenoid, whose H = 0 has no relative error.
     """
-    pts, params = sample_hypersurface(surface, n_samples, seed)
+    pts, params = sample_hypersurface(surface, n_samples, seed=seed)
     res = crust_nd(pts, theta=theta, closed=(surface == "sphere"))
     H = mean_curvature(pts, res.simplices, area=area)
     good = manifold_vertices(res.simplices, n_points=len(pts)) & np.isfinite(H)

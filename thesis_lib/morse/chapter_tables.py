@@ -300,7 +300,7 @@ def smooth_inequalities_section(surfaces: Sequence[tuple[Surface, Sequence[int],
     for surface, betti, label in surfaces:
         seen: dict[tuple[int, ...], int] = {}
         for seed in range(n_functions):
-            f = random_quadratic_function(seed)
+            f = random_quadratic_function(seed=seed)
             counts = np.bincount([c["index"] for c in surface_critical_points(surface, f, seed=seed)], minlength=3)
             for key, holds in morse_inequalities(counts, betti).items():
                 failures[key] += not holds
@@ -348,7 +348,7 @@ def flow_limits_section(surface: Surface, function: AmbientFunction, critical: S
     Examples
     --------
     >>> from thesis_lib.morse import checks
-    >>> torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], "z")
+    >>> torus, height = checks.torus_surface(), checks.linear_function([0.0, 0.0, 1.0], name="z")
     >>> crit = checks.surface_critical_points(torus, height)
     >>> s = flow_limits_section(torus, height, crit, names=["r", "q_1", "q_2", "p"], n=4)
     >>> s.results["def49_open_backward_max"], s.results["def49_open_forward_max"]

@@ -91,7 +91,7 @@ class AmbientFunction:
     hess: Callable[[Vector], Vector]
 
 
-def torus_surface(R: float = 2.0, r: float = 1.0) -> Surface:
+def torus_surface(*, R: float = 2.0, r: float = 1.0) -> Surface:
     """The upright torus φ(u, v) = (sin u (R + r cos v), r sin v, cos u (R + r cos v)) as ``{g = 0}``.
 
     Thesis: Example 4.2 / Figure 4.1 (axis along y, so the height z has four critical points).
@@ -163,7 +163,7 @@ def sphere_surface() -> Surface:
                    lambda p: p / np.linalg.norm(p), sample, 2)
 
 
-def linear_function(a: Sequence[float], name: str = "") -> AmbientFunction:
+def linear_function(a: Sequence[float], *, name: str = "") -> AmbientFunction:
     """F(x) = a·x, e.g. the height z (a = (0, 0, 1)) or a tilted height.
 
     Thesis: Example 4.2 (the height), Example 4.12 (a small tilt).
@@ -184,7 +184,7 @@ def linear_function(a: Sequence[float], name: str = "") -> AmbientFunction:
                            lambda p: np.zeros((3, 3)))
 
 
-def quadratic_function(A: npt.ArrayLike, b: Sequence[float] = (0.0, 0.0, 0.0), name: str = "") -> AmbientFunction:
+def quadratic_function(A: npt.ArrayLike, *, b: Sequence[float] = (0.0, 0.0, 0.0), name: str = "") -> AmbientFunction:
     """F(x) = xᵀAx + b·x (A symmetrised).
 
     Thesis: Example 4.18 (h = c₁u² + c₂v² + c₃w² is A = diag(c), b = 0).
@@ -209,7 +209,7 @@ def quadratic_function(A: npt.ArrayLike, b: Sequence[float] = (0.0, 0.0, 0.0), n
                            lambda p: 2 * A)
 
 
-def random_quadratic_function(seed: int) -> AmbientFunction:
+def random_quadratic_function(*, seed: int) -> AmbientFunction:
     """A random F(x) = xᵀAx + b·x (standard normal entries): generically a Morse function on a surface.
 
     Thesis: Theorems 4.6–4.7 (inputs of our choosing for the Morse inequalities).
@@ -224,7 +224,7 @@ def random_quadratic_function(seed: int) -> AmbientFunction:
     AmbientFunction
     """
     rng = np.random.default_rng(seed)
-    return quadratic_function(rng.normal(size=(3, 3)), rng.normal(size=3), name=f"random quadratic {seed}")
+    return quadratic_function(rng.normal(size=(3, 3)), b=rng.normal(size=3), name=f"random quadratic {seed}")
 
 
 def _tangent_basis(n: Vector) -> Vector:
@@ -445,7 +445,7 @@ def _orient_unstable(e: Vector) -> Vector:
     return e if e[k] > 0 else -e
 
 
-def surface_morse_complex(surface: Surface, F: AmbientFunction, critical: Sequence[dict],
+def surface_morse_complex(surface: Surface, F: AmbientFunction, critical: Sequence[dict], *,
                           branches: Sequence[dict] | None = None) -> dict:
     """The Morse complex over Z of a function on an oriented surface, from its computed flow lines.
 
