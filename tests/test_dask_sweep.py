@@ -130,10 +130,11 @@ def test_cancelled_dask_sweep_leaves_nothing_running_and_resumes(root):
         tag = uuid.uuid4().hex
         proc = subprocess.Popen(popen_args(root, *args), env=cli_env(root, tag), stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True)
-        scratch = Path(tempfile.gettempdir()) / "thesis-lab-runs"
-        wait_until(lambda proc=proc, scratch=scratch: proc.poll() is not None or any(
-            (p / "out" / "results.json").is_file() for p in scratch.glob(".toy.tmp-*")),
-            timeout=180, what="a run to start")
+        # a run of this sweep has started: a scratch folder of one of its processes holds results
+        # (other tests' toy runs, in parallel, write scratch folders of their own processes)
+        wait_until(lambda proc=proc, tag=tag: proc.poll() is not None
+                   or _running_scratch(set(tagged_processes(tag))) is not None,
+                   timeout=180, what="a run to start")
         proc.send_signal(sig)
         _, err = proc.communicate(timeout=180)
         if sig == signal.SIGTERM and proc.returncode != 0:
