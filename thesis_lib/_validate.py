@@ -265,7 +265,7 @@ def check_max_dim(max_dim, name: str = "max_dim", *, maximum: int | None = None)
 
 
 # ---------------------------------------------------------------------------------------- points
-def _float_array(value, kind: str, message: str) -> np.ndarray:
+def float_array(value, *, kind: str, message: str) -> np.ndarray:
     """``value`` as a float64 array; :class:`InvalidTypeError` ``"<message>: <reason>"`` for complex
     numbers (``kind``: what they are not) or anything that is not numeric."""
     if isinstance(value, (str, bytes, dict, set, frozenset)) or value is None:
@@ -284,7 +284,7 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
 
     Thesis: §2.1.2 (a point set X in R^d).
     """
-    arr = _float_array(points, "coordinates", f"{name} must be an (n, d) array of numbers")
+    arr = float_array(points, kind="coordinates", message=f"{name} must be an (n, d) array of numbers")
     if arr.ndim != 2:
         raise ValueError(f"{name} must be an (n, d) array, got shape {arr.shape}")
     if arr.shape[0] < min_points:
@@ -306,7 +306,7 @@ def as_distance_matrix(distance_matrix) -> np.ndarray:
     """A dense distance matrix: a non-empty square, symmetric float64 array without NaN or negative
     entries (C-contiguous), or a ``ValueError`` saying what is wrong (an :class:`InvalidTypeError`
     for a string, a dict, a ragged list or anything that is not numbers)."""
-    dm = _float_array(distance_matrix, "distances", "distance_matrix must be an (n, n) array of numbers")
+    dm = float_array(distance_matrix, kind="distances", message="distance_matrix must be an (n, n) array of numbers")
     if dm.ndim != 2 or dm.shape[0] != dm.shape[1] or dm.shape[0] == 0:
         raise ValueError(f"distance_matrix must be a non-empty square (n, n) array, got shape {dm.shape}")
     if np.isnan(dm).any():
@@ -468,7 +468,7 @@ def parse_rips_input(points, distance_matrix, *, sparse: bool = False) -> Points
 
 def check_weights(weights, n: int) -> np.ndarray:
     """Weights w_x >= 0 (squared radii of the weighted points, §2.1.2), one per point."""
-    w = _float_array(weights, "weights", "weights must be an array of numbers")
+    w = float_array(weights, kind="weights", message="weights must be an array of numbers")
     if w.ndim != 1 or w.shape[0] != n:
         raise ValueError(f"weights must be a 1-D array with one weight per point ({n}), got shape {w.shape}")
     if not np.all(np.isfinite(w)):

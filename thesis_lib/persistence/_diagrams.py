@@ -12,21 +12,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from .._validate import InvalidTypeError
+from .._validate import InvalidTypeError, float_array
 
 __all__ = ["parse_diagram", "parse_diagrams"]
-
-
-def _floats(value, what: str) -> np.ndarray:
-    """``value`` as a float64 array, or an InvalidTypeError naming ``what``."""
-    if isinstance(value, (str, bytes, dict, set, frozenset)) or value is None:
-        raise InvalidTypeError(f"{what} must be an (n, 2) array of (birth, death), got {type(value).__name__}")
-    try:
-        if np.iscomplexobj(value):
-            raise TypeError(f"got complex numbers ({np.asarray(value).dtype})")
-        return np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError) as err:
-        raise InvalidTypeError(f"{what} must be an (n, 2) array of (birth, death) numbers: {err}") from None
 
 
 def parse_diagram(value, what: str) -> np.ndarray:
@@ -35,7 +23,8 @@ def parse_diagram(value, what: str) -> np.ndarray:
     Raises InvalidTypeError (not numbers) or ValueError (a shape other than ``(n, 2)``, a NaN, an
     infinite birth, a death before its birth).
     """
-    arr = _floats(value, what)
+    arr = float_array(value, kind="(birth, death) values",
+                      message=f"{what} must be an (n, 2) array of (birth, death) numbers")
     if arr.size == 0:
         return np.empty((0, 2), dtype=np.float64)
     if arr.ndim != 2 or arr.shape[1] != 2:
