@@ -40,7 +40,7 @@ from .tables import header, markdown_table
 __all__ = ["BADGES", "COULD_FAIL", "PROVENANCES", "PROVENANCE_LEGEND", "STATUS_LEGEND", "findings", "Claim",
            "ClaimError", "STATUSES", "compared_as", "errata_markdown", "headline", "load_claims", "evaluate",
            "math_text", "number_text", "report", "summary", "summary_markdown", "markdown", "table_cell", "to_json",
-           "place_line", "why", "chapter_tally"]
+           "place_line", "why", "chapter_tally", "provenance_text"]
 
 #: every status a claim can have, in the report's order (computed, never typed in)
 STATUSES = ("reproduced", "erratum", "differs", "identity", "consistent", "not-comparable", "figure-only",
@@ -689,8 +689,7 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
     """
     rows = report() if rows is None else rows
     s = summary(rows)
-    prov = ", ".join(f"{n} {p}" for p, n in sorted(s["by_provenance"].items(), key=lambda kv: _prov_order(kv[0])))
-    lines = [headline(rows), "", f"Inputs: {prov}."]
+    lines = [headline(rows), "", f"Inputs: {provenance_text(s)}."]
     shown = [st for st in STATUSES if st != "new" and any(st in c for c in s["by_chapter"].values())]
     if shown:
         table = [[f"Chapter {ch}" if ch.isdigit() else "Preface, Introduction" if ch == "front" else ch]
@@ -698,6 +697,30 @@ def summary_markdown(rows: list[dict[str, object]] | None = None) -> str:
                  for ch, c in s["by_chapter"].items()]
         lines += ["", markdown_table(["chapter"] + shown + ["claims"], table).rstrip("\n")]
     return "\n".join(lines) + "\n"
+
+
+def provenance_text(counts: dict[str, object]) -> str:
+    """The claims' inputs counted, in the order of ``PROVENANCES`` (any other after them): ``"40 computed, …"``.
+
+    Thesis: none (the report's page).
+
+    Parameters
+    ----------
+    counts : dict
+        :func:`~thesis_lib.lab.report.summary` of the report.
+
+    Returns
+    -------
+    str
+        The counts of the provenances present, comma-separated.
+
+    Examples
+    --------
+    >>> provenance_text({"by_provenance": {PROVENANCES[0]: 3}}) == f"3 {PROVENANCES[0]}"
+    True
+    """
+    by = counts["by_provenance"]
+    return ", ".join(f"{by[p]} {p}" for p in sorted(by, key=_prov_order) if by[p])
 
 
 def _prov_order(p: object) -> int:

@@ -25,7 +25,7 @@ from .report import (
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["STATUS_COLOURS", "badge", "status_legend", "provenance_text", "counts_table", "plot_status_counts",
+__all__ = ["STATUS_COLOURS", "badge", "status_legend", "counts_table", "plot_status_counts",
            "place", "claims_table", "errata_table"]
 
 #: the badges' colours in the book's theme, for the bar chart (figure-only a shade darker, to show on
@@ -81,29 +81,6 @@ def status_legend() -> str:
     legend += ["", "The input of each claim (in italics after its status):", ""]
     legend += [f"* `{p}`: {PROVENANCE_LEGEND[p]}{';' if p != PROVENANCES[-1] else '.'}" for p in PROVENANCES]
     return "\n".join(legend)
-
-
-def provenance_text(counts: dict[str, object]) -> str:
-    """The claims' inputs counted, in the order of ``PROVENANCES``: ``"40 computed, 12 recomputed, …"``.
-
-    Thesis: none (the report's page).
-
-    Parameters
-    ----------
-    counts : dict
-        :func:`~thesis_lib.lab.report.summary` of the report.
-
-    Returns
-    -------
-    str
-        The counts of the provenances present, comma-separated.
-
-    Examples
-    --------
-    >>> provenance_text({"by_provenance": {PROVENANCES[0]: 3}}) == f"3 {PROVENANCES[0]}"
-    True
-    """
-    return ", ".join(f"{counts['by_provenance'][p]} {p}" for p in PROVENANCES if counts["by_provenance"].get(p))
 
 
 def counts_table(counts: dict[str, object]) -> str:
