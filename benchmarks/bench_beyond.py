@@ -30,9 +30,9 @@ import numpy as np
 
 
 def _bifiltration(case: str):
+    from thesis_lib.curvature.point_curvature import point_curvature
     from thesis_lib.datasets import two_circles
     from thesis_lib.meshes import sample_torus
-    from thesis_lib.meshes.point_curvature import point_curvature
     from thesis_lib.multiparameter import radius_curvature_bifiltration
 
     kind, n = case.split("-")
@@ -171,7 +171,7 @@ def crust_row(case: str, rounds: int | None) -> dict:
     """The Crust of S³ samples, interleaved with Qhull's 4-D Delaunay of the same points (its first step)."""
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes.crust_nd import crust_nd
+    from thesis_lib.reconstruction.crust_nd import crust_nd
 
     n = int(case.split("-")[1])
     pts = _sphere(n)
@@ -193,7 +193,7 @@ def crust_row(case: str, rounds: int | None) -> dict:
 
 def memory_child(case: str, tool: str) -> None:
     if case.startswith("crust4d"):
-        from thesis_lib.meshes.crust_nd import crust_nd
+        from thesis_lib.reconstruction.crust_nd import crust_nd
 
         def setup():
             crust_nd(_sphere(300))  # imports and compiled code (the baseline)

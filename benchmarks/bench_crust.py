@@ -42,7 +42,7 @@ def _case(n: int) -> str:
 def _run(tool: str, pts: np.ndarray):
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes import ball_pivoting, crust
+    from thesis_lib.reconstruction import ball_pivoting, crust
 
     if tool == "crust":
         return crust(pts)

@@ -94,8 +94,8 @@ def complex_arrays(name: str) -> list:
     import numpy as np
 
     from thesis_lib.datasets import klein_bottle
+    from thesis_lib.homology.simplicial import closure
     from thesis_lib.meshes import freudenthal
-    from thesis_lib.simplicial import closure
 
     case = CASES[name]
     if case["kind"] == "rips":
@@ -127,8 +127,8 @@ def dense_core(arrays: list):
     """The dense core the sparse stage leaves on ∂₂ (what the modular stage receives)."""
     import numpy as np
 
-    from thesis_lib._elimination import markowitz_eliminate
-    from thesis_lib.simplicial import boundary_matrix
+    from thesis_lib.homology._elimination import markowitz_eliminate
+    from thesis_lib.homology.simplicial import boundary_matrix
 
     d2 = boundary_matrix(arrays[1], arrays[2], coefficients=0)
     _, _, (core, _, _) = markowitz_eliminate(d2.indptr, d2.indices, d2.data, d2.shape[0],
@@ -174,7 +174,7 @@ def worker(tool: str, name: str) -> dict:
         out["core_shape"] = list(core.shape)
         out["core_max"] = int(np.abs(core).max()) if core.size else 0
         if tool == "ours-core":
-            from thesis_lib._modular import dense_invariants
+            from thesis_lib.homology._modular import dense_invariants
 
             dense_invariants(np.array([[2, 4], [6, 9]]))
             run = lambda: dense_invariants(core)  # noqa: E731

@@ -9,7 +9,8 @@ from hypothesis import strategies as st
 
 from thesis_lib.complexes import rips
 from thesis_lib.datasets import example_filtration, two_circles
-from thesis_lib.morse import is_acyclic, morse_reduce, reduced_persistence
+from thesis_lib.morse.reduction import morse_reduce, reduced_persistence
+from thesis_lib.morse.vector_field import is_acyclic
 from thesis_lib.persistence import apparent_pairs, apparent_summary, persistence
 
 

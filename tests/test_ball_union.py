@@ -1,4 +1,4 @@
-"""The union-of-balls figure of the introduction (graphics.ball_union.plot_ball_unions)."""
+"""The union-of-balls figure of the introduction (chapters.ball_union.plot_ball_unions)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.graphics.ball_union import plot_ball_unions  # noqa: E402
+from thesis_lib.chapters.ball_union import plot_ball_unions  # noqa: E402
 
 
 def test_one_ball_per_point_and_panel_at_each_radius():

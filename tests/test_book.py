@@ -111,7 +111,7 @@ def test_book_has_intro_landmarks_report_and_references(built_book):
 
 
 API_ANCHORS = [
-    "thesis_lib.filtration.Filtration",
+    "thesis_lib.homology.filtration.Filtration",
     "thesis_lib.complexes.rips",
     "thesis_lib.homology.homology",
     "thesis_lib.persistence.persistence",

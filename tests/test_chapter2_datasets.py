@@ -11,8 +11,8 @@ from hypothesis import strategies as st
 
 from thesis_lib.datasets import dense_filtration, example_filtration, module_filtration, named_chain
 from thesis_lib.datasets.filtrations import EXAMPLE_2_40_CYCLES
+from thesis_lib.homology.simplicial import boundary_matrix
 from thesis_lib.persistence import compute_intervals, persistence
-from thesis_lib.simplicial import boundary_matrix
 
 
 def _intervals(summands):

@@ -8,8 +8,8 @@ import pytest
 
 from thesis_lib.curvature import checks_theory as ct
 from thesis_lib.curvature.checks import hyperarea_gradient_fd, random_simplices
-from thesis_lib.curvature.exact import ellipsoid_point, hypersphere_point, hypersphere_quadrature
 from thesis_lib.meshes import sphere_hull
+from thesis_lib.surfaces import ellipsoid_point, hypersphere_point, hypersphere_quadrature
 
 
 def test_hodge_dual_follows_its_rule_and_is_the_cross_product():

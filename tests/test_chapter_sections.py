@@ -1,4 +1,4 @@
-"""The sections of the chapter 3 page (thesis_lib.curvature.chapter_sections) against independent
+"""The sections of the chapter 3 page (thesis_lib.chapters.curvature_sections) against independent
 computations: libigl's cotangent Laplacian and angle defects, closed forms (the volume of Sⁿ by the
 Gamma function, the area of a sphere, the thesis's torus formulas) and Monte Carlo."""
 
@@ -10,12 +10,12 @@ import igl
 import numpy as np
 import pytest
 
-from thesis_lib.curvature import chapter_sections as cs
+from thesis_lib.chapters import curvature_sections as cs
 from thesis_lib.curvature import vertex_areas
-from thesis_lib.curvature.exact import hypersphere_point, hypersphere_quadrature
 from thesis_lib.lab.chapters import read_thesis
 from thesis_lib.lab.results import load, round_sig
 from thesis_lib.meshes import sphere_hull, torus_grid
+from thesis_lib.surfaces import hypersphere_point, hypersphere_quadrature
 
 
 @pytest.fixture(scope="module")

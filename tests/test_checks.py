@@ -20,8 +20,8 @@ from thesis_lib.curvature.checks import (
     random_simplices,
     thales_obtuse,
 )
-from thesis_lib.curvature.exact import torus_principal_curvatures_at
 from thesis_lib.meshes import sphere_hull, torus_grid
+from thesis_lib.surfaces import torus_principal_curvatures_at
 
 
 def test_barycentric_gradients_are_dual_to_the_edges():

@@ -1,4 +1,4 @@
-"""The numerical checks of §2.1.2 (complexes.checks), each against an independent computation:
+"""The numerical checks of §2.1.2 (chapters.complex_checks), each against an independent computation:
 brute-force enclosing circles, gudhi's flag and alpha complexes, scipy's Delaunay triangulation."""
 
 from __future__ import annotations
@@ -10,8 +10,7 @@ import numpy as np
 import pytest
 from scipy.spatial import Delaunay
 
-from thesis_lib.complexes import alpha, cech, delaunay, rips, witness
-from thesis_lib.complexes.checks import (
+from thesis_lib.chapters.complex_checks import (
     JungCheck,
     alpha_not_in_cech,
     barcodes_differing,
@@ -24,8 +23,9 @@ from thesis_lib.complexes.checks import (
     voronoi_nerve,
     weighted_alpha_losses,
 )
-from thesis_lib.filtration import Filtration
+from thesis_lib.complexes import alpha, cech, delaunay, rips, witness
 from thesis_lib.homology import betti_numbers
+from thesis_lib.homology.filtration import Filtration
 from thesis_lib.persistence import persistence
 
 

@@ -1,4 +1,4 @@
-"""The figures of §2.1–2.2 (graphics.complex_figures): what each draws, counted against the complexes."""
+"""The figures of §2.1–2.2 (chapters.complex_figures): what each draws, counted against the complexes."""
 
 from __future__ import annotations
 
@@ -11,9 +11,7 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 from matplotlib.patches import Circle, Polygon  # noqa: E402
 
-from thesis_lib.complexes import alpha, cech, delaunay, rips  # noqa: E402
-from thesis_lib.datasets import RP2_LABELS, rp2  # noqa: E402
-from thesis_lib.graphics.complex_figures import (  # noqa: E402
+from thesis_lib.chapters.complex_figures import (
     NOT_A_COMPLEX,
     draw_complex,
     plot_alpha_complexes,
@@ -24,8 +22,10 @@ from thesis_lib.graphics.complex_figures import (  # noqa: E402
     plot_voronoi_delaunay,
     plot_witness_complex,
 )
+from thesis_lib.complexes import alpha, cech, delaunay, rips  # noqa: E402
+from thesis_lib.datasets import RP2_LABELS, rp2  # noqa: E402
 from thesis_lib.homology import betti_numbers  # noqa: E402
-from thesis_lib.morse import rp2_chart  # noqa: E402
+from thesis_lib.morse.examples import rp2_chart  # noqa: E402
 
 FIG22 = [(0, 1, 2, 3), (3, 4), (1, 2, 5)]
 CIRCLE = [(0, 1), (1, 2), (0, 2)]

@@ -11,7 +11,7 @@ import sympy
 from helpers import sympy_invariants
 
 from thesis_lib._core import modular_smith, sparse_elimination
-from thesis_lib._elimination import LIMIT
+from thesis_lib.homology._elimination import LIMIT
 
 I64 = np.int64
 
@@ -213,6 +213,6 @@ def test_markowitz_terminates_when_a_row_only_reaches_a_column_set_aside():
     a[np.arange(2, 52), np.arange(2, 52)] = 2
     rank, rows, core_rows, ptr, cols, vals = markowitz(csc(a), 0)
     assert rank == 0 and core_rows.size == 52
-    from thesis_lib.smith import smith_normal_form
+    from thesis_lib.homology.smith import smith_normal_form
 
     assert smith_normal_form(a).tolist() == [1] + [2] * 50 + [2**32]

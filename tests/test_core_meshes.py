@@ -11,9 +11,10 @@ import numpy as np
 import pytest
 
 from thesis_lib._core import crust_trimming, discrete_gradient, pseudomanifold, triangle_geometry, vertex_areas
-from thesis_lib.meshes import crust, sample_sphere, torus_grid
-from thesis_lib.meshes.crust import crust_candidates
-from thesis_lib.meshes.crust_trimming import _ridge_structure
+from thesis_lib.meshes import sample_sphere, torus_grid
+from thesis_lib.reconstruction import crust
+from thesis_lib.reconstruction.crust import crust_candidates
+from thesis_lib.reconstruction.crust_trimming import _ridge_structure
 
 I64 = np.int64
 

@@ -9,7 +9,7 @@ import pytest
 
 from thesis_lib._core import explicit_cohomology, reduction
 from thesis_lib.complexes import rips
-from thesis_lib.filtration import Filtration
+from thesis_lib.homology.filtration import Filtration
 from thesis_lib.persistence import compute_intervals, persistence
 from thesis_lib.persistence.kernels import KEEP_REDUCED, KEEP_V, KEEP_V_ALL, reduce_columns
 

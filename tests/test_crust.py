@@ -6,21 +6,16 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from thesis_lib.curvature import mean_curvature
-from thesis_lib.curvature.exact import torus_uv
 from thesis_lib.meshes import (
-    ball_pivoting,
-    crust,
-    crust_candidates,
-    estimate_normals,
     euler_characteristic,
-    extract_manifold,
     facet_degrees,
-    poles,
     sample_catenoid,
     sample_sphere,
     sample_torus,
     torus_grid,
 )
+from thesis_lib.reconstruction import ball_pivoting, crust, crust_candidates, estimate_normals, extract_manifold, poles
+from thesis_lib.surfaces import torus_uv
 
 
 def _coherent(f):
@@ -82,7 +77,7 @@ def _candidates_by_definition(pts, theta=np.pi / 4):
     """Steps 3-4 as ABK98 state them: Qhull's Delaunay of S ∪ P, triangles with sample vertices."""
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes.crust_geometry import _normal_filter
+    from thesis_lib.reconstruction.crust_geometry import _normal_filter
 
     pp, pm = poles(pts)
     n = len(pts)
@@ -135,7 +130,7 @@ def test_crust_of_chosen_points_is_closed(n):
     one diagonal per quad and leave no boundary."""
     from scipy.spatial import Delaunay
 
-    from thesis_lib.meshes.crust_geometry import circumcentres
+    from thesis_lib.reconstruction.crust_geometry import circumcentres
 
     vertices, grid_faces = torus_grid(n, R=10.0, r=5.0)
     flat = ~circumcentres(vertices[Delaunay(vertices).simplices])[1]
@@ -210,7 +205,7 @@ def test_bad_input():
 
 
 def test_reconstruct_surface_dispatch():
-    from thesis_lib.meshes import reconstruct_surface
+    from thesis_lib.reconstruction import reconstruct_surface
 
     pts = sample_torus(1500, R=10.0, r=5.0, seed=3)
     assert np.array_equal(reconstruct_surface(pts, algorithm="crust"), crust(pts))

@@ -7,9 +7,11 @@ from scipy.spatial import Delaunay
 
 from thesis_lib.curvature import mean_curvature
 from thesis_lib.homology import homology
-from thesis_lib.meshes import crust, sample_sphere, sample_torus
-from thesis_lib.meshes.crust_geometry import _normal_filter, circumcentres, poles_from_delaunay
-from thesis_lib.meshes.crust_nd import (
+from thesis_lib.meshes import sample_sphere, sample_torus
+from thesis_lib.meshes.sampling import sample_n_catenoid
+from thesis_lib.reconstruction import crust
+from thesis_lib.reconstruction.crust_geometry import _normal_filter, circumcentres, poles_from_delaunay
+from thesis_lib.reconstruction.crust_nd import (
     ReconstructionError,
     _delaunay,
     _far,
@@ -18,7 +20,6 @@ from thesis_lib.meshes.crust_nd import (
     manifold_report,
     manifold_vertices,
 )
-from thesis_lib.meshes.sampling import sample_n_catenoid
 
 
 def _oriented_set(simplices):
@@ -62,7 +63,7 @@ def test_n2_equals_the_3d_crust(seed):
 
 
 def test_n2_candidates_equal_the_3d_crust():
-    from thesis_lib.meshes import crust_candidates
+    from thesis_lib.reconstruction import crust_candidates
 
     pts = sample_torus(800, R=10.0, r=5.0, seed=9)
     assert np.array_equal(crust_nd_candidates(pts), crust_candidates(pts))

@@ -1,4 +1,4 @@
-"""The chapter 3 figures (thesis_lib.graphics.curvature_figures): what they draw against the
+"""The chapter 3 figures (thesis_lib.chapters.curvature_figures): what they draw against the
 thesis's formulas and an independent Thales test."""
 
 from __future__ import annotations
@@ -11,7 +11,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.graphics import curvature_figures as cf  # noqa: E402
+from thesis_lib.chapters import curvature_figures as cf  # noqa: E402
 from thesis_lib.graphics import style  # noqa: E402
 
 

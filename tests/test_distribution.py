@@ -220,9 +220,9 @@ def test_installed_package_computes():
     import thesis_lib
     import thesis_lib._core as core
     from thesis_lib.curvature import mean_curvature
-    from thesis_lib.curvature.exact import torus_mean_curvature_at
     from thesis_lib.datasets import torus_grid
     from thesis_lib.persistence import rips_persistence
+    from thesis_lib.surfaces import torus_mean_curvature_at
 
     assert re.fullmatch(r"\d+\.\d+\.\d+\S*", thesis_lib.__version__)
     modules = sorted({m.name for m in pkgutil.iter_modules(core.__path__)})

@@ -2,7 +2,7 @@
 
 Scope: the public names (each ``__all__``, and the public methods and properties of the classes it
 exports) of ``thesis_lib.complexes``, ``thesis_lib.persistence``, ``thesis_lib.homology``,
-``thesis_lib.curvature`` (with the exact references of ``curvature.exact``) and ``thesis_lib.morse``.
+``thesis_lib.curvature``, ``thesis_lib.surfaces`` (its exact references) and ``thesis_lib.morse``.
 Each module that defines one of them, and every other module of those subpackages, has its
 doctests run (one test per module, so a failure names its module), and each such name must show
 at least one ``>>>`` example.  Plotting examples run on matplotlib's Agg backend.
@@ -22,16 +22,14 @@ PACKAGES = (
     "thesis_lib.persistence",
     "thesis_lib.homology",
     "thesis_lib.curvature",
+    "thesis_lib.surfaces",
     "thesis_lib.morse",
 )
 
 
 def exported_names(package: str) -> list[str]:
     module = importlib.import_module(package)
-    names = list(module.__all__)
-    if package == "thesis_lib.curvature":  # re-exported with a star from curvature.exact
-        names += [n for n in importlib.import_module("thesis_lib.curvature.exact").__all__ if n not in names]
-    return names
+    return list(module.__all__)
 
 
 def public_targets(package: str) -> dict[str, object]:

@@ -1,4 +1,4 @@
-"""Figure 2.11 (thesis_lib.graphics.filtration_figure): the steps of the example filtration, listed and drawn."""
+"""Figure 2.11 (thesis_lib.chapters.filtration_figure): the steps of the example filtration, listed and drawn."""
 
 from __future__ import annotations
 
@@ -10,15 +10,16 @@ import pytest
 from matplotlib.colors import to_rgba
 from matplotlib.patches import Polygon
 
-from thesis_lib.datasets import example_filtration, module_filtration
-from thesis_lib.datasets.filtrations import EXAMPLE_NAMES
-from thesis_lib.graphics import filtration_figure, style
-from thesis_lib.graphics.filtration_figure import (
+from thesis_lib.chapters import filtration_figure
+from thesis_lib.chapters.filtration_figure import (
     FIGURE_2_11_POSITIONS,
     filtration_steps,
     plot_filtration_steps,
     steps_text,
 )
+from thesis_lib.datasets import example_filtration, module_filtration
+from thesis_lib.datasets.filtrations import EXAMPLE_NAMES
+from thesis_lib.graphics import style
 
 matplotlib.use("Agg")
 

@@ -24,7 +24,8 @@ from thesis_lib.curvature import areas, gaussian_curvature, mean_curvature, vert
 from thesis_lib.datasets import rp2
 from thesis_lib.homology import homology
 from thesis_lib.meshes.grids import torus_grid
-from thesis_lib.morse import morse_homology, morse_matching
+from thesis_lib.morse.matching import morse_matching
+from thesis_lib.morse.morse_complex import morse_homology
 from thesis_lib.multiparameter import fibered_barcode, hilbert_function, radius_curvature_bifiltration, rank_invariant
 from thesis_lib.persistence import RipsDiagrams, compute_intervals, persistence, rips_persistence
 from thesis_lib.persistence.implicit import rips_graph

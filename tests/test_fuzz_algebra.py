@@ -13,17 +13,16 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from thesis_lib.homology import betti_numbers, homology
-from thesis_lib.morse import (
+from thesis_lib.homology.smith import smith_normal_form
+from thesis_lib.morse.functions import (
     check_discrete_morse_function,
-    critical_counts,
     critical_simplices,
     discrete_morse_function,
     gradient_pairs,
-    is_acyclic,
-    morse_homology,
-    morse_matching,
 )
-from thesis_lib.smith import smith_normal_form
+from thesis_lib.morse.matching import critical_counts, morse_matching
+from thesis_lib.morse.morse_complex import morse_homology
+from thesis_lib.morse.vector_field import is_acyclic
 
 FUZZ = fuzz_settings(60)  # 100 times more with --fuzz-long
 

@@ -23,6 +23,7 @@ from hypothesis import strategies as st
 from thesis_lib import complexes as cx
 from thesis_lib import curvature as cv
 from thesis_lib import meshes as ms
+from thesis_lib import reconstruction as rc
 from thesis_lib.datasets import flat_torus, noisy_circle, two_circles, two_circles_intersections
 
 # ----------------------------------------------------------------------------- hostile values
@@ -195,11 +196,11 @@ MESH_CALLS = {
     "facet_degrees": lambda v, f, a: ms.facet_degrees(f),
     "is_closed_pseudomanifold": lambda v, f, a: ms.is_closed_pseudomanifold(f),
     "faces_of": lambda v, f, a: ms.faces_of(f, k=a),
-    "crust": lambda v, f, a: ms.crust(v),
-    "crust_theta": lambda v, f, a: ms.crust(v, theta=a),
-    "extract_manifold": lambda v, f, a: ms.extract_manifold(v, f),
-    "poles": lambda v, f, a: ms.poles(v, far=a),
-    "estimate_normals": lambda v, f, a: ms.estimate_normals(v, k=a),
+    "crust": lambda v, f, a: rc.crust(v),
+    "crust_theta": lambda v, f, a: rc.crust(v, theta=a),
+    "extract_manifold": lambda v, f, a: rc.extract_manifold(v, f),
+    "poles": lambda v, f, a: rc.poles(v, far=a),
+    "estimate_normals": lambda v, f, a: rc.estimate_normals(v, k=a),
 }
 GRID_CALLS = {
     "freudenthal": lambda a, b: ms.freudenthal((a, b)),
@@ -214,7 +215,7 @@ GRID_CALLS = {
     "sample_sphere": lambda a, b: ms.sample_sphere(a, n_dims=b),
     "sample_catenoid": lambda a, b: ms.sample_catenoid(a, v_range=(b, 1.0)),
     "sphere_hull": lambda a, b: ms.sphere_hull(n_dims=b, n_points=a),
-    "cross_stars": lambda a, b: ms.cross_stars(lambda w: np.column_stack([w, w[:, :1]]), [[0.0, a]], step=b),
+    "cross_stars": lambda a, b: cv.cross_stars(lambda w: np.column_stack([w, w[:, :1]]), [[0.0, a]], step=b),
     "noisy_circle": lambda a, b: noisy_circle(a, noise=b),
     "two_circles": lambda a, b: two_circles(a, distance=b),
     "two_circles_intersections": lambda a, b: two_circles_intersections(distance=a),
@@ -240,7 +241,7 @@ def test_ball_pivoting_hostile_input_in_subprocess():
     # pymeshlab is C++: a crash there would take the test process down, so it runs on its own
     code = textwrap.dedent("""
         import numpy as np
-        from thesis_lib.meshes import ball_pivoting
+        from thesis_lib.reconstruction import ball_pivoting
         for case in ["nan", "flat", "duplicates", "two", "huge", "normals"]:
             rng = np.random.default_rng(0)
             pts = rng.normal(size=(40, 3))
@@ -277,7 +278,8 @@ def test_qhull_never_sees_huge_coordinates():
     # points scaled by a power of two.  In a subprocess, so that a crash cannot kill pytest.
     code = textwrap.dedent("""
         import numpy as np
-        from thesis_lib.meshes import convex_hull_surface, crust, poles, sample_sphere
+        from thesis_lib.meshes import convex_hull_surface, sample_sphere
+        from thesis_lib.reconstruction import crust, poles
         pts = sample_sphere(60, seed=0) * 2.0**500
         faces = crust(pts)
         assert len(faces) and faces.max() < len(pts)

@@ -7,7 +7,8 @@ import pytest
 
 from thesis_lib.complexes import rips
 from thesis_lib.homology import betti_numbers
-from thesis_lib.morse import critical_fractions, morse_reduce
+from thesis_lib.morse.gradients_compared import critical_fractions
+from thesis_lib.morse.reduction import morse_reduce
 from thesis_lib.persistence import apparent_pairs
 
 

@@ -10,8 +10,6 @@ from helpers import THESIS_M2, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from thesis_lib._elimination import markowitz_eliminate
-from thesis_lib._modular import dense_invariants
 from thesis_lib.datasets import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
 from thesis_lib.homology import (
     betti_numbers,
@@ -20,8 +18,10 @@ from thesis_lib.homology import (
     homology,
     simplex_counts,
 )
-from thesis_lib.simplicial import closure
-from thesis_lib.smith import dense_smith_diagonal, reduce_matrix
+from thesis_lib.homology._elimination import markowitz_eliminate
+from thesis_lib.homology._modular import dense_invariants
+from thesis_lib.homology.simplicial import closure
+from thesis_lib.homology.smith import dense_smith_diagonal, reduce_matrix
 
 # ------------------------------------------------------------------ random complexes
 

@@ -24,7 +24,7 @@ from hypothesis import strategies as st
 from thesis_lib import complexes as cx
 from thesis_lib._validate import check_seed
 from thesis_lib.homology import homology
-from thesis_lib.morse import morse_matching
+from thesis_lib.morse.matching import morse_matching
 from thesis_lib.persistence import Barcode
 from thesis_lib.persistence.implicit import rips_persistence
 

@@ -15,8 +15,8 @@ from thesis_lib.applications.range_images import sample_patches, synthetic_range
 from thesis_lib.complexes import build_filtration
 from thesis_lib.curvature.checks import random_simplices
 from thesis_lib.meshes.sampling import sample_n_catenoid
-from thesis_lib.morse import morse_matching
 from thesis_lib.morse.examples import experiment_complex
+from thesis_lib.morse.matching import morse_matching
 from thesis_lib.persistence import RipsDiagrams
 
 BAD_SEEDS = [True, False, [1, 2], np.array([1]), np.array(3), 1.5, 2.0, "1", -1, 1j, b"1"]

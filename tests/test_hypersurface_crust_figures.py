@@ -1,4 +1,4 @@
-"""The figures of the Crust in R⁴ (graphics.hypersurface_crust_figures)."""
+"""The figures of the Crust in R⁴ (chapters.hypersurface_crust_figures)."""
 
 from __future__ import annotations
 
@@ -10,12 +10,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.graphics.hypersurface_crust_figures import (  # noqa: E402
+from thesis_lib.chapters.hypersurface_crust_figures import (
     crop_to_drawing,
     plot_crust_error_curves,
     plot_hyperplane_slices,
 )
-from thesis_lib.meshes.hypersurface_study import crust_curvature_errors  # noqa: E402
+from thesis_lib.chapters.hypersurface_study import crust_curvature_errors  # noqa: E402
 
 
 def test_the_crop_is_the_box_of_every_drawing_plus_a_margin():

@@ -1,4 +1,4 @@
-"""The figures of the hypersurface experiment (graphics.hypersurface_figures)."""
+"""The figures of the hypersurface experiment (chapters.hypersurface_figures)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from thesis_lib.graphics.hypersurface_figures import (  # noqa: E402
+from thesis_lib.chapters.hypersurface_figures import (
     THESIS_CATENOID_RANGE,
     plot_catenoid_estimates,
     plot_sphere_estimates,

@@ -1,4 +1,4 @@
-"""Theorem 3.18 on the Crust in R⁴ (meshes.hypersurface_study): one run's records and text, the error curves."""
+"""Theorem 3.18 on the Crust in R⁴ (chapters.hypersurface_study): one run's records and text, the error curves."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import textwrap
 import numpy as np
 import pytest
 
-from thesis_lib.meshes.hypersurface_study import (
+from thesis_lib.chapters.hypersurface_study import (
     CrustErrorCurve,
     crust_curvature_errors,
     crust_error_curve,

@@ -8,12 +8,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from thesis_lib import datasets
-from thesis_lib.curvature import simplex_hyperareas
-from thesis_lib.curvature.exact import catenoid_point, hypersphere_point, torus_uv
+from thesis_lib.curvature import cross_stars, neighbour_grid_mean_curvature, simplex_hyperareas
 from thesis_lib.meshes import (
     catenoid_freudenthal,
     convex_hull_surface,
-    cross_stars,
     euler_characteristic,
     facet_degrees,
     freudenthal,
@@ -21,7 +19,6 @@ from thesis_lib.meshes import (
     hypersphere_freudenthal,
     is_closed_pseudomanifold,
     merge_coincident,
-    neighbour_grid_mean_curvature,
     sample_catenoid,
     sample_sphere,
     sample_torus,
@@ -29,6 +26,7 @@ from thesis_lib.meshes import (
     torus_chosen_points,
     torus_grid,
 )
+from thesis_lib.surfaces import catenoid_point, hypersphere_point, torus_uv
 
 
 def _signed_volumes(params, simplices):
@@ -177,7 +175,7 @@ def test_cross_star_stencil():
     Hc = neighbour_grid_mean_curvature(catenoid_point, np.array([[0.0, 0.0, 0.0], [1.0, -0.9, 0.5]]), step=0.05)
     assert np.all(Hc < 2e-4)
     # the surface case: |H| of the torus from the 4-neighbour star
-    from thesis_lib.curvature.exact import torus_mean_curvature, torus_point
+    from thesis_lib.surfaces import torus_mean_curvature, torus_point
 
     uv = np.array([[0.3, 0.4], [1.0, 2.0]])
     Ht = neighbour_grid_mean_curvature(lambda a: torus_point(a[:, 0], a[:, 1]), uv, step=0.01)
@@ -222,7 +220,8 @@ def test_hangs_are_refused_up_front():
 
 
 def test_raw_errors_become_clear_errors():
-    from thesis_lib.meshes import crust, extract_manifold, orient_outward
+    from thesis_lib.meshes import orient_outward
+    from thesis_lib.reconstruction import crust, extract_manifold
 
     x = np.eye(3)
     # out-of-range and negative indices were IndexError (or silently wrapped)

@@ -14,34 +14,35 @@ from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 
 from thesis_lib.complexes.rips import rips
 from thesis_lib.datasets import dunce_hat, klein_bottle, rp2, sphere, torus
-from thesis_lib.filtration import Filtration
 from thesis_lib.homology import homology
-from thesis_lib.morse import (
-    RP2_FACETS,
+from thesis_lib.homology.filtration import Filtration
+from thesis_lib.morse import RP2_FACETS
+from thesis_lib.morse.examples import rp2_gradient_field
+from thesis_lib.morse.flow import (
     boundary_operator,
     cells,
-    chain_complex_homology,
-    check_discrete_morse_function,
-    check_vector_field,
-    critical_cells,
-    critical_counts,
-    critical_simplices,
-    discrete_morse_function,
-    find_closed_vpath,
     gradient_flow,
     gradient_matrix,
+    is_flow_invariant,
+    stabilised_flow,
+)
+from thesis_lib.morse.functions import (
+    check_discrete_morse_function,
+    critical_simplices,
+    discrete_morse_function,
     gradient_pairs,
+    is_discrete_morse_function,
+    sublevel_complex,
+)
+from thesis_lib.morse.matching import critical_counts, morse_matching
+from thesis_lib.morse.morse_complex import chain_complex_homology, morse_boundary, morse_homology
+from thesis_lib.morse.vector_field import (
+    check_vector_field,
+    critical_cells,
+    find_closed_vpath,
     gradient_paths,
     hasse_diagram,
     is_acyclic,
-    is_discrete_morse_function,
-    is_flow_invariant,
-    morse_boundary,
-    morse_homology,
-    morse_matching,
-    rp2_gradient_field,
-    stabilised_flow,
-    sublevel_complex,
     vpaths,
 )
 

@@ -1,4 +1,4 @@
-"""The tables and checks of the chapter 4 page (thesis_lib.morse.chapter_tables) and its two new figures."""
+"""The tables and checks of the chapter 4 page (thesis_lib.chapters.morse_tables) and its two new figures."""
 
 from __future__ import annotations
 
@@ -16,26 +16,16 @@ import pytest  # noqa: E402
 from matplotlib.text import Annotation  # noqa: E402
 
 from thesis_lib import datasets  # noqa: E402
+from thesis_lib.chapters import morse_tables as tables  # noqa: E402
 from thesis_lib.homology import homology  # noqa: E402
-from thesis_lib.morse import (  # noqa: E402
-    RP2_FACETS,
-    cells,
-    checks,
-    critical_counts,
-    critical_simplices,
-    discrete_morse_function,
-    example_4_45,
-    gradient_flow,
-    hasse_figure,
-    morse_boundary,
-    morse_matching,
-    rp2_gradient_field,
-    sublevel_complex,
-    torus_critical_points,
-    torus_height_figure,
-    torus_height_hessian,
-)
-from thesis_lib.morse import chapter_tables as tables  # noqa: E402
+from thesis_lib.morse import RP2_FACETS, checks
+from thesis_lib.morse.examples import example_4_45, rp2_gradient_field
+from thesis_lib.morse.flow import cells, gradient_flow
+from thesis_lib.morse.functions import critical_simplices, discrete_morse_function, sublevel_complex
+from thesis_lib.morse.matching import critical_counts, morse_matching
+from thesis_lib.morse.morse_complex import morse_boundary
+from thesis_lib.morse.plotting import hasse_figure, torus_height_figure
+from thesis_lib.morse.smooth import torus_critical_points, torus_height_hessian
 
 GOOD = {(0,): 0, (1,): 2, (2,): 3, (0, 1): 1.5, (1, 2): 2.5, (0, 2): 5}
 BAD = {(0,): 1, (1,): 2, (2,): 5, (0, 1): 0, (1, 2): 3, (0, 2): 4}

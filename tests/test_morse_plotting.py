@@ -10,20 +10,12 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 from thesis_lib.homology import homology  # noqa: E402
-from thesis_lib.morse import (  # noqa: E402
-    COMPLEX_NAMES,
-    RP2_FACETS,
-    draw_gradient_field,
-    draw_hasse_diagram,
-    example_4_45,
-    experiment_complex,
-    is_acyclic,
-    morse_homology,
-    morse_matching,
-    rp2_chart,
-    rp2_gradient_field,
-    spectral_layout,
-)
+from thesis_lib.morse import COMPLEX_NAMES, RP2_FACETS
+from thesis_lib.morse.examples import example_4_45, experiment_complex, rp2_chart, rp2_gradient_field
+from thesis_lib.morse.matching import morse_matching
+from thesis_lib.morse.morse_complex import morse_homology
+from thesis_lib.morse.plotting import draw_gradient_field, draw_hasse_diagram, spectral_layout
+from thesis_lib.morse.vector_field import is_acyclic
 
 
 def test_rp2_chart_is_a_disc_picture_of_rp2():

@@ -11,19 +11,12 @@ from thesis_lib.complexes import Filtration
 from thesis_lib.complexes.rips import rips
 from thesis_lib.datasets import example_filtration, torus
 from thesis_lib.homology import homology
-from thesis_lib.morse import (
-    chain_persistence,
-    critical_counts,
-    filtration_matching,
-    is_acyclic,
-    lower_star_filtration,
-    morse_homology,
-    morse_matching,
-    morse_reduce,
-    reduced_persistence,
-)
-from thesis_lib.persistence import Barcode, persistence
-from thesis_lib.simplicial import boundary_matrix
+from thesis_lib.homology.simplicial import boundary_matrix
+from thesis_lib.morse.matching import critical_counts, morse_matching
+from thesis_lib.morse.morse_complex import morse_homology
+from thesis_lib.morse.reduction import filtration_matching, lower_star_filtration, morse_reduce, reduced_persistence
+from thesis_lib.morse.vector_field import is_acyclic
+from thesis_lib.persistence import Barcode, chain_persistence, persistence
 
 seeds = st.integers(0, 2**31 - 1)
 

@@ -7,7 +7,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from thesis_lib.morse import (
+from thesis_lib.morse.smooth import (
     morse_index,
     morse_inequalities,
     rp2_morse_complex,

@@ -270,7 +270,8 @@ def test_using_an_extra_says_which_to_install():
         import numpy as np
         from thesis_lib.applications import proteins
         from thesis_lib.graphics import style
-        from thesis_lib.meshes import ball_pivoting, sphere_hull, to_pyvista
+        from thesis_lib.meshes import sphere_hull, to_pyvista
+        from thesis_lib.reconstruction import ball_pivoting
         from thesis_lib.persistence import Barcode, plot_barcode, rips_persistence
 
         barcode = rips_persistence(np.array([[0.0, 0.0], [1.0, 0.0]]), max_dim=1)

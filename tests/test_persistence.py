@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from thesis_lib.complexes import Filtration
 from thesis_lib.datasets import example_filtration
+from thesis_lib.homology.simplicial import boundary_matrix, closure
 from thesis_lib.persistence import Barcode, compute_intervals, persistence
-from thesis_lib.simplicial import boundary_matrix, closure
 
 # ----------------------------------------------------------------------------- helpers
 

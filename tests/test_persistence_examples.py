@@ -18,7 +18,7 @@ from thesis_lib.datasets.filtrations import (
     EXAMPLE_NAMES,
     simplex_labels,
 )
-from thesis_lib.filtration import Filtration
+from thesis_lib.homology.filtration import Filtration
 from thesis_lib.persistence import Barcode, compute_intervals, examples, persistence
 from thesis_lib.persistence.examples import (
     CycleCheck,

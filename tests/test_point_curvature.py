@@ -7,10 +7,10 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
-from thesis_lib.curvature.exact import torus_gaussian_curvature_at, torus_mean_curvature_at
+from thesis_lib.curvature.point_curvature import point_curvature
 from thesis_lib.curvature.pointcloud import knn_curvature, knn_shape_operator
 from thesis_lib.meshes import sample_sphere, sample_torus
-from thesis_lib.meshes.point_curvature import point_curvature
+from thesis_lib.surfaces import torus_gaussian_curvature_at, torus_mean_curvature_at
 
 
 @pytest.mark.parametrize("dim, tol", [(2, 0.15), (3, 0.05), (4, 0.05)])
@@ -101,7 +101,7 @@ def test_neighbour_weights_change_the_fit_and_other_refusals():
 
 def test_mixed_area_off_r3_is_refused_before_reconstruction(monkeypatch):
     """The refusal of area="mixed" off R³ comes before the Crust runs (no wasted reconstruction)."""
-    import thesis_lib.meshes.point_curvature as module
+    import thesis_lib.curvature.point_curvature as module
 
     def no_crust(*args, **kwargs):
         raise AssertionError("the Crust ran before the area was checked")

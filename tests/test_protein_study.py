@@ -1,4 +1,4 @@
-"""thesis_lib.applications.protein_study: rings and voids of the thesis's proteins (§2.2.2, §2.4.2,
+"""thesis_lib.chapters.protein_study: rings and voids of the thesis's proteins (§2.2.2, §2.4.2,
 Examples 2.42 and 2.43), cross-checked against GUDHI's weighted alpha complex and direct counts."""
 
 import matplotlib
@@ -9,7 +9,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.applications.protein_study import (  # noqa: E402
+from thesis_lib.applications.proteins import read_pdb, vdw_radii, void_count_readings  # noqa: E402
+from thesis_lib.chapters.protein_study import (
     THESIS_1ECA_VOIDS,
     VoidSurvey,
     load_structure,
@@ -23,7 +24,7 @@ from thesis_lib.applications.protein_study import (  # noqa: E402
     void_readings,
     void_survey,
 )
-from thesis_lib.applications.proteins import read_pdb, vdw_radii, void_count_readings  # noqa: E402
+from thesis_lib.lab.data import resolve_structure
 from thesis_lib.lab.paths import shared_dir  # noqa: E402
 
 PDB = shared_dir() / "data" / "pdb"
@@ -57,7 +58,7 @@ def _alive(intervals, value):
 
 
 def test_a_structure_is_read_pdb_with_vdw_radii(grm):
-    atoms = read_pdb("1grm")
+    atoms = read_pdb(resolve_structure("1grm"))
     radii, fallback = vdw_radii(atoms, set="protor", return_fallback=True)
     np.testing.assert_array_equal(grm.atoms.coords, atoms.coords)
     np.testing.assert_array_equal(grm.radii, radii)

@@ -6,14 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thesis_lib.applications.proteins import (
-    Atoms,
-    discretise_intervals,
-    read_pdb,
-    resolve_structure,
-    vdw_radii,
-    weighted_points,
-)
+from thesis_lib.applications.proteins import Atoms, discretise_intervals, read_pdb, vdw_radii, weighted_points
+from thesis_lib.lab.data import resolve_structure
 from thesis_lib.lab.paths import shared_dir
 
 PDB = shared_dir() / "data" / "pdb"
@@ -102,7 +96,9 @@ def test_hetero_false_drops_ligands():
 def test_name_resolution():
     path = resolve_structure("1grm")
     assert path.name.lower().endswith("1grm.pdb")
-    assert len(read_pdb("1grm")) == 272
+    assert len(read_pdb(path)) == 272
+    with pytest.raises(ValueError, match="unknown structure"):
+        resolve_structure("9zzz")
 
 
 # ----------------------------------------------------------------------------- corrupt input
@@ -136,8 +132,8 @@ def test_no_atoms_binary_missing_and_bad_arguments(tmp_path):
         read_pdb(p)
     with pytest.raises(ValueError, match="no PDB file"):
         read_pdb(tmp_path / "missing.pdb")
-    with pytest.raises(ValueError, match="unknown structure"):
-        read_pdb("9zzz")
+    with pytest.raises(ValueError, match=r"no PDB file at 1grm \(a PDB id is found by thesis_lib.lab.data.resolve_"):
+        read_pdb("1grm")
     with pytest.raises(ValueError, match="model"):
         read_pdb(PDB / "1grm.pdb", model=6)
     with pytest.raises(ValueError, match="model"):

@@ -19,7 +19,7 @@ from thesis_lib.complexes.realization import (
     realization_failures,
 )
 from thesis_lib.datasets import rp2
-from thesis_lib.morse import rp2_chart
+from thesis_lib.morse.examples import rp2_chart
 
 
 @pytest.mark.parametrize("n, d", [(1, 0), (5, 1), (7, 2), (6, 5), (4, 9)])

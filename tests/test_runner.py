@@ -29,8 +29,8 @@ from lab_helpers import (
 
 from thesis_lib.lab import cli as lab_cli
 from thesis_lib.lab import execute, runner
+from thesis_lib.lab.experiments import ParameterError
 from thesis_lib.lab.results import DEFAULT_RUN_ENV
-from thesis_lib.lab.runner import ParameterError
 from thesis_lib.lab.sweep import sweep
 
 TOY_DEFAULTS = {"n": 3, "x": 0.5, "label": "a", "flag": False, "sizes": [60, 100], "fail": False,

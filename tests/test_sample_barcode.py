@@ -1,4 +1,4 @@
-"""The sample-beside-barcode figure of the reconstruction experiments (graphics.sample_barcode)."""
+"""The sample-beside-barcode figure of the reconstruction experiments (chapters.sample_barcode)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.graphics.sample_barcode import plot_sample_and_barcode  # noqa: E402
+from thesis_lib.chapters.sample_barcode import plot_sample_and_barcode  # noqa: E402
 from thesis_lib.persistence import Barcode  # noqa: E402
 
 

@@ -51,7 +51,7 @@ DATA_ARGUMENTS = {
     "complexes.triangulation.regular_triangulation": ("points", "weights"),
     "datasets.filtrations.module_filtration": ("summands",),
     "datasets.filtrations.named_chain": ("terms",),
-    "filtration.Filtration": ("simplices", "values"),
+    "homology.filtration.Filtration": ("simplices", "values"),
     "lab.bench.scaling_figure": ("topic",),
     "lab.chapters.read_thesis": ("path",),
     "lab.cli.main": ("argv",),
@@ -74,7 +74,7 @@ DATA_ARGUMENTS = {
     "lab.tables.labelled_grid": ("values",),
     "lab.tables.markdown_table": ("titles", "rows"),
     "lab.tables.row": ("cells",),
-    "meshes.pivoting.ball_pivoting": ("points", "normals"),
+    "reconstruction.pivoting.ball_pivoting": ("points", "normals"),
     "meshes.plotting.render_mesh": ("vertices", "simplices", "scalars"),
     "meshes.topology.faces_of": ("simplices",),
     "morse.plotting.draw_hasse_diagram": ("ax", "simplices", "pairs"),
@@ -88,7 +88,7 @@ DATA_ARGUMENTS = {
     "persistence.implicit.rips_persistence": ("points",),
     "persistence.plotting.plot_barcode": ("barcode",),
     "persistence.plotting.plot_diagram": ("barcode",),
-    "smith.reduce_checked": ("matrix",),
+    "homology.smith.reduce_checked": ("matrix",),
 }
 
 #: callables whose signature another library fixes: scikit-learn's estimator API, jupyter_client's
@@ -110,9 +110,9 @@ REMOVED_NAMES = frozenset({"kind", "faces", "eps", "epsilon", "kappa", "p", "nv"
 METHOD_USERS = frozenset({
     "curvature.mean.mean_curvature",
     "curvature.mean.mean_curvature_vector",
-    "meshes.stencil.neighbour_grid_mean_curvature",
-    "meshes.torus_study.grid_curvature_errors",
-    "meshes.torus_study.random_torus_run",
+    "curvature.stencil.neighbour_grid_mean_curvature",
+    "chapters.torus_study.grid_curvature_errors",
+    "chapters.torus_study.random_torus_run",
     "morse.vector_field.is_acyclic",
 })
 

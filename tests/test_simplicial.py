@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from thesis_lib._validate import MAX_EXACT_PRIME, check_coefficients
-from thesis_lib.simplicial import boundary_matrix, closure
+from thesis_lib.homology.simplicial import boundary_matrix, closure
 
 
 @settings(deadline=None, max_examples=300)

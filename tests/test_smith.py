@@ -1,4 +1,4 @@
-"""Tests for thesis_lib.smith: Smith normal form over Z and ranks over Z/p."""
+"""Tests for thesis_lib.homology.smith: Smith normal form over Z and ranks over Z/p."""
 
 import itertools
 
@@ -9,15 +9,10 @@ from helpers import THESIS_M2, pari_invariants, sympy_invariants
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from thesis_lib._elimination import markowitz_eliminate
-from thesis_lib._modular import dense_invariants
-from thesis_lib.simplicial import boundary_matrix, closure
-from thesis_lib.smith import (
-    dense_smith_diagonal,
-    rank_mod_p,
-    reduce_matrix,
-    smith_normal_form,
-)
+from thesis_lib.homology._elimination import markowitz_eliminate
+from thesis_lib.homology._modular import dense_invariants
+from thesis_lib.homology.simplicial import boundary_matrix, closure
+from thesis_lib.homology.smith import dense_smith_diagonal, rank_mod_p, reduce_matrix, smith_normal_form
 
 
 def staged_invariants(a, density: float) -> list[int]:
@@ -162,7 +157,7 @@ def test_huge_entries_match_sympy(m, n, seed, bits):
 def test_entries_divisible_by_the_first_crt_primes(primes, shape):
     """Matrices whose entries are all divisible by the first CRT primes (zero modulo each, an empty rank
     profile there; e.g. [[2²⁶ − 5]] modulo the first) get sympy's invariants."""
-    from thesis_lib._modular import crt_primes
+    from thesis_lib.homology._modular import crt_primes
 
     q = int(np.prod([int(x) for x in crt_primes(primes)], dtype=object))
     rng = np.random.default_rng(primes)

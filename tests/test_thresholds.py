@@ -5,13 +5,13 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from thesis_lib.curvature.exact import torus_gaussian_curvature_at
+from thesis_lib.curvature.point_curvature import point_curvature
 from thesis_lib.curvature.pointcloud import neighbour_mean
 from thesis_lib.datasets import two_circles, two_circles_intersections
 from thesis_lib.meshes import sample_torus
-from thesis_lib.meshes.point_curvature import point_curvature
 from thesis_lib.multiparameter import hilbert_function, radius_curvature_bifiltration
 from thesis_lib.multiparameter.thresholds import circles_run, first_at_least, torus_run
+from thesis_lib.surfaces import torus_gaussian_curvature_at
 
 
 def test_first_at_least_reads_the_first_grade():

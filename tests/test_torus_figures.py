@@ -1,4 +1,4 @@
-"""The figures of the torus experiment (graphics.torus_figures)."""
+"""The figures of the torus experiment (chapters.torus_figures)."""
 
 from __future__ import annotations
 
@@ -10,8 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from thesis_lib.curvature.exact import torus_mean_curvature  # noqa: E402
-from thesis_lib.graphics.torus_figures import (  # noqa: E402
+from thesis_lib.chapters.torus_figures import (
     ERROR_RANGE,
     TRIANGULATION_LABELS,
     plot_estimate_on_mesh,
@@ -20,6 +19,7 @@ from thesis_lib.graphics.torus_figures import (  # noqa: E402
     plot_mean_curvature_profile,
 )
 from thesis_lib.meshes import torus_chosen_points  # noqa: E402
+from thesis_lib.surfaces import torus_mean_curvature  # noqa: E402
 
 N = 6
 

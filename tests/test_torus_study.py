@@ -1,14 +1,11 @@
-"""The torus study of §3.4.1 (meshes.torus_study): chosen points, random samples, principal curvatures."""
+"""The torus study of §3.4.1 (chapters.torus_study): chosen points, random samples, principal curvatures."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from thesis_lib.curvature import mean_curvature
-from thesis_lib.curvature.exact import torus_mean_curvature, torus_outer_inner_ratio
-from thesis_lib.meshes import euler_characteristic, sample_torus, torus_chosen_points
-from thesis_lib.meshes.torus_study import (
+from thesis_lib.chapters.torus_study import (
     GridErrors,
     PrincipalCurvatureErrors,
     crust_grid_summary,
@@ -17,6 +14,9 @@ from thesis_lib.meshes.torus_study import (
     random_runs_table,
     random_torus_run,
 )
+from thesis_lib.curvature import mean_curvature
+from thesis_lib.meshes import euler_characteristic, sample_torus, torus_chosen_points
+from thesis_lib.surfaces import torus_mean_curvature, torus_outer_inner_ratio
 
 N_GRID = 20
 

@@ -12,7 +12,7 @@ from sympy.matrices.normalforms import smith_normal_form as sympy_snf
 
 from thesis_lib.datasets import dunce_hat, klein_bottle, rp2, sphere, torus
 from thesis_lib.homology import betti_numbers, group_latex, homology, universal_coefficient_betti
-from thesis_lib.smith import diagonal_text, smith_normal_form
+from thesis_lib.homology.smith import diagonal_text, smith_normal_form
 
 
 @pytest.mark.parametrize("make", [rp2, klein_bottle, torus, dunce_hat, partial(sphere, 2), partial(sphere, 3)])
@@ -58,7 +58,7 @@ def test_diagonal_text_against_sympys_smith_form(seed):
 
 def test_diagonal_text_of_example_2_21_and_bad_input():
     from thesis_lib.homology import boundary_matrices
-    from thesis_lib.simplicial import closure
+    from thesis_lib.homology.simplicial import closure
 
     mats = boundary_matrices(closure(rp2()))
     assert diagonal_text(smith_normal_form(mats[2])) == "1 (9 times), 2"

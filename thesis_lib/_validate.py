@@ -283,7 +283,14 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
     """Return ``points`` as a finite ``(n, d)`` float64 array, or raise naming the problem.
 
     Thesis: §2.1.2 (a point set X in R^d).
+
+    A :class:`Points` record is already parsed: its array is returned as it is, unless it may hold
+    duplicates that ``allow_duplicates=False`` refuses or has fewer than ``min_points`` rows.
     """
+    if isinstance(points, Points) and (allow_duplicates or points.distinct) and points.n >= min_points:
+        return points.array
+    if isinstance(points, Points):
+        points = points.array
     arr = float_array(points, kind="coordinates", message=f"{name} must be an (n, d) array of numbers")
     if arr.ndim != 2:
         raise ValueError(f"{name} must be an (n, d) array, got shape {arr.shape}")
@@ -358,6 +365,7 @@ class Points:
     array: np.ndarray
     exponent: int
     scaled: np.ndarray
+    distinct: bool = False  #: parsed with ``allow_duplicates=False``: no two rows are equal
 
     @property
     def n(self) -> int:
@@ -398,14 +406,17 @@ def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, 
     ``warn_square=True`` (the front doors ``rips``, ``rips_persistence``, ``RipsDiagrams`` and
     ``cech``) warns, once, when the array :func:`looks_like_distance_matrix`: it is read as n points
     in R^n (as ripser.py reads it, with a warning too), and a distance matrix has its own keyword.
+    A :class:`Points` record that satisfies the options is returned as it is.
     """
+    if isinstance(points, Points) and (allow_duplicates or points.distinct) and points.n >= min_points:
+        return points
     arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
     if warn_square and looks_like_distance_matrix(arr):
         n = arr.shape[0]
         warn_user(f"{name} is a square ({n}, {n}) array, symmetric with a zero diagonal: it is read as {n} points "
                   f"in R^{n}; a distance matrix goes to distance_matrix= (rips, rips_persistence)")
     e = power_of_two_scale(arr)
-    return Points(arr, e, arr if e == 0 else np.ascontiguousarray(scale_points(arr, e, name)))
+    return Points(arr, e, arr if e == 0 else np.ascontiguousarray(scale_points(arr, e, name)), not allow_duplicates)
 
 
 @dataclass(frozen=True, eq=False)
@@ -648,4 +659,43 @@ def check_simplices(simplices, n_vertices: int | None = None, name: str = "simpl
         if rep.any():
             row = int(np.argmax(rep))
             raise ValueError(f"{name}: row {row} {arr[row].tolist()} repeats a vertex")
+    return arr
+
+
+def check_torus_radii(R: float, r: float) -> tuple[float, float]:
+    """``(R, r)`` as floats, or ValueError unless 0 < r < R (a torus of revolution without
+    self-intersection).
+
+    Shared by the torus of §3.4.1 and the upright torus of Example 4.2.
+    Thesis: §3.4.1 (the torus with radii R > r).
+
+    Parameters
+    ----------
+    R : float
+        Distance from the centre of the tube to the axis of revolution.
+    r : float
+        Radius of the tube.
+
+    Returns
+    -------
+    R, r : float
+        The radii as Python floats.
+
+    Raises
+    ------
+    ValueError
+        Unless both are finite and 0 < r < R (also when either is not a number).
+    """
+    R, r = float(R), float(r)
+    if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
+        raise ValueError(f"torus radii need 0 < r < R (finite; R > r > 0), got R={R!r}, r={r!r}")
+    return R, r
+
+
+
+def finite_floats(name: str, x) -> np.ndarray:
+    """``x`` as a float64 array, or ValueError naming ``name`` when it holds NaN or infinite values."""
+    arr = np.asarray(x, dtype=np.float64)
+    if not np.all(np.isfinite(arr)):
+        raise ValueError(f"{name} contains NaN or infinite values")
     return arr

@@ -20,7 +20,6 @@ every coordinate record before biotite parses it:
 from __future__ import annotations
 
 import io
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -28,15 +27,13 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
-from ..filtration import Filtration
-from ..lab.paths import shared_dir
+from ..homology.filtration import Filtration
 
 __all__ = [
     "Atoms",
     "read_pdb",
     "vdw_radii",
     "weighted_points",
-    "resolve_structure",
     "protein_filtration",
     "discretise_intervals",
     "sample_barcode",
@@ -66,7 +63,6 @@ _OLD_NAMES = {
     ("GLN", "AE2"): "NE2",
 }
 
-_PDB_ID = re.compile(r"^[0-9][A-Za-z0-9]{3}$")
 
 
 @dataclass(frozen=True)
@@ -113,48 +109,6 @@ class Atoms:
 
 
 # --------------------------------------------------------------------------- reading
-def resolve_structure(path_or_name: str | Path) -> Path:
-    """Path of a PDB file given as a path or as a 4-character PDB id (``"1grm"``).
-
-    Thesis: §2.2.2 (the coordinates come from the Protein Data Bank).
-
-    Parameters
-    ----------
-    path_or_name : str or pathlib.Path
-        A file path, or a PDB id (a digit and three letters or digits).  An id is looked up through
-        the data layer :func:`thesis_lib.lab.data.path` (checked by sha256); when the manifest has no
-        entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
-
-    Returns
-    -------
-    pathlib.Path
-        An existing file.
-
-    Raises
-    ------
-    ValueError
-        No file at the path, an unknown id, or a data file whose sha256 does not match the manifest.
-    """
-    if isinstance(path_or_name, Path) or not _PDB_ID.match(str(path_or_name)):
-        path = Path(path_or_name)
-        if not path.is_file():
-            raise ValueError(f"no PDB file at {path}")
-        return path
-    name = str(path_or_name).lower()
-    from ..lab import data
-
-    for key in (name, f"pdb-{name}", f"{name}.pdb"):
-        try:
-            return data.path(key)
-        except (data.DataError, FileNotFoundError) as exc:
-            if "does not match its sha256" in str(exc):
-                raise ValueError(str(exc)) from None
-    fallback = shared_dir() / "data" / "pdb" / f"{name}.pdb"
-    if fallback.is_file():
-        return fallback
-    raise ValueError(f"unknown structure {path_or_name!r}: not in data/manifest.toml and no {fallback}")
-
-
 def _element_from_name(field: str) -> str:
     """Element of an atom from its 4-column name field (PDB columns 13–16)."""
     c13, c14 = field[0], field[1]
@@ -216,7 +170,7 @@ def _normalise(text: str, source: str) -> tuple[str, int]:
 
 
 def read_pdb(
-    path_or_name: str | Path,
+    path: str | Path,
     *,
     model: int = 1,
     hetero: bool = True,
@@ -230,7 +184,7 @@ def read_pdb(
 
     Parameters
     ----------
-    path_or_name : a file path or a PDB id such as ``"1grm"`` (see :func:`resolve_structure`).
+    path : a PDB file (a PDB id such as ``"1grm"`` is found by :func:`thesis_lib.lab.data.resolve_structure`).
     model : 1-based model number (NMR entries such as 1GRM hold several).
     hetero : keep HETATM groups (ligands such as HEM, SO4).  HETATM residues that are amino acids
         (D-amino acids, formyl-Val, ethanolamine of 1GRM) are kept either way.
@@ -257,7 +211,9 @@ def read_pdb(
         raise ValueError(f"model must be a positive integer, got {model!r}")
     if altloc not in ("first", "occupancy", "all"):
         raise ValueError(f"altloc must be 'first', 'occupancy' or 'all', got {altloc!r}")
-    path = resolve_structure(path_or_name)
+    path = Path(path)
+    if not path.is_file():
+        raise ValueError(f"no PDB file at {path} (a PDB id is found by thesis_lib.lab.data.resolve_structure)")
     try:
         text = path.read_text(encoding="ascii", errors="strict")
     except UnicodeDecodeError as exc:

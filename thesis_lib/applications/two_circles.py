@@ -18,7 +18,7 @@ import numpy.typing as npt
 
 from .._validate import as_points
 from ..complexes import build_filtration, rips
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from ..persistence import Barcode, long_bars, persistence
 
 __all__ = ["RipsRun", "WitnessRun", "rips_run", "witness_run", "witness_table", "rips_2_skeleton_size"]

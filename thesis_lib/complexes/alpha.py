@@ -19,9 +19,8 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import alpha_complex
-from ..filtration import Filtration
-from ..simplicial import facets, find_rows, row_keys
-from .delaunay import check_delaunay_size
+from ..homology.filtration import Filtration
+from ..homology.simplicial import facets, find_rows, row_keys
 from .orthoballs import attached, orthoballs
 from .predicates import UNIT
 from .scaling import unscale_values
@@ -122,7 +121,6 @@ def alpha(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> Filtra
     >>> np.round(a.values[1], 6).tolist(), np.round(a.values[2], 6).tolist()
     ([0.25, 0.25, 0.5, 0.36, 0.26], [0.5, 0.52])
     """
-    check_delaunay_size(points)
     geo, e = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))
     weighted = weights is not None

@@ -7,8 +7,8 @@ import numpy.typing as npt
 
 from .._core import miniball
 from .._validate import MAX_WORK, check_max_dim, check_radius, parse_points
-from ..filtration import Filtration
-from ..simplicial import facets, find_rows
+from ..homology.filtration import Filtration
+from ..homology.simplicial import facets, find_rows
 from ._flag import check_expansion, edges_within, expand_level, upper_csr
 from .rips import check_edges
 from .scaling import unscale_values

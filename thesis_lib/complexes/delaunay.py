@@ -12,50 +12,13 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import MAX_SIMPLICES, as_points, check_size
-from ..simplicial import closure
-from .triangulation import estimated_size, prepare_geometry, regular_triangulation, triangulate
+from ..homology.simplicial import closure
+from .triangulation import prepare_geometry, triangulate
 
-__all__ = ["delaunay", "regular_triangulation", "check_delaunay_size", "MAX_DELAUNAY_SIMPLICES"]
+__all__ = ["delaunay"]
 
 #: largest number of co-spherical points in one Delaunay cell we expand into all 2^k − 1 subsets
 MAX_CELL_VERTICES = 16
-
-#: budget of :func:`delaunay` and :func:`~thesis_lib.complexes.alpha` in R^5 and up: simplices of
-#: every dimension, estimated before the triangulation.  There each takes about 20–40 µs (exact
-#: predicates, faces, values; measured in R⁵–R⁷ on the build machine), so 10⁷ simplices are about
-#: 4 minutes; 400 points in R⁷ are 4·10⁷.  In R¹–R⁴ the vectorised path is far faster per simplex
-#: and the limit is ``MAX_SIMPLICES`` (memory).
-MAX_DELAUNAY_SIMPLICES = 10**7
-
-#: simplices of every dimension per top simplex of a Delaunay complex of uniform random points,
-#: measured (n = 3000 in R³ to n = 120 in R⁷); beyond R⁷ extrapolated by ×1.5 per dimension
-_FACES_PER_TOP = {1: 2.0, 2: 3.0, 3: 4.3, 4: 6.3, 5: 9.2, 6: 13.8, 7: 20.4}
-
-
-def check_delaunay_size(points: npt.ArrayLike) -> None:
-    """Refuse up front a Delaunay complex estimated above ``MAX_DELAUNAY_SIMPLICES`` simplices
-    (R^5 and up; ``MAX_SIMPLICES`` below).
-
-    Thesis: Definition 2.13 (the Delaunay complex; its size grows like n·c_d with c_d exponential
-    in d).
-
-    Parameters
-    ----------
-    points : array_like, shape (n, d)
-        The point cloud (validated as :func:`delaunay` does).
-
-    Raises
-    ------
-    ValueError
-        Naming the estimate (top simplices × faces per top simplex) and the budget.
-    """
-    n, d = as_points(points).shape
-    per_top = _FACES_PER_TOP.get(d, _FACES_PER_TOP[7] * 1.5 ** max(0, d - 7))
-    tops = estimated_size(n, d)
-    check_size(int(tops * per_top), f"simplices (estimated: {tops:,} top simplices × {per_top:g} faces each, for "
-               f"the Delaunay complex of {n:,} points in R^{d})",
-               limit=MAX_DELAUNAY_SIMPLICES if d >= 5 else MAX_SIMPLICES)
 
 
 def delaunay(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> list[tuple[int, ...]]:
@@ -98,7 +61,6 @@ def delaunay(points: npt.ArrayLike, weights: npt.ArrayLike | None = None) -> lis
     """
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
-    check_delaunay_size(points)
     geo, _ = prepare_geometry(points, weights)
     t = triangulate(geo)
     tri, ties = t.simplices, t.ties

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_seed
-from ..filtration import Filtration
+from .._validate import check_seed, parse_points
+from ..homology.filtration import Filtration
 from .landmarks import maxmin_landmarks, random_landmarks
 from .rips import rips
 from .witness import lazy_witness, witness
@@ -89,6 +89,7 @@ def build_filtration(
     if not isinstance(complex, str):
         raise ValueError(f"complex must be one of {COMPLEXES}, got {complex!r}")
     seed = check_seed(seed)  # checked for every complex, also where it is not used (a rips call)
+    points = parse_points(points, warn_square=True)  # parsed once: each construction takes the record
     if complex == "rips":
         return rips(points, max_radius=max_radius, max_dim=max_dim)
     if complex in ("witness", "lazy-witness"):

@@ -15,7 +15,7 @@ from .._validate import (
     parse_rips_input,
     warn_user,
 )
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from ._flag import edges_within, flag_levels, matrix_edges
 from .scaling import unscale_values
 

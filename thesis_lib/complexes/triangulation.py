@@ -33,14 +33,14 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import triangulation as triangulation_core
-from .._validate import as_points, check_size, check_weights, power_of_two_scale, scale_points
-from ..simplicial import facets, row_keys
+from .._validate import MAX_SIMPLICES, as_points, check_size, check_weights, power_of_two_scale, scale_points
+from ..homology.simplicial import facets, row_keys
 from .flips import flip_round
 from .incremental import DegenerateInput, exact_triangulation
 from .predicates import Geometry, expand_det, signs_of
 
 __all__ = ["regular_triangulation", "Triangulation", "prepare_geometry", "triangulate", "lexicographic",
-           "lexicographic_order"]
+           "lexicographic_order", "check_delaunay_size", "MAX_DELAUNAY_SIMPLICES"]
 
 #: expected number of top simplices per point of the Delaunay triangulation of uniform random points
 #: in R^d (d = 1..8; Poisson–Delaunay cell counts), used to refuse constructions that cannot finish
@@ -126,9 +126,9 @@ def prepare_geometry(points: npt.ArrayLike, weights: npt.ArrayLike | None = None
     """
     pts = as_points(points)
     n, d = pts.shape
+    check_delaunay_size(n, d)
     if n < d + 1:
         raise ValueError(f"a Delaunay complex in R^{d} needs at least {d + 1} points, got {n}")
-    check_size(estimated_size(n, d), f"simplices (estimated, for the Delaunay complex of {n} points in R^{d})")
     w = np.zeros(n) if weights is None else check_weights(weights, n)
     e = power_of_two_scale(pts)
     spts = scale_points(pts, e)
@@ -618,6 +618,44 @@ def lexicographic(t: Triangulation) -> Triangulation:
     return Triangulation(t.simplices[order], nb, inverse[t.ties] if t.ties.size else t.ties)
 
 
+#: budget of :func:`~thesis_lib.complexes.delaunay` and :func:`~thesis_lib.complexes.alpha` in R^5 and up: simplices of
+#: every dimension, estimated before the triangulation.  There each takes about 20–40 µs (exact
+#: predicates, faces, values; measured in R⁵–R⁷ on the build machine), so 10⁷ simplices are about
+#: 4 minutes; 400 points in R⁷ are 4·10⁷.  In R¹–R⁴ the vectorised path is far faster per simplex
+#: and the limit is ``MAX_SIMPLICES`` (memory).
+MAX_DELAUNAY_SIMPLICES = 10**7
+
+#: simplices of every dimension per top simplex of a Delaunay complex of uniform random points,
+#: measured (n = 3000 in R³ to n = 120 in R⁷); beyond R⁷ extrapolated by ×1.5 per dimension
+_FACES_PER_TOP = {1: 2.0, 2: 3.0, 3: 4.3, 4: 6.3, 5: 9.2, 6: 13.8, 7: 20.4}
+
+
+def check_delaunay_size(n: int, d: int) -> None:
+    """Refuse up front a Delaunay complex estimated above ``MAX_DELAUNAY_SIMPLICES`` simplices
+    (R^5 and up; ``MAX_SIMPLICES`` below), for ``n`` points in R^d.
+
+    Thesis: Definition 2.13 (the Delaunay complex; its size grows like n·c_d with c_d exponential
+    in d).
+
+    Parameters
+    ----------
+    n : int
+        Number of points.
+    d : int
+        Their dimension.
+
+    Raises
+    ------
+    ValueError
+        Naming the estimate (top simplices × faces per top simplex) and the budget.
+    """
+    per_top = _FACES_PER_TOP.get(d, _FACES_PER_TOP[7] * 1.5 ** max(0, d - 7))
+    tops = estimated_size(n, d)
+    check_size(int(tops * per_top), f"simplices (estimated: {tops:,} top simplices × {per_top:g} faces each, for "
+               f"the Delaunay complex of {n:,} points in R^{d})",
+               limit=MAX_DELAUNAY_SIMPLICES if d >= 5 else MAX_SIMPLICES)
+
+
 def regular_triangulation(points: npt.ArrayLike,
                           weights: npt.ArrayLike | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Top simplices of the regular (weighted Delaunay) triangulation and their neighbours.
@@ -656,9 +694,6 @@ def regular_triangulation(points: npt.ArrayLike,
     >>> simplices.tolist(), neighbours.tolist()
     ([[0, 1, 2], [1, 2, 3]], [[1, -1, -1], [-1, -1, 0]])
     """
-    from .delaunay import check_delaunay_size  # (delaunay builds on this module)
-
-    check_delaunay_size(points)
     geo, _ = prepare_geometry(points, weights)
     t = lexicographic(triangulate(geo))
     return t.simplices, t.neighbours

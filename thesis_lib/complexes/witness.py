@@ -24,7 +24,7 @@ import numpy.typing as npt
 
 from .._core import witness_complex
 from .._validate import as_points, check_indices, check_int, check_max_dim, check_memory, check_radius
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from ._flag import flag_levels, matrix_edges
 from .scaling import scaled, unscale_values
 

@@ -2,11 +2,15 @@
 
 Vertices are ``(nv, n + 1)`` points of R^{n+1}; top simplices ``(m, n + 1)`` vertex indices of the
 n-simplices of the hypersurface (n = 2 is a triangle mesh).  Every function validates its input
-through :func:`validate_mesh` (one module, ``curvature.validate``).
+through :func:`validate_mesh` (one module, ``curvature.validate``; the simplices' geometry is in
+``curvature.geometry``).  The exact curvatures of the smooth surfaces they are measured against are
+in :mod:`thesis_lib.surfaces`; estimates on point clouds in :mod:`.point_curvature` (a surface by
+the Crust, or none) and :mod:`.pointcloud`.
 """
 
 from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas
 from .gaussian import angle_defects, gaussian_curvature
+from .geometry import boundary_vertices, simplex_hyperareas
 from .manifold import check_pseudomanifold, pinched_vertices
 from .mean import mean_curvature, mean_curvature_vector, total_hyperarea
 from .shape import (
@@ -17,10 +21,13 @@ from .shape import (
     shape_operator,
     vertex_normals,
 )
-from .validate import boundary_vertices, check_orientation, simplex_hyperareas, validate_mesh
+from .stencil import cross_stars, neighbour_grid_mean_curvature
+from .validate import check_orientation, validate_mesh
 
 __all__ = [
     "AREA_KINDS",
+    "cross_stars",
+    "neighbour_grid_mean_curvature",
     "PrincipalCurvatures",
     "ShapeOperator",
     "angle_defects",
@@ -41,4 +48,3 @@ __all__ = [
     "vertex_areas",
     "vertex_normals",
 ]
-from .exact import *  # noqa: F401,F403  (exact smooth references of §3.4)

@@ -17,9 +17,9 @@ from scipy.spatial import ConvexHull, HalfspaceIntersection
 from .._validate import check_seed
 from .areas import vertex_areas
 from .gaussian import gaussian_curvature
+from .geometry import simplex_hyperareas
 from .mean import mean_curvature_vector
 from .shape import normal_curvatures, vertex_normals
-from .validate import simplex_hyperareas
 
 __all__ = [
     "exterior_angles",

@@ -21,9 +21,9 @@ from math import factorial
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..surfaces import fundamental_forms, hypersurface_normal
 from .checks import dihedral_cotangent_sum, hyperarea_gradient_fd
-from .exact import fundamental_forms, hypersurface_normal
-from .validate import simplex_hyperareas
+from .geometry import simplex_hyperareas
 
 __all__ = [
     "hodge_dual",
@@ -353,7 +353,7 @@ def mean_curvature_integral(X: Param, normal: Param, lam: Param, params: ArrayLi
     Raises
     ------
     ValueError
-        As :func:`thesis_lib.curvature.exact.fundamental_forms`.
+        As :func:`thesis_lib.surfaces.parametric.fundamental_forms`.
     """
     params, weights = np.asarray(params, dtype=np.float64), np.asarray(weights, dtype=np.float64)
     g, B = fundamental_forms(X, params, h=h)
@@ -482,7 +482,7 @@ def gauss_map_pullback_ratio(X: Param, w: ArrayLike, *, h: float = 1e-5) -> NDAr
     Raises
     ------
     ValueError
-        As :func:`thesis_lib.curvature.exact.fundamental_forms`.
+        As :func:`thesis_lib.surfaces.parametric.fundamental_forms`.
     """
     w = np.asarray(w, dtype=np.float64)
 

@@ -37,8 +37,9 @@ import numpy as np
 import numpy.typing as npt
 
 from .areas import check_area, vertex_areas_of_mesh
+from .geometry import exact_edges, exact_gram
 from .manifold import checked_mesh
-from .validate import Mesh, exact_edges, exact_gram
+from .validate import Mesh
 
 __all__ = ["mean_curvature_vector", "mean_curvature", "total_hyperarea"]
 

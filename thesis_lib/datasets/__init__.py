@@ -1,10 +1,10 @@
 """Data sets the thesis uses: triangulations, samplers and small example filtrations.
 
-Each topic lives in its own module; this package re-exports their public functions.  The surfaces
-of chapter 3 come from :mod:`thesis_lib.meshes` and are imported when first asked for, so that the
-triangulations and samplers load without the mesh layer (and scipy.spatial).
+Each topic lives in its own module; the samplers of chapter 3's surfaces and the torus grid are
+those of :mod:`thesis_lib.meshes`.
 """
 
+from ..meshes import sample_catenoid, sample_sphere, sample_torus, torus_grid
 from .filtrations import dense_filtration, example_filtration, module_filtration, named_chain
 from .samplers import flat_torus, noisy_circle, two_circles, two_circles_intersections
 from .triangulations import RP2_LABELS, dunce_hat, klein_bottle, rp2, sphere, torus
@@ -29,17 +29,3 @@ __all__ = [
     "two_circles",
     "two_circles_intersections",
 ]
-
-_SURFACES = ("sample_catenoid", "sample_sphere", "sample_torus", "torus_grid")
-
-
-def __getattr__(name: str):
-    if name in _SURFACES:
-        from . import surfaces
-
-        return getattr(surfaces, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_SURFACES))

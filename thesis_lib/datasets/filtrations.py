@@ -8,7 +8,7 @@ from collections.abc import Iterable, Mapping, Sequence
 import numpy as np
 
 from .._validate import check_int, check_seed
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 
 __all__ = [
     "example_filtration",

@@ -189,7 +189,8 @@ def _cmd_collect(args) -> int:
 
 
 def _cmd_store(args) -> int:
-    from .runner import list_experiments, store
+    from .experiments import list_experiments
+    from .runner import store
 
     targets = args.targets or list_experiments()
     for target in targets:

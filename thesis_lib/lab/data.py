@@ -22,7 +22,7 @@ from .paths import project_root, shared_dir
 from .registry import read_tables
 
 __all__ = ["DataError", "Entry", "manifest", "manifest_path", "path", "verify", "fetch", "sha256_of", "check", "inside",
-           "check_parameter_paths"]
+           "check_parameter_paths", "resolve_structure"]
 
 
 class DataError(ValueError):
@@ -403,3 +403,46 @@ def check_parameter_paths(params: Mapping[str, object], *, base: str | Path) -> 
                 "data set of data/manifest.toml (no entry has its sha256); refused. Put the file inside "
                 "the project, or add it to the manifest with its sha256 and give its name"
             )
+
+
+_PDB_ID = re.compile(r"^[0-9][A-Za-z0-9]{3}$")
+
+
+def resolve_structure(path_or_name: str | Path) -> Path:
+    """Path of a PDB file given as a path or as a 4-character PDB id (``"1grm"``).
+
+    Thesis: §2.2.2 (the coordinates come from the Protein Data Bank).
+
+    Parameters
+    ----------
+    path_or_name : str or pathlib.Path
+        A file path, or a PDB id (a digit and three letters or digits).  An id is looked up through
+        :func:`path` (checked by sha256); when the manifest has no
+        entry for it, ``../shared/data/pdb/<id>.pdb`` is used.
+
+    Returns
+    -------
+    pathlib.Path
+        An existing file.
+
+    Raises
+    ------
+    ValueError
+        No file at the path, an unknown id, or a data file whose sha256 does not match the manifest.
+    """
+    if isinstance(path_or_name, Path) or not _PDB_ID.match(str(path_or_name)):
+        file = Path(path_or_name)
+        if not file.is_file():
+            raise ValueError(f"no PDB file at {file}")
+        return file
+    name = str(path_or_name).lower()
+    for key in (name, f"pdb-{name}", f"{name}.pdb"):
+        try:
+            return path(key)
+        except (DataError, FileNotFoundError) as exc:
+            if "does not match its sha256" in str(exc):
+                raise ValueError(str(exc)) from None
+    fallback = shared_dir() / "data" / "pdb" / f"{name}.pdb"
+    if fallback.is_file():
+        return fallback
+    raise ValueError(f"unknown structure {path_or_name!r}: not in data/manifest.toml and no {fallback}")

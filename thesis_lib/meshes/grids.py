@@ -20,7 +20,7 @@ from scipy.spatial import cKDTree
 
 from .._validate import InvalidTypeError, as_points, check_int, check_real, check_simplices, check_size
 from ..complexes.scaling import scaled
-from ..curvature.exact import catenoid_point, hypersphere_point, torus_point
+from ..surfaces import catenoid_point, hypersphere_point, torus_point
 
 __all__ = [
     "freudenthal",
@@ -160,7 +160,7 @@ def torus_grid(n: int, *, R: float = 10.0, r: float = 5.0) -> tuple[np.ndarray, 
     Returns
     -------
     vertices : ndarray of float64, shape (n², 3)
-        Vertex ``i·n + j`` is X(u_i, v_j) (:func:`~thesis_lib.curvature.exact.torus_point`).
+        Vertex ``i·n + j`` is X(u_i, v_j) (:func:`~thesis_lib.surfaces.torus.torus_point`).
     faces : ndarray of int64, shape (2n², 3)
         Every face oriented by X_u × X_v (outward).
 
@@ -376,7 +376,7 @@ def catenoid_freudenthal(
     Returns
     -------
     vertices : ndarray of float64, shape (nv, n + 1)
-        The grid points on the catenoid (:func:`~thesis_lib.curvature.exact.catenoid_point`).
+        The grid points on the catenoid (:func:`~thesis_lib.surfaces.catenoid.catenoid_point`).
     simplices : ndarray of int64, shape (m, n + 1)
         The Freudenthal n-simplices, closed up in u; the boundary is v = v_low, v_high (and
         w = w_low, w_high).

@@ -47,6 +47,28 @@ def orient_outward(vertices: npt.ArrayLike, simplices: npt.ArrayLike,
         if c.shape != (1, v.shape[1]):
             raise ValueError(f"centre must be one point of R^{v.shape[1]}, got shape {np.shape(centre)}")
         c = c[0]
+    return outward_facets(v, s, c)
+
+
+def outward_facets(v: np.ndarray, s: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """``s`` with the first two vertices of each facet swapped where it faces ``c`` (trusted input).
+
+    Thesis: §3.3 (a coherent orientation, the normal by the right-hand rule of each facet).
+
+    Parameters
+    ----------
+    v : ndarray of float64, shape (nv, n + 1)
+        Vertices.
+    s : ndarray of int64, shape (m, n + 1)
+        Facets, a copy the function may change.
+    c : ndarray of float64, shape (n + 1,)
+        The point that every facet faces away from.
+
+    Returns
+    -------
+    ndarray of int64, shape (m, n + 1)
+        ``s``, each facet ordered so that its normal points away from ``c``.
+    """
     # the sign of the determinant is unchanged by positive scalings: scale the points, then each
     # facet's matrix, by powers of two (exact: the computed determinant scales exactly), so that it
     # neither overflows nor underflows at any magnitude of coordinates
@@ -89,7 +111,7 @@ def convex_hull_surface(points: npt.ArrayLike) -> np.ndarray:
     except QhullError:
         raise ValueError(f"the points span less than R^{d} (all on a hyperplane), so their convex hull "
                          "is not a closed hypersurface") from None
-    return orient_outward(pts, hull.simplices, centre=pts.mean(axis=0))
+    return outward_facets(pts, hull.simplices.astype(np.int64), pts.mean(axis=0))
 
 
 def sphere_hull(*, n_dims: int = 3, n_points: int = 1000, seed: int = 0,

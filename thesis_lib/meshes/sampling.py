@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from .._validate import check_int, check_real, check_seed, check_size
-from ..curvature.exact import catenoid_point, torus_point
+from ..surfaces import catenoid_point, torus_point
 
 __all__ = ["sample_torus", "sample_catenoid", "sample_sphere", "sample_n_catenoid"]
 
@@ -91,7 +91,7 @@ def sample_catenoid(n: int, *, v_range: tuple[float, float] = (-1.0, 1.0), seed:
     Returns
     -------
     points : ndarray of float64, shape (n, 3)
-        The samples, X(u, v) of :func:`~thesis_lib.curvature.exact.catenoid_point`: uniform in
+        The samples, X(u, v) of :func:`~thesis_lib.surfaces.catenoid.catenoid_point`: uniform in
         area, so denser in (u, v) where cosh² v is larger.
     uv : ndarray of float64, shape (n, 2)
         Their parameters, u in [0, 2π); only when ``return_params``.

@@ -6,9 +6,9 @@ V-paths, acyclicity, §4.2.3 and §4.2.6), ``flow`` (V, Φ, Φ^∞, §4.2.3–4.
 (Morse boundary and homology, §4.2.5), ``matching`` (heuristic gradients, §4.2.6), ``reduction``
 (Morse reduction of filtrations for persistence), ``gradients_compared`` (the greedy matching
 against the apparent pairs), ``smooth`` (the smooth examples of §4.1),
-``examples`` (the small complexes of chapter 4) and ``plotting`` (Figures 4.1, 4.4–4.8).  Two modules are
+``examples`` (the small complexes of chapter 4) and ``plotting`` (Figures 4.1, 4.4–4.8).  One module is
 imported by name and not re-exported: ``checks`` (the statements of chapter 4 evaluated on inputs of our
-choosing) and ``chapter_tables`` (the chapter 4 page's tables and checks, written up).
+choosing); the chapter 4 page's tables are in :mod:`thesis_lib.chapters.morse_tables`.
 """
 
 from . import (

@@ -15,12 +15,12 @@ import numpy as np
 import numpy.typing as npt
 import scipy.sparse as sp
 
-from ..filtration import Filtration, as_complex
-from ..simplicial import as_simplex_array, facets, find_rows
+from ..homology.filtration import Filtration, as_complex
+from ..homology.simplicial import as_simplex_array, facets, find_rows
 
 Simplex = tuple[int, ...]
 
-#: a complex in any form :func:`thesis_lib.filtration.as_complex` accepts: a ``Filtration`` (values
+#: a complex in any form :func:`thesis_lib.homology.filtration.as_complex` accepts: a ``Filtration`` (values
 #: optional), an iterable of simplices (vertex tuples; all faces are added), an ``(m, k + 1)``
 #: integer array or a list of per-dimension integer arrays
 ComplexLike = Filtration | Iterable[Sequence[int]] | npt.NDArray[np.integer] | Sequence[npt.NDArray[np.integer]]
@@ -32,7 +32,7 @@ Pairs = Iterable[tuple[Sequence[int], Sequence[int]]]
 class CellComplex:
     """A complex with global cell ids, facet lists and the signed boundary (Definition 2.18).
 
-    Built from a :class:`~thesis_lib.filtration.Filtration` (closed and validated); ``values`` holds
+    Built from a :class:`~thesis_lib.homology.filtration.Filtration` (closed and validated); ``values`` holds
     the filtration value of every cell (global ids), or None for a complex without values.
     """
 
@@ -113,7 +113,7 @@ class CellComplex:
 
 
 def cell_complex(obj) -> CellComplex:
-    """Any complex the library accepts (:func:`thesis_lib.filtration.as_complex`) as a :class:`CellComplex`."""
+    """Any complex the library accepts (:func:`thesis_lib.homology.filtration.as_complex`) as a :class:`CellComplex`."""
     return obj if isinstance(obj, CellComplex) else CellComplex(as_complex(obj))
 
 

@@ -24,7 +24,7 @@ import scipy.optimize
 import scipy.sparse as sp
 
 from ..homology import homology
-from ..smith import rank_mod_p
+from ..homology.smith import rank_mod_p
 from ._cells import ComplexLike, Pairs, Simplex
 from .flow import boundary_operator, cells, gradient_matrix, stabilised_flow
 from .functions import critical_simplices, gradient_pairs, sublevel_complex

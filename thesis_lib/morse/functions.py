@@ -8,7 +8,7 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 
 from .._validate import vertex_label
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from ._cells import CellComplex, ComplexLike, Pairs, Simplex, cell_complex, partner_array
 from ._gradient import acyclic_ranks, hasse_edges
 from ._kernels import topological_rank
@@ -126,7 +126,7 @@ def is_discrete_morse_function(values: Values) -> bool:
     ----------
     values : mapping or Filtration
         The function: a mapping simplex -> value over every simplex of a complex, or a
-        :class:`~thesis_lib.filtration.Filtration` with values (its values are the function).
+        :class:`~thesis_lib.homology.filtration.Filtration` with values (its values are the function).
 
     Returns
     -------

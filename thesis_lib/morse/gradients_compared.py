@@ -3,7 +3,7 @@ matching (:func:`~thesis_lib.morse.morse_reduce`) and the apparent pairs."""
 
 from __future__ import annotations
 
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 from ..persistence.apparent import apparent_summary
 from ._cells import ComplexLike
 from .reduction import morse_reduce
@@ -20,7 +20,7 @@ def critical_fractions(filtration: ComplexLike | Filtration) -> dict[str, float 
 
     Parameters
     ----------
-    filtration : Filtration or anything :func:`~thesis_lib.filtration.as_complex` takes
+    filtration : Filtration or anything :func:`~thesis_lib.homology.filtration.as_complex` takes
         The filtration.
 
     Returns

@@ -9,7 +9,7 @@ import numpy.typing as npt
 import scipy.sparse as sp
 
 from .._validate import MAX_EXACT_PRIME, Field, parse_field
-from ..smith import reduce_checked
+from ..homology.smith import reduce_checked
 from ._cells import ComplexLike, Pairs, Simplex, cell_complex, partner_array
 from ._gradient import morse_boundary_ids
 

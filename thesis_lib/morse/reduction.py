@@ -15,7 +15,7 @@ import numpy.typing as npt
 import scipy.sparse as sp
 
 from .._validate import InvalidTypeError, parse_field, resolve_coefficients
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 from ..persistence.barcode import Barcode
 from ..persistence.chains import chain_barcode, chain_persistence
 from ._cells import CellComplex, ComplexLike, Pairs, Simplex, partner_array

@@ -9,7 +9,7 @@ import numpy.typing as npt
 import scipy.optimize
 import scipy.sparse as sp
 
-from ..curvature.exact import check_torus_radii
+from .._validate import check_torus_radii
 from .morse_complex import chain_complex_homology
 
 __all__ = [

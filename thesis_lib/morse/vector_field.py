@@ -35,7 +35,7 @@ def check_vector_field(simplices: ComplexLike, pairs: Pairs) -> list[tuple[Simpl
     Parameters
     ----------
     simplices : Filtration or iterable of simplices
-        The complex, in any form :func:`~thesis_lib.filtration.as_complex` accepts: all faces are
+        The complex, in any form :func:`~thesis_lib.homology.filtration.as_complex` accepts: all faces are
         added and a Filtration's values are ignored (so in every function of this module).
     pairs : iterable of (sigma, tau)
         The vector field: sigma a face of codimension one of tau, each simplex in at most one pair.

@@ -7,7 +7,7 @@ in a Rips or alpha filtration (Definitions 2.11 and 2.14) and κ(σ) the largest
 function on its vertices (sublevel sets of |κ| or κ, the curvature estimated at each point).  Both
 grades are monotone on faces, so K_{ε,κ} ⊆ K_{ε',κ'} whenever ε ≤ ε' and κ ≤ κ'.
 
-Stored compactly, as :class:`~thesis_lib.filtration.Filtration`: one vertex array and one
+Stored compactly, as :class:`~thesis_lib.homology.filtration.Filtration`: one vertex array and one
 ``(m_d, 2)`` grade array per dimension.
 """
 
@@ -21,7 +21,7 @@ import numpy.typing as npt
 from .._validate import check_max_dim, check_radius, parse_points
 from ..complexes import alpha
 from ..complexes.rips import rips_filtration
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 
 __all__ = ["Bifiltration", "function_bifiltration", "radius_curvature_bifiltration", "COMPLEX_KINDS"]
 
@@ -98,7 +98,7 @@ class Bifiltration:
         return np.stack([allg.min(axis=0), allg.max(axis=0)])
 
     def facet_indices(self, d: int) -> np.ndarray:
-        """The facets of the d-simplices, as :meth:`thesis_lib.filtration.Filtration.facet_indices`.
+        """The facets of the d-simplices, as :meth:`thesis_lib.homology.filtration.Filtration.facet_indices`.
 
         Parameters
         ----------
@@ -193,7 +193,7 @@ def function_bifiltration(filtration: Filtration, vertex_values: npt.ArrayLike, 
     Parameters
     ----------
     filtration : Filtration
-        Its values are the ε-grades (anything :func:`~thesis_lib.filtration.as_complex` turns into
+        Its values are the ε-grades (anything :func:`~thesis_lib.homology.filtration.as_complex` turns into
         a Filtration with values).
     vertex_values : array_like, shape (n_points,)
         f, one number per point (indexed by vertex label); finite at every vertex of the complex.
@@ -235,7 +235,7 @@ def radius_curvature_bifiltration(points: npt.ArrayLike, curvature: npt.ArrayLik
         The point cloud.
     curvature : array_like, shape (n,)
         Curvature estimate at each point, finite (e.g.
-        :func:`thesis_lib.meshes.point_curvature.point_curvature`).
+        :func:`thesis_lib.curvature.point_curvature.point_curvature`).
     complex : {"rips", "alpha"}, default "rips"
         ``"rips"``: ε with diameter ≤ 2ε, truncated at ``max_dim``; ``"alpha"``: the alpha complex,
         its values ε² square-rooted so that both complexes are graded by ε.
@@ -272,7 +272,7 @@ def radius_curvature_bifiltration(points: npt.ArrayLike, curvature: npt.ArrayLik
         K = rips_filtration(pts, eps, max_dim)
         top = K.dimension - 1 if K.dimension == max_dim else K.dimension
     else:
-        K = alpha(pts.array)
+        K = alpha(pts)
         K = Filtration(K.simplices, [np.sqrt(np.maximum(v, 0.0)) for v in K.values], validate=False)
         top = K.dimension
     return function_bifiltration(K, k, max_homology_dim=max(top, 0), name="curvature")

@@ -23,7 +23,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._validate import check_int, check_size, parse_field
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from ..persistence.barcode import Barcode
 from ..persistence.engine import filtration_barcode
 from .bifiltration import Bifiltration

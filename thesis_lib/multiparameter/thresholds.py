@@ -120,10 +120,10 @@ def torus_run(points: npt.ArrayLike, curvature: npt.ArrayLike, *, exact: npt.Arr
 
     Examples
     --------
-    >>> from thesis_lib.curvature.exact import torus_gaussian_curvature_at
+    >>> from thesis_lib.surfaces import torus_gaussian_curvature_at
     >>> from thesis_lib.curvature.pointcloud import neighbour_mean
     >>> from thesis_lib.meshes import sample_torus
-    >>> from thesis_lib.meshes.point_curvature import point_curvature
+    >>> from thesis_lib.curvature.point_curvature import point_curvature
     >>> X = sample_torus(1000, R=10.0, r=5.0, seed=0)
     >>> K = neighbour_mean(X, point_curvature(X, estimator="crust", curvature="gaussian"), k=16)
     >>> run = torus_run(X, K, exact=torus_gaussian_curvature_at(X, R=10.0, r=5.0), radii=np.linspace(0, 8, 17),
@@ -214,7 +214,7 @@ def circles_run(points: npt.ArrayLike, curvature: npt.ArrayLike, *, junctions: n
     Examples
     --------
     >>> from thesis_lib.datasets import two_circles, two_circles_intersections
-    >>> from thesis_lib.meshes.point_curvature import point_curvature
+    >>> from thesis_lib.curvature.point_curvature import point_curvature
     >>> X = two_circles(60, seed=0)
     >>> run = circles_run(X, point_curvature(X, estimator="knn", k=10), junctions=two_circles_intersections(),
     ...                   max_radius=0.8, n_eps=21, n_kappa=21)

@@ -26,7 +26,7 @@ from typing import Any
 import numpy as np
 
 from .._validate import parse_field
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 from .barcode import Barcode
 from .kernels import inverse
 
@@ -48,8 +48,8 @@ def compute_intervals(filtration: Filtration | Iterable[Any], *, coefficients: i
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        A :class:`~thesis_lib.filtration.Filtration`, or anything
-        :func:`~thesis_lib.filtration.as_complex` takes: ``(simplex, value)`` pairs in filtration
+        A :class:`~thesis_lib.homology.filtration.Filtration`, or anything
+        :func:`~thesis_lib.homology.filtration.as_complex` takes: ``(simplex, value)`` pairs in filtration
         order (non-decreasing values, faces before cofaces), plain simplices (all values 0), ...
     coefficients : int, optional
         A prime p: the field Z/p (default 2).  0 (the integers) is refused: Reduce divides.
@@ -72,7 +72,7 @@ def compute_intervals(filtration: Filtration | Iterable[Any], *, coefficients: i
     Raises
     ------
     ValueError
-        A complex :func:`~thesis_lib.filtration.as_complex` refuses, or ``coefficients`` not a prime.
+        A complex :func:`~thesis_lib.homology.filtration.as_complex` refuses, or ``coefficients`` not a prime.
 
     Examples
     --------

@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 
 __all__ = ["apparent_pairs", "apparent_summary"]
 
@@ -46,8 +46,8 @@ def apparent_pairs(filtration: Filtration | Iterable[Any], *,
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        A :class:`~thesis_lib.filtration.Filtration` (or anything
-        :func:`~thesis_lib.filtration.as_complex` takes).
+        A :class:`~thesis_lib.homology.filtration.Filtration` (or anything
+        :func:`~thesis_lib.homology.filtration.as_complex` takes).
     zero : bool
         Only the pairs whose two simplices have the same value (zero persistence: the ones the
         implicit engine never makes columns).
@@ -89,8 +89,8 @@ def apparent_summary(filtration: Filtration | Iterable[Any]) -> dict[str, Any]:
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        A :class:`~thesis_lib.filtration.Filtration` (or anything
-        :func:`~thesis_lib.filtration.as_complex` takes).
+        A :class:`~thesis_lib.homology.filtration.Filtration` (or anything
+        :func:`~thesis_lib.homology.filtration.as_complex` takes).
 
     Returns
     -------

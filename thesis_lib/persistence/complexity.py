@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from .algorithm import compute_intervals
 
 __all__ = ["algorithm_work", "WorkGrowth", "work_growth", "work_table"]
@@ -28,7 +28,7 @@ def algorithm_work(filtration: Filtration | Iterable[Any], *, coefficients: int 
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        Anything :func:`~thesis_lib.filtration.as_complex` takes.
+        Anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     coefficients : int, default 2
         A prime: the field Z/p of the reduction.
 

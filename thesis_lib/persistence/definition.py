@@ -16,9 +16,9 @@ from typing import Any
 import numpy as np
 
 from .._validate import resolve_coefficients
-from ..filtration import Filtration, as_complex
-from ..simplicial import boundary_matrix
-from ..smith import rank_mod_p
+from ..homology.filtration import Filtration, as_complex
+from ..homology.simplicial import boundary_matrix
+from ..homology.smith import rank_mod_p
 from .algorithm import compute_intervals
 from .barcode import Barcode
 
@@ -51,7 +51,7 @@ def persistent_betti_by_definition(filtration: Filtration | Iterable[Any], l: fl
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        Anything :func:`~thesis_lib.filtration.as_complex` takes.
+        Anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     l : float
         The filtration value of K^l.
     k : float
@@ -105,7 +105,7 @@ def persistent_betti_grid(filtration: Filtration | Iterable[Any], *, ls: Iterabl
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        Anything :func:`~thesis_lib.filtration.as_complex` takes.
+        Anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     ls : iterable of float
         The filtration values l, one row each.
     ks : iterable of float
@@ -220,7 +220,7 @@ def definition_mismatches(filtrations: Iterable[Filtration | Iterable[Any]], *, 
     Parameters
     ----------
     filtrations : iterable of Filtration
-        The filtrations (anything :func:`~thesis_lib.filtration.as_complex` takes).
+        The filtrations (anything :func:`~thesis_lib.homology.filtration.as_complex` takes).
     ls : iterable of float
         The filtration values l.
     ks : iterable of float
@@ -275,7 +275,7 @@ def betti_versus_barcode(filtration: Filtration | Iterable[Any], *, steps: Itera
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        Anything :func:`~thesis_lib.filtration.as_complex` takes.
+        Anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     steps : iterable of float
         The values l at which β_dim of K^l is taken (β_dim^{l,0} of Definition 2.23).
     dim : int

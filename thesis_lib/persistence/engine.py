@@ -31,7 +31,7 @@ import numpy as np
 
 from .._core import explicit_cohomology
 from .._validate import Field, check_min_persistence, parse_field
-from ..filtration import Filtration, as_complex
+from ..homology.filtration import Filtration, as_complex
 from .barcode import Barcode
 from .kernels import KEEP_V, reduce_columns
 
@@ -67,8 +67,8 @@ def persistence(filtration: Filtration | Iterable[Any], *, coefficients: int | N
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        A :class:`~thesis_lib.filtration.Filtration` (e.g. from :func:`~thesis_lib.complexes.rips`),
-        or anything :func:`~thesis_lib.filtration.as_complex` takes.
+        A :class:`~thesis_lib.homology.filtration.Filtration` (e.g. from :func:`~thesis_lib.complexes.rips`),
+        or anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     coefficients : int, optional
         A prime p: the field Z/p (default 2).
     stats : dict, optional
@@ -88,7 +88,7 @@ def persistence(filtration: Filtration | Iterable[Any], *, coefficients: int | N
     Raises
     ------
     ValueError
-        A complex :func:`~thesis_lib.filtration.as_complex` refuses, ``coefficients`` not a prime, a
+        A complex :func:`~thesis_lib.homology.filtration.as_complex` refuses, ``coefficients`` not a prime, a
         triangle with a missing edge, or more than 2³¹ − 1 simplices in one dimension.
 
     Notes
@@ -118,7 +118,7 @@ def persistence(filtration: Filtration | Iterable[Any], *, coefficients: int | N
 
 def filtration_barcode(K: Filtration, field: Field, *, stats: dict[int, dict[str, int]] | None = None,
                        min_persistence: float = 0.0) -> Barcode:
-    """:func:`persistence` on parsed input: a non-empty :class:`~thesis_lib.filtration.Filtration`
+    """:func:`persistence` on parsed input: a non-empty :class:`~thesis_lib.homology.filtration.Filtration`
     and a parsed prime field (the loops that take many barcodes of one complex call this).
 
     Thesis: Theorem 2.39 / Algorithm 2, §2.3.5 (the same pairs, computed by the dual reduction).

@@ -18,8 +18,8 @@ import numpy as np
 import numpy.typing as npt
 
 from ..datasets.filtrations import named_chain, simplex_labels
-from ..filtration import Filtration, as_complex
-from ..simplicial import boundary_matrix
+from ..homology.filtration import Filtration, as_complex
+from ..homology.simplicial import boundary_matrix
 from .barcode import Barcode
 
 __all__ = [
@@ -390,7 +390,7 @@ def row_order_check(filtration: Filtration | Iterable[Any], *, dim: int = 1) -> 
     Parameters
     ----------
     filtration : Filtration or iterable of (simplex, value) pairs
-        Anything :func:`~thesis_lib.filtration.as_complex` takes.
+        Anything :func:`~thesis_lib.homology.filtration.as_complex` takes.
     dim : int, default 1
         p ≥ 1: M_p has a row per (p − 1)-simplex and a column per p-simplex; entry t^k with
         k = deg(column) − deg(row).

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .._validate import InvalidTypeError, check_int, check_size
-from ..filtration import Filtration
+from ..homology.filtration import Filtration
 from .barcode import Barcode
 from .engine import persistence
 
