@@ -6,7 +6,9 @@
 // met as cofaces of the (k−1)-simplices (in parallel), those not cleared and not in a zero apparent
 // pair become coboundary columns, reduced latest first, with a lazy working column: a heap of coboundary enumerators, one
 // per added coboundary f · δs, each yielding the cofaces of s in filtration order (diameter up,
-// index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp.
+// index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp; on
+// request each bar's reduction chain is returned as its representative cocycle
+// (implicit_rips_cocycles.hpp).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -18,6 +20,7 @@
 
 #include "arrays.hpp"
 #include "column_heap.hpp"
+#include "implicit_rips_cocycles.hpp"
 #include "implicit_rips_graph.hpp"
 #include "union_find.hpp"
 
@@ -635,19 +638,22 @@ class Reducer {
     }
 };
 
-// The outcome of one dimension's reduction.
+// The outcome of one dimension's reduction: the finite bars, the essential ones, their cocycles (when
+// asked for, in the same orders) and the statistics.
 struct Reduced {
     std::vector<double> births, deaths, ess;
+    CocycleList finite, essential;
     Table pivots{0};
     i64 emergent = 0, worked = 0, additions = 0, read = 0, most = 0;
 };
 
 // Reduce the coboundary columns of the k-simplices cols (latest first) over Z/p: each column's tau and
 // sign are its earliest coface when that may make an emergent pair (else −1) and its sign; the
-// pivots of zero apparent pairs met are found by zero_apparent_facet.
+// pivots of zero apparent pairs met are found by zero_apparent_facet.  With cocycles, the chain V of
+// each column that gives a bar (of positive length, or essential) is kept as its representative.
 // Thesis: Algorithm 1 (Reduce) inside Algorithm 2, §2.3.5, on the cohomology side (Theorem 2.39),
 // with emergent and apparent pairs (Definitions 4.30–4.33).
-Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
+Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p, bool cocycles) {
     const i64 ncol = static_cast<i64>(cols.size());
     Reduced out;
     out.pivots = Table(ncol);
@@ -681,6 +687,7 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
         wc.clear();
         wd.clear();
         i64 piv = -1;
+        bool bar = false;  // a finite bar of positive length
         for (;;) {
             const Pivot<double, i64, i64> pv = col.pop_pivot(out.read);
             if (pv.coef == 0) {  // the column is zero: s creates an essential class
@@ -734,6 +741,7 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
             if (pv.value > ds) {
                 out.births.push_back(ds);
                 out.deaths.push_back(pv.value);
+                bar = true;
             }
             piv_t.keys[h] = piv;
             piv_t.vals[h] = c;
@@ -743,6 +751,8 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
         out.most = std::max(out.most, col.nr);
         const i64 wn = static_cast<i64>(wk.size());
         if (wn > 0) ++out.worked;
+        if (cocycles && (bar || piv == -1))
+            append_cocycle(g, k, p, s, ds, {wk.data(), wc.data(), wd.data(), wn}, piv == -1 ? out.essential : out.finite);
         if (piv == -1) {
             out.ess.push_back(ds);
             continue;
@@ -761,13 +771,28 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
     return out;
 }
 
-// One dimension's output: births, deaths, essential births and the statistics (simplices, apparent,
-// columns, emergent, reduced, additions, entries, enumerators).
-using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>>;
+// One dimension's output: births, deaths, essential births, the statistics (simplices, apparent,
+// columns, emergent, reduced, additions, entries, enumerators) and, when asked for, the cocycles of
+// the finite bars then of the essential ones: their offsets (one more than the bars; [0] when not
+// asked for, and in dimension 0) and their rows, (vertices, coefficient) each.
+using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>, Array<i64>, Array<i64>>;
 
 struct DimOut {
     std::vector<double> births, deaths, ess;
     std::vector<i64> stats;
+    CocycleList cocycles;
+};
+
+// The options of rips_barcode: the largest simplex dimension, the prime, whether the dense distance
+// matrix is kept, the threads (0: OMP_NUM_THREADS or every core), the number of k-simplices from
+// which a dimension is assembled in parallel, and whether representative cocycles are returned.
+struct Options {
+    i64 max_dim = 2;
+    i64 p = 2;
+    bool dense = true;
+    int n_threads = 0;
+    i64 parallel_min = 50000;
+    bool cocycles = false;
 };
 
 // Refuse a graph that is not the symmetric, sorted neighbour lists of rips_graph.
@@ -809,12 +834,15 @@ void check_graph(i64 n, const i64* indptr, std::size_t nptr, const i64* nbr, con
 // The barcode of the Rips filtration of the graph in dimensions 0 .. max_dim − 1, in diameters: births,
 // deaths and essential births per dimension (in dimension 0 the vertices are born at vertex_births,
 // inf for a vertex not in the complex; an edge's length is at least its vertices' births), with the
-// statistics of the reduction above dimension 0.
+// statistics of the reduction above dimension 0 and, with options.cocycles, a representative cocycle
+// of each bar of dimension >= 1 (implicit_rips_cocycles.hpp).
 // Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, by the dual reduction),
 // Definitions 4.30–4.33 and Theorem 4.42 (apparent pairs as a discrete gradient).
 std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, nb::ndim<1>> neighbours,
                                     In<double, nb::ndim<1>> lengths, In<double, nb::ndim<1>> vertex_births,
-                                    i64 max_dim, i64 p, bool dense, int n_threads, i64 parallel_min) {
+                                    const Options& options) {
+    const i64 max_dim = options.max_dim, p = options.p, parallel_min = options.parallel_min;
+    const bool dense = options.dense;
     check_graph(n, indptr.data(), indptr.shape(0), neighbours.data(), lengths.data(), neighbours.shape(0),
                 lengths.shape(0));
     if (vertex_births.shape(0) != static_cast<std::size_t>(n))
@@ -824,7 +852,7 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
     if (max_dim < 1 || max_dim > n + 1) throw std::invalid_argument("rips_barcode: max_dim must be in 1 .. n + 1");
     if (p < 2 || p >= (i64(1) << 31)) throw std::invalid_argument("rips_barcode: p must be a prime below 2^31");
     if (dense && n > 46340) throw std::invalid_argument("rips_barcode: too many points for a dense matrix");
-    const int threads = thread_count(n_threads);
+    const int threads = thread_count(options.n_threads);
     std::vector<DimOut> dims(static_cast<std::size_t>(max_dim));
     {
         nb::gil_scoped_release release;
@@ -891,20 +919,27 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
             // latest first: diameter down, index up
             std::sort(cols.begin(), cols.end(),
                       [](const Column& a, const Column& b) { return a.d > b.d || (a.d == b.d && a.idx < b.idx); });
-            Reduced red = reduce(g, k, cols, p);
+            Reduced red = reduce(g, k, cols, p, options.cocycles);
             DimOut& out = dims[static_cast<std::size_t>(k)];
             out.births = std::move(red.births);
             out.deaths = std::move(red.deaths);
             out.ess = std::move(red.ess);
+            if (options.cocycles) {  // the finite bars' cocycles, then the essential ones'
+                out.cocycles = std::move(red.finite);
+                extend(out.cocycles, red.essential);
+            }
             out.stats = {ncand, napp, static_cast<i64>(cols.size()), red.emergent, red.worked, red.additions, red.read,
                          red.most};
             cleared = std::move(red.pivots);
         }
     }
     std::vector<DimResult> result;
-    for (DimOut& d : dims) {
+    for (std::size_t k = 0; k < dims.size(); ++k) {
+        DimOut& d = dims[k];
+        const std::size_t nrows = d.cocycles.rows.size() / (k + 2);
         result.emplace_back(to_numpy(std::move(d.births)), to_numpy(std::move(d.deaths)), to_numpy(std::move(d.ess)),
-                            to_numpy(std::move(d.stats)));
+                            to_numpy(std::move(d.stats)), to_numpy(std::move(d.cocycles.offsets)),
+                            to_numpy(std::move(d.cocycles.rows), {nrows, k + 2}));
     }
     return result;
 }
@@ -914,12 +949,20 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
 
 NB_MODULE(implicit_rips, m) {
     namespace nb = nanobind;
-    m.doc() = "The implicit Vietoris–Rips persistence engine (thesis Definition 2.11, Algorithm 2, §4.2).";
+    m.doc() = "The implicit Vietoris–Rips persistence engine (thesis Definition 2.11, Algorithm 2, §4.2), "
+              "with representative cocycles on request.";
     m.def("neighbour_lists", &thesis::rips::neighbour_lists, nb::arg("n"), nb::arg("edges"), nb::arg("lengths"),
           "Symmetric neighbour lists (indptr, neighbours, lengths) of the edges, each list by decreasing vertex.");
+    nb::class_<thesis::rips::Options>(m, "Options", "The options of rips_barcode.")
+        .def(nb::init<>())
+        .def_rw("max_dim", &thesis::rips::Options::max_dim)
+        .def_rw("p", &thesis::rips::Options::p)
+        .def_rw("dense", &thesis::rips::Options::dense)
+        .def_rw("n_threads", &thesis::rips::Options::n_threads)
+        .def_rw("parallel_min", &thesis::rips::Options::parallel_min)
+        .def_rw("cocycles", &thesis::rips::Options::cocycles);
     m.def("rips_barcode", &thesis::rips::rips_barcode, nb::arg("n"), nb::arg("indptr"), nb::arg("neighbours"),
-          nb::arg("lengths"), nb::arg("vertex_births"), nb::arg("max_dim"), nb::arg("p"), nb::arg("dense"),
-          nb::arg("n_threads"),
-          nb::arg("parallel_min"),
-          "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics), in diameters.");
+          nb::arg("lengths"), nb::arg("vertex_births"), nb::arg("options"),
+          "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics, cocycle offsets, "
+          "cocycle rows), in diameters.");
 }
