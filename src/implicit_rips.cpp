@@ -154,14 +154,24 @@ void edges_by_index(const Graph& g, std::vector<double>& ed, std::vector<i64>& e
     }
 }
 
+// One dimension's output as it is built: births, deaths and essential births, the statistics and the
+// cocycles (returned as a DimResult, below).
+struct DimOut {
+    std::vector<double> births, deaths, ess;
+    std::vector<i64> stats;
+    CocycleList cocycles;
+};
+
 // Union–find over the edges in filtration order (diameter up, index down), the vertices born at
 // vbirth (inf: not in the complex): the (birth, death) of each H0 class that dies (elder rule: of the
-// two classes an edge joins, the younger dies), the births of the components left, and the positive
-// edges (those closing a cycle).
+// two classes an edge joins, the younger dies) and the births of the components left, into out's bars,
+// and the positive edges (those closing a cycle).
 // Thesis: Definition 2.31 (elder rule), §2.3.4.
-void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::vector<i64>& ei,
-        std::vector<double>& births, std::vector<double>& deaths, std::vector<double>& ess,
+void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::vector<i64>& ei, DimOut& out,
         std::vector<char>& positive) {
+    std::vector<double>& births = out.births;
+    std::vector<double>& deaths = out.deaths;
+    std::vector<double>& ess = out.ess;
     const i64 m = static_cast<i64>(ed.size());
     std::vector<i64> order(static_cast<std::size_t>(m));
     for (i64 e = 0; e < m; ++e) order[e] = e;
@@ -207,29 +217,36 @@ struct Scratch {
         : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)), w(static_cast<std::size_t>(k + 3)) {}
 };
 
+// The earliest coface of a simplex when it has the simplex's diameter, whether the two form a zero
+// apparent pair, and whether the coface is taken (the upper simplex of another one).
+struct EarliestCoface {
+    Coface coface;
+    bool apparent, taken;
+};
+
 // The earliest coface tau of the k-simplex s (vertices verts, diameter d) when it has s's diameter
 // (index −1 otherwise), and whether the two form a zero apparent pair: always when the new vertex is
 // above s's (s omits tau's top vertex and has tau's diameter: the latest facet), else when tau's
 // latest facet is s.  When they do not, taken says whether tau is the upper simplex of another zero
 // apparent pair (e, tau) (e its latest facet), so that s cannot be paired with tau at once.
 // Thesis: Definition 4.30 (a pair of the discrete gradient), Theorem 4.42's idea.
-Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent,
-                             bool& taken) {
+EarliestCoface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x) {
     double od[1];
     i64 oi[1], oj[1];
-    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, oj);
-    apparent = t.index != -1 && t.m == 0;
-    taken = false;
+    const CofaceBuffers one{x.cur.data(), od, oi, oj};
+    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, one);
+    bool apparent = t.index != -1 && t.m == 0;
+    bool taken = false;
     if (t.index != -1 && t.m > 0) {
         for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
         const i64 e = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), true);
         apparent = e == s;
         if (e != -1 && e != s) {
             vertices(g, e, k, x.verts.data());
-            taken = zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == t.index;
+            taken = zero_pivot_cofacet(g, x.verts.data(), k, e, d, one).index == t.index;
         }
     }
-    return t;
+    return {t, apparent, taken};
 }
 
 // The k-simplex e with (e, tau) a zero apparent pair, for the (k + 1)-simplex tau of diameter d; −1
@@ -241,7 +258,7 @@ i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
     vertices(g, e, k, x.verts.data());
     double od[1];
     i64 oi[1], oj[1];
-    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == tau ? e : -1;
+    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, {x.cur.data(), od, oi, oj}).index == tau ? e : -1;
 }
 
 // ---------------------------------------------------------------------------- the columns of a dimension
@@ -287,8 +304,20 @@ struct Blocks {
     }
 };
 
-// The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`, which
-// holds the (k − levels)-simplices: with levels 0 the k-simplices themselves; with 1 each (k − 1)-simplex
+// What one dimension k is assembled from: the blocks `from` of (k − levels)-simplices, whether the
+// k-simplices met are kept (keep_all) and whether a dimension k + 1 follows (next), and the tables of
+// dimension k − 1: its pivots (cleared) and the upper simplices of its zero apparent pairs (uppers).
+struct Assembly {
+    i64 k;
+    const Blocks& from;
+    i64 levels;
+    bool keep_all, next;
+    const Table& cleared;
+    const Table& uppers;
+};
+
+// The columns of dimension k (of the assembly a) among the k-simplices met from the blocks lo .. hi − 1
+// of `from`, which holds the (k − levels)-simplices: with levels 0 the k-simplices themselves; with 1 each (k − 1)-simplex
 // f and its cofaces tau = f ∪ {j} with j above f's vertices are met (each k-simplex once, its
 // vertices known); with 2 the (k − 1)-simplices f are met the same way from the (k − 2)-simplices,
 // and not stored (the top dimension's facets, the largest list).  A simplex met is kept in all when
@@ -301,8 +330,11 @@ struct Blocks {
 // follows), and looked up only for the cofaces above f's diameter.
 // Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
 // flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
-void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i64 levels, bool keep_all,
-                    bool next, const Table& cleared, const Table& uppers, i64 maxdeg, Assembled& out) {
+void assemble_block(const Graph& g, const Assembly& a, i64 lo, i64 hi, i64 maxdeg, Assembled& out) {
+    const i64 k = a.k, levels = a.levels;
+    const bool keep_all = a.keep_all, next = a.next;
+    const Blocks& from = a.from;
+    const Table &cleared = a.cleared, &uppers = a.uppers;
     Scratch x(k);
     const std::size_t width = static_cast<std::size_t>(maxdeg + 1);
     std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
@@ -313,22 +345,24 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
         oj2.resize(width);
         od2.resize(width);
     }
+    const CofaceBuffers level1{cur.data(), od.data(), oi.data(), oj.data()},
+        level2{cur.data(), od2.data(), oi2.data(), oj2.data()};  // the cofaces of f; of a (k − 2)-simplex
     auto meet = [&](double d, i64 s, bool upper) {  // s of diameter d and vertices sv
         if (keep_all) out.all.push_back({d, s});
         if (upper || cleared.contains(s)) return;
         ++out.candidates;
-        bool app, taken;
-        const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app, taken);
-        if (app) {
+        const EarliestCoface early = earliest_equal_coface(g, sv.data(), k, s, d, x);
+        const Coface& t = early.coface;
+        if (early.apparent) {
             ++out.apparent;
             if (next && t.m > 0) out.uppers.push_back(t.index);
         } else {
-            out.columns.push_back({d, s, taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
+            out.columns.push_back({d, s, early.taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
         }
     };
     auto above = [&](double fd, i64 fidx) {  // the cofaces of f (vertices fv) above its vertices
         std::copy(fv.begin(), fv.end(), sv.begin() + 1);
-        const i64 c = cofaces(g, fv.data(), k - 1, fidx, fd, cur.data(), od.data(), oi.data(), oj.data(), false, true);
+        const i64 c = cofaces(g, fv.data(), k - 1, fidx, fd, level1, false, true);
         bool first = true;  // no coface of f's diameter met yet
         for (i64 t = 0; t < c; ++t) {
             sv[0] = oj[t];
@@ -363,8 +397,7 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
             above(f.d, f.idx);
         } else {  // f is a (k − 2)-simplex: its cofaces above it are the facets met
             decode(f.idx, k - 1, hv.data(), rest);
-            const i64 c = cofaces(g, hv.data(), k - 2, f.idx, f.d, cur.data(), od2.data(), oi2.data(), oj2.data(), false,
-                                  true);
+            const i64 c = cofaces(g, hv.data(), k - 2, f.idx, f.d, level2, false, true);
             std::copy(hv.begin(), hv.end(), fv.begin() + 1);
             for (i64 t = 0; t < c; ++t) {
                 fv[0] = oj2[t];
@@ -374,14 +407,13 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
     });
 }
 
-// assemble_block over all of `from`: on one thread when fewer than parallel_min k-simplices are to be
+// assemble_block over all of a.from: on one thread when fewer than parallel_min k-simplices are to be
 // met (estimated as |from| times the mean degree over k + 1 per level, over k for a second), else in
 // 8 · threads blocks shared by the threads; the blocks' shares are kept in block order, so nothing
 // depends on how the blocks were shared.
-std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, i64 levels, bool keep_all, bool next,
-                                const Table& cleared, const Table& uppers, i64 maxdeg, int threads,
-                                i64 parallel_min) {
-    const i64 m = from.size();
+std::vector<Assembled> assemble(const Graph& g, const Assembly& a, i64 maxdeg, int threads, i64 parallel_min) {
+    const i64 k = a.k, levels = a.levels;
+    const i64 m = a.from.size();
     const double degree = static_cast<double>(g.indptr[g.n]) / static_cast<double>(g.n);
     double met = static_cast<double>(m);
     for (i64 l = 0; l < levels; ++l) met *= degree / static_cast<double>(k + 1 - l);
@@ -394,8 +426,8 @@ std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, i64 l
     auto work = [&](int t) {
         try {
             for (i64 b = taken++; b < nblocks; b = taken++)
-                assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), levels, keep_all,
-                               next, cleared, uppers, maxdeg, out[static_cast<std::size_t>(b)]);
+                assemble_block(g, a, std::min(m, b * size), std::min(m, (b + 1) * size), maxdeg,
+                               out[static_cast<std::size_t>(b)]);
         } catch (...) {
             errors[static_cast<std::size_t>(t)] = std::current_exception();
         }
@@ -777,12 +809,6 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p, bo
 // asked for, and in dimension 0) and their rows, (vertices, coefficient) each.
 using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>, Array<i64>, Array<i64>>;
 
-struct DimOut {
-    std::vector<double> births, deaths, ess;
-    std::vector<i64> stats;
-    CocycleList cocycles;
-};
-
 // The options of rips_barcode: the largest simplex dimension, the prime, whether the dense distance
 // matrix is kept, the threads (0: OMP_NUM_THREADS or every core), the number of k-simplices from
 // which a dimension is assembled in parallel, and whether representative cocycles are returned.
@@ -870,7 +896,7 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         std::vector<i64> ei;
         edges_by_index(g, ed, ei);
         std::vector<char> positive;
-        h0(n, vertex_births.data(), ed, ei, dims[0].births, dims[0].deaths, dims[0].ess, positive);
+        h0(n, vertex_births.data(), ed, ei, dims[0], positive);
         // ---- dimensions 1 .. max_dim − 1: cohomology with clearing, apparent and emergent pairs
         Blocks from, all;  // the candidates of H1 (the positive edges); every (k − 1)-simplex, to build the k-simplices
         from.parts.emplace_back();
@@ -889,9 +915,9 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
             const bool next = k + 1 < max_dim;
             const bool two = k >= 3 && !next;
             const bool keep = next && !(k + 2 == max_dim && k >= 2);
-            std::vector<Assembled> parts = k == 1
-                ? assemble(g, 1, from, 0, false, next, cleared, uppers, maxdeg, threads, parallel_min)
-                : assemble(g, k, all, two ? 2 : 1, keep, next, cleared, uppers, maxdeg, threads, parallel_min);
+            const Assembly step = k == 1 ? Assembly{1, from, 0, false, next, cleared, uppers}
+                                         : Assembly{k, all, two ? 2 : 1, keep, next, cleared, uppers};
+            std::vector<Assembled> parts = assemble(g, step, maxdeg, threads, parallel_min);
             if (k >= 2 && (keep || !next)) {
                 all.parts.clear();
                 if (keep)
