@@ -322,6 +322,15 @@ double turning_angle(const Geom& g, const double* a, const double* p, Scratch& s
     return py_fmod(std::atan2(dot(sc.w.data(), sc.nrm.data(), d), dot(sc.w.data(), sc.wc.data(), d)), TWO_PI);
 }
 
+// The ridges of the simplices and their incidences (crust_trimming.py's _ridge_structure): the ridges
+// (R, n) as sorted rows, the ridge opposite each vertex of each simplex (ridge_of, (m, n + 1)), and
+// per ridge r the simplices tri_of[start[r] .. start[r + 1] − 1] through it with their vertices opp
+// opposite it.
+struct Ridges {
+    In<std::int64_t, nb::ndim<2>> ridges, ridge_of;
+    In<std::int64_t, nb::ndim<1>> start, tri_of, opp;
+};
+
 // Coherently oriented walk from seed across every ridge to the next live simplex met when turning
 // about the ridge through the outside (the side the oriented normal points to).  Depth first (a
 // closed hypersurface), or breadth_first (a piece with boundary: the simplices near the seed are
@@ -330,18 +339,16 @@ double turning_angle(const Geom& g, const double* a, const double* p, Scratch& s
 // Thesis: §3.4, "Triangulations" (the trimming of [ABK98]: the walk over the outside), Chapter 5.
 std::tuple<Array<std::int64_t>, Array<std::int64_t>, std::int64_t> walk(
     In<double, nb::ndim<2>> pts, In<std::int64_t, nb::ndim<2>> simplices, In<bool, nb::ndim<1>> alive,
-    In<std::int64_t, nb::ndim<2>> ridges, In<std::int64_t, nb::ndim<2>> ridge_of, In<std::int64_t, nb::ndim<1>> start,
-    In<std::int64_t, nb::ndim<1>> tri_of, In<std::int64_t, nb::ndim<1>> opp, std::int64_t seed, bool seed_flip,
-    bool breadth_first, double max_fold) {
-    const Geom g = check_ridges("walk", pts, ridges);
-    const std::int64_t R = static_cast<std::int64_t>(ridges.shape(0));
-    check_simplices("walk", g, R, simplices, ridge_of);
+    const Ridges& structure, std::int64_t seed, bool seed_flip, bool breadth_first, double max_fold) {
+    const Geom g = check_ridges("walk", pts, structure.ridges);
+    const std::int64_t R = static_cast<std::int64_t>(structure.ridges.shape(0));
+    check_simplices("walk", g, R, simplices, structure.ridge_of);
     const std::int64_t m = static_cast<std::int64_t>(simplices.shape(0)), k1 = g.k1, n = k1 - 1;
-    check_incidence("walk", R, m, g.N, start, tri_of, opp);
+    check_incidence("walk", R, m, g.N, structure.start, structure.tri_of, structure.opp);
     if (static_cast<std::int64_t>(alive.shape(0)) != m) throw std::invalid_argument("walk: alive must have m entries");
     if (seed < 0 || seed >= m) throw std::invalid_argument("walk: seed is outside 0..m-1");
-    const std::int64_t *S = simplices.data(), *RI = ridges.data(), *RO = ridge_of.data(), *ST = start.data(),
-                       *TO = tri_of.data(), *OP = opp.data();
+    const std::int64_t *S = simplices.data(), *RI = structure.ridges.data(), *RO = structure.ridge_of.data(),
+                       *ST = structure.start.data(), *TO = structure.tri_of.data(), *OP = structure.opp.data();
     const bool* AL = alive.data();
     std::vector<std::int64_t> orient(static_cast<std::size_t>(m * k1), 0);
     std::vector<std::int64_t> visit;
@@ -451,14 +458,12 @@ Array<bool> greedy_manifold(In<std::int64_t, nb::ndim<2>> ridge_of, In<std::int6
 // simplex: about π on a sheet, small on the inner side of a pocket of candidates; one value per
 // (ts[i], flips[i]).  Thesis: Chapter 5 (the seed of the open walk; the trimming of [ABK98], §3.4).
 Array<double> openness(In<double, nb::ndim<2>> pts, In<std::int64_t, nb::ndim<2>> simplices, In<bool, nb::ndim<1>> alive,
-                       In<std::int64_t, nb::ndim<2>> ridges, In<std::int64_t, nb::ndim<2>> ridge_of,
-                       In<std::int64_t, nb::ndim<1>> start, In<std::int64_t, nb::ndim<1>> tri_of,
-                       In<std::int64_t, nb::ndim<1>> opp, In<std::int64_t, nb::ndim<1>> ts, In<bool, nb::ndim<1>> flips) {
-    const Geom g = check_ridges("openness", pts, ridges);
-    const std::int64_t R = static_cast<std::int64_t>(ridges.shape(0));
-    check_simplices("openness", g, R, simplices, ridge_of);
+                       const Ridges& structure, In<std::int64_t, nb::ndim<1>> ts, In<bool, nb::ndim<1>> flips) {
+    const Geom g = check_ridges("openness", pts, structure.ridges);
+    const std::int64_t R = static_cast<std::int64_t>(structure.ridges.shape(0));
+    check_simplices("openness", g, R, simplices, structure.ridge_of);
     const std::int64_t m = static_cast<std::int64_t>(simplices.shape(0)), k1 = g.k1, n = k1 - 1;
-    check_incidence("openness", R, m, g.N, start, tri_of, opp);
+    check_incidence("openness", R, m, g.N, structure.start, structure.tri_of, structure.opp);
     if (static_cast<std::int64_t>(alive.shape(0)) != m) throw std::invalid_argument("openness: alive must have m entries");
     const std::int64_t count = static_cast<std::int64_t>(ts.shape(0));
     if (static_cast<std::int64_t>(flips.shape(0)) != count)
@@ -466,8 +471,8 @@ Array<double> openness(In<double, nb::ndim<2>> pts, In<std::int64_t, nb::ndim<2>
     const std::int64_t* TS = ts.data();
     for (std::int64_t i = 0; i < count; ++i)
         if (TS[i] < 0 || TS[i] >= m) throw std::invalid_argument("openness: t is outside 0..m-1");
-    const std::int64_t *S = simplices.data(), *RI = ridges.data(), *RO = ridge_of.data(), *ST = start.data(),
-                       *TO = tri_of.data(), *OP = opp.data();
+    const std::int64_t *S = simplices.data(), *RI = structure.ridges.data(), *RO = structure.ridge_of.data(),
+                       *ST = structure.start.data(), *TO = structure.tri_of.data(), *OP = structure.opp.data();
     const bool *AL = alive.data(), *FL = flips.data();
     std::vector<double> out(static_cast<std::size_t>(count));
     {
@@ -503,10 +508,14 @@ NB_MODULE(crust_trimming, m) {
     m.doc() = "The trimming step of the Crust: sharp ridges, the outer walk, the greedy manifold (thesis §3.4).";
     m.def("sharp_ridges", &thesis::sharp_ridges, nb::arg("pts"), nb::arg("ridges"), nb::arg("alive"), nb::arg("start"),
           nb::arg("tri_of"), nb::arg("opp"), nb::arg("todo"), nb::arg("sharp"));
-    m.def("walk", &thesis::walk, nb::arg("pts"), nb::arg("simplices"), nb::arg("alive"), nb::arg("ridges"),
-          nb::arg("ridge_of"), nb::arg("start"), nb::arg("tri_of"), nb::arg("opp"), nb::arg("seed"), nb::arg("seed_flip"),
-          nb::arg("breadth_first"), nb::arg("max_fold"));
+    nb::class_<thesis::Ridges>(m, "Ridges", "The ridges of the simplices and their incidences (_ridge_structure).")
+        .def(nb::init<thesis::In<std::int64_t, nb::ndim<2>>, thesis::In<std::int64_t, nb::ndim<2>>,
+                      thesis::In<std::int64_t, nb::ndim<1>>, thesis::In<std::int64_t, nb::ndim<1>>,
+                      thesis::In<std::int64_t, nb::ndim<1>>>(),
+             nb::arg("ridges"), nb::arg("ridge_of"), nb::arg("start"), nb::arg("tri_of"), nb::arg("opp"));
+    m.def("walk", &thesis::walk, nb::arg("pts"), nb::arg("simplices"), nb::arg("alive"), nb::arg("structure"),
+          nb::arg("seed"), nb::arg("seed_flip"), nb::arg("breadth_first"), nb::arg("max_fold"));
     m.def("greedy_manifold", &thesis::greedy_manifold, nb::arg("ridge_of"), nb::arg("order"), nb::arg("n_ridges"));
-    m.def("openness", &thesis::openness, nb::arg("pts"), nb::arg("simplices"), nb::arg("alive"), nb::arg("ridges"),
-          nb::arg("ridge_of"), nb::arg("start"), nb::arg("tri_of"), nb::arg("opp"), nb::arg("ts"), nb::arg("flips"));
+    m.def("openness", &thesis::openness, nb::arg("pts"), nb::arg("simplices"), nb::arg("alive"), nb::arg("structure"),
+          nb::arg("ts"), nb::arg("flips"));
 }

@@ -151,6 +151,13 @@ Array<std::int64_t> greedy_matching(std::int64_t n, In<std::int64_t, nb::ndim<1>
     return to_numpy(std::move(partner));
 }
 
+// A discrete gradient on the n cells: each cell's partner (−1: unpaired), its rank in the topological
+// order of the V-path graph, and whether it is critical.
+struct Gradient {
+    In<std::int64_t, nb::ndim<1>> partner, rank;
+    In<bool, nb::ndim<1>> is_crit;
+};
+
 // Theorem 4.42 for every critical cell in sources: flow ∂τ along gradient paths.  Up-paired k-cells
 // are eliminated in topological order of the V-path graph (a heap on (rank, id)); the coefficients
 // left on critical cells are the sums of multiplicities ±1 over gradient paths (mod p if p > 0).
@@ -158,8 +165,11 @@ Array<std::int64_t> greedy_matching(std::int64_t n, In<std::int64_t, nb::ndim<1>
 // Thesis: Theorem 4.42 (the Morse boundary), Theorem 4.44 (the modified Hasse diagram).
 std::tuple<Array<std::int64_t>, Array<std::int64_t>, Array<std::int64_t>, bool> morse_columns(
     std::int64_t n, In<std::int64_t, nb::ndim<1>> ptr, In<std::int64_t, nb::ndim<1>> idx,
-    In<std::int64_t, nb::ndim<1>> data, In<std::int64_t, nb::ndim<1>> partner, In<std::int64_t, nb::ndim<1>> rank,
-    In<bool, nb::ndim<1>> is_crit, In<std::int64_t, nb::ndim<1>> sources, std::int64_t p) {
+    In<std::int64_t, nb::ndim<1>> data, const Gradient& gradient, In<std::int64_t, nb::ndim<1>> sources,
+    std::int64_t p) {
+    const In<std::int64_t, nb::ndim<1>>& partner = gradient.partner;
+    const In<std::int64_t, nb::ndim<1>>& rank = gradient.rank;
+    const In<bool, nb::ndim<1>>& is_crit = gradient.is_crit;
     check_csr("morse_columns", n, ptr, idx);
     const std::int64_t* P = ptr.data();
     if (static_cast<std::int64_t>(data.shape(0)) < P[n])
@@ -247,6 +257,10 @@ NB_MODULE(discrete_gradient, m) {
     m.def("topological_rank", &thesis::topological_rank, nb::arg("n"), nb::arg("ptr"), nb::arg("idx"));
     m.def("greedy_matching", &thesis::greedy_matching, nb::arg("n"), nb::arg("down_ptr"), nb::arg("down_idx"),
           nb::arg("up_ptr"), nb::arg("up_idx"), nb::arg("vals"), nb::arg("order"));
+    nb::class_<thesis::Gradient>(m, "Gradient", "A discrete gradient: each cell's partner, rank and criticality.")
+        .def(nb::init<thesis::In<std::int64_t, nb::ndim<1>>, thesis::In<std::int64_t, nb::ndim<1>>,
+                      thesis::In<bool, nb::ndim<1>>>(),
+             nb::arg("partner"), nb::arg("rank"), nb::arg("is_crit"));
     m.def("morse_columns", &thesis::morse_columns, nb::arg("n"), nb::arg("ptr"), nb::arg("idx"), nb::arg("data"),
-          nb::arg("partner"), nb::arg("rank"), nb::arg("is_crit"), nb::arg("sources"), nb::arg("p"));
+          nb::arg("gradient"), nb::arg("sources"), nb::arg("p"));
 }

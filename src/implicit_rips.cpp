@@ -6,7 +6,9 @@
 // met as cofaces of the (k−1)-simplices (in parallel), those not cleared and not in a zero apparent
 // pair become coboundary columns, reduced latest first, with a lazy working column: a heap of coboundary enumerators, one
 // per added coboundary f · δs, each yielding the cofaces of s in filtration order (diameter up,
-// index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp.
+// index down).  The graph and the combinatorial number system are in implicit_rips_graph.hpp; on
+// request each bar's reduction chain is returned as its representative cocycle
+// (implicit_rips_cocycles.hpp).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -18,6 +20,7 @@
 
 #include "arrays.hpp"
 #include "column_heap.hpp"
+#include "implicit_rips_cocycles.hpp"
 #include "implicit_rips_graph.hpp"
 #include "union_find.hpp"
 
@@ -151,14 +154,24 @@ void edges_by_index(const Graph& g, std::vector<double>& ed, std::vector<i64>& e
     }
 }
 
+// One dimension's output as it is built: births, deaths and essential births, the statistics and the
+// cocycles (returned as a DimResult, below).
+struct DimOut {
+    std::vector<double> births, deaths, ess;
+    std::vector<i64> stats;
+    CocycleList cocycles;
+};
+
 // Union–find over the edges in filtration order (diameter up, index down), the vertices born at
 // vbirth (inf: not in the complex): the (birth, death) of each H0 class that dies (elder rule: of the
-// two classes an edge joins, the younger dies), the births of the components left, and the positive
-// edges (those closing a cycle).
+// two classes an edge joins, the younger dies) and the births of the components left, into out's bars,
+// and the positive edges (those closing a cycle).
 // Thesis: Definition 2.31 (elder rule), §2.3.4.
-void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::vector<i64>& ei,
-        std::vector<double>& births, std::vector<double>& deaths, std::vector<double>& ess,
+void h0(i64 n, const double* vbirth, const std::vector<double>& ed, const std::vector<i64>& ei, DimOut& out,
         std::vector<char>& positive) {
+    std::vector<double>& births = out.births;
+    std::vector<double>& deaths = out.deaths;
+    std::vector<double>& ess = out.ess;
     const i64 m = static_cast<i64>(ed.size());
     std::vector<i64> order(static_cast<std::size_t>(m));
     for (i64 e = 0; e < m; ++e) order[e] = e;
@@ -204,29 +217,36 @@ struct Scratch {
         : verts(static_cast<std::size_t>(k + 3)), cur(static_cast<std::size_t>(k + 3)), w(static_cast<std::size_t>(k + 3)) {}
 };
 
+// The earliest coface of a simplex when it has the simplex's diameter, whether the two form a zero
+// apparent pair, and whether the coface is taken (the upper simplex of another one).
+struct EarliestCoface {
+    Coface coface;
+    bool apparent, taken;
+};
+
 // The earliest coface tau of the k-simplex s (vertices verts, diameter d) when it has s's diameter
 // (index −1 otherwise), and whether the two form a zero apparent pair: always when the new vertex is
 // above s's (s omits tau's top vertex and has tau's diameter: the latest facet), else when tau's
 // latest facet is s.  When they do not, taken says whether tau is the upper simplex of another zero
 // apparent pair (e, tau) (e its latest facet), so that s cannot be paired with tau at once.
 // Thesis: Definition 4.30 (a pair of the discrete gradient), Theorem 4.42's idea.
-Coface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x, bool& apparent,
-                             bool& taken) {
+EarliestCoface earliest_equal_coface(const Graph& g, const i64* verts, i64 k, i64 s, double d, Scratch& x) {
     double od[1];
     i64 oi[1], oj[1];
-    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, x.cur.data(), od, oi, oj);
-    apparent = t.index != -1 && t.m == 0;
-    taken = false;
+    const CofaceBuffers one{x.cur.data(), od, oi, oj};
+    const Coface t = zero_pivot_cofacet(g, verts, k, s, d, one);
+    bool apparent = t.index != -1 && t.m == 0;
+    bool taken = false;
     if (t.index != -1 && t.m > 0) {
         for (i64 r = 0; r < k + 2; ++r) x.w[r] = r < t.m ? verts[r] : (r == t.m ? t.j : verts[r - 1]);
         const i64 e = zero_pivot_facet(g, t.index, k + 1, d, x.w.data(), true);
         apparent = e == s;
         if (e != -1 && e != s) {
             vertices(g, e, k, x.verts.data());
-            taken = zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == t.index;
+            taken = zero_pivot_cofacet(g, x.verts.data(), k, e, d, one).index == t.index;
         }
     }
-    return t;
+    return {t, apparent, taken};
 }
 
 // The k-simplex e with (e, tau) a zero apparent pair, for the (k + 1)-simplex tau of diameter d; −1
@@ -238,7 +258,7 @@ i64 zero_apparent_facet(const Graph& g, i64 tau, i64 k, double d, Scratch& x) {
     vertices(g, e, k, x.verts.data());
     double od[1];
     i64 oi[1], oj[1];
-    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, x.cur.data(), od, oi, oj).index == tau ? e : -1;
+    return zero_pivot_cofacet(g, x.verts.data(), k, e, d, {x.cur.data(), od, oi, oj}).index == tau ? e : -1;
 }
 
 // ---------------------------------------------------------------------------- the columns of a dimension
@@ -284,8 +304,20 @@ struct Blocks {
     }
 };
 
-// The columns of dimension k among the k-simplices met from the blocks lo .. hi − 1 of `from`, which
-// holds the (k − levels)-simplices: with levels 0 the k-simplices themselves; with 1 each (k − 1)-simplex
+// What one dimension k is assembled from: the blocks `from` of (k − levels)-simplices, whether the
+// k-simplices met are kept (keep_all) and whether a dimension k + 1 follows (next), and the tables of
+// dimension k − 1: its pivots (cleared) and the upper simplices of its zero apparent pairs (uppers).
+struct Assembly {
+    i64 k;
+    const Blocks& from;
+    i64 levels;
+    bool keep_all, next;
+    const Table& cleared;
+    const Table& uppers;
+};
+
+// The columns of dimension k (of the assembly a) among the k-simplices met from the blocks lo .. hi − 1
+// of `from`, which holds the (k − levels)-simplices: with levels 0 the k-simplices themselves; with 1 each (k − 1)-simplex
 // f and its cofaces tau = f ∪ {j} with j above f's vertices are met (each k-simplex once, its
 // vertices known); with 2 the (k − 1)-simplices f are met the same way from the (k − 2)-simplices,
 // and not stored (the top dimension's facets, the largest list).  A simplex met is kept in all when
@@ -298,8 +330,11 @@ struct Blocks {
 // follows), and looked up only for the cofaces above f's diameter.
 // Thesis: Algorithm 2 with clearing (Theorem 2.39's dual reduction), Definition 2.11 (a coface of a
 // flag simplex is a common neighbour), Definitions 4.30–4.33 (apparent pairs).
-void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i64 levels, bool keep_all,
-                    bool next, const Table& cleared, const Table& uppers, i64 maxdeg, Assembled& out) {
+void assemble_block(const Graph& g, const Assembly& a, i64 lo, i64 hi, i64 maxdeg, Assembled& out) {
+    const i64 k = a.k, levels = a.levels;
+    const bool keep_all = a.keep_all, next = a.next;
+    const Blocks& from = a.from;
+    const Table &cleared = a.cleared, &uppers = a.uppers;
     Scratch x(k);
     const std::size_t width = static_cast<std::size_t>(maxdeg + 1);
     std::vector<i64> sv(static_cast<std::size_t>(k + 1)), fv(static_cast<std::size_t>(k)),
@@ -310,22 +345,24 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
         oj2.resize(width);
         od2.resize(width);
     }
+    const CofaceBuffers level1{cur.data(), od.data(), oi.data(), oj.data()},
+        level2{cur.data(), od2.data(), oi2.data(), oj2.data()};  // the cofaces of f; of a (k − 2)-simplex
     auto meet = [&](double d, i64 s, bool upper) {  // s of diameter d and vertices sv
         if (keep_all) out.all.push_back({d, s});
         if (upper || cleared.contains(s)) return;
         ++out.candidates;
-        bool app, taken;
-        const Coface t = earliest_equal_coface(g, sv.data(), k, s, d, x, app, taken);
-        if (app) {
+        const EarliestCoface early = earliest_equal_coface(g, sv.data(), k, s, d, x);
+        const Coface& t = early.coface;
+        if (early.apparent) {
             ++out.apparent;
             if (next && t.m > 0) out.uppers.push_back(t.index);
         } else {
-            out.columns.push_back({d, s, taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
+            out.columns.push_back({d, s, early.taken ? -1 : t.index, 1 - 2 * (t.m & 1)});
         }
     };
     auto above = [&](double fd, i64 fidx) {  // the cofaces of f (vertices fv) above its vertices
         std::copy(fv.begin(), fv.end(), sv.begin() + 1);
-        const i64 c = cofaces(g, fv.data(), k - 1, fidx, fd, cur.data(), od.data(), oi.data(), oj.data(), false, true);
+        const i64 c = cofaces(g, fv.data(), k - 1, fidx, fd, level1, false, true);
         bool first = true;  // no coface of f's diameter met yet
         for (i64 t = 0; t < c; ++t) {
             sv[0] = oj[t];
@@ -360,8 +397,7 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
             above(f.d, f.idx);
         } else {  // f is a (k − 2)-simplex: its cofaces above it are the facets met
             decode(f.idx, k - 1, hv.data(), rest);
-            const i64 c = cofaces(g, hv.data(), k - 2, f.idx, f.d, cur.data(), od2.data(), oi2.data(), oj2.data(), false,
-                                  true);
+            const i64 c = cofaces(g, hv.data(), k - 2, f.idx, f.d, level2, false, true);
             std::copy(hv.begin(), hv.end(), fv.begin() + 1);
             for (i64 t = 0; t < c; ++t) {
                 fv[0] = oj2[t];
@@ -371,14 +407,13 @@ void assemble_block(const Graph& g, i64 k, const Blocks& from, i64 lo, i64 hi, i
     });
 }
 
-// assemble_block over all of `from`: on one thread when fewer than parallel_min k-simplices are to be
+// assemble_block over all of a.from: on one thread when fewer than parallel_min k-simplices are to be
 // met (estimated as |from| times the mean degree over k + 1 per level, over k for a second), else in
 // 8 · threads blocks shared by the threads; the blocks' shares are kept in block order, so nothing
 // depends on how the blocks were shared.
-std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, i64 levels, bool keep_all, bool next,
-                                const Table& cleared, const Table& uppers, i64 maxdeg, int threads,
-                                i64 parallel_min) {
-    const i64 m = from.size();
+std::vector<Assembled> assemble(const Graph& g, const Assembly& a, i64 maxdeg, int threads, i64 parallel_min) {
+    const i64 k = a.k, levels = a.levels;
+    const i64 m = a.from.size();
     const double degree = static_cast<double>(g.indptr[g.n]) / static_cast<double>(g.n);
     double met = static_cast<double>(m);
     for (i64 l = 0; l < levels; ++l) met *= degree / static_cast<double>(k + 1 - l);
@@ -391,8 +426,8 @@ std::vector<Assembled> assemble(const Graph& g, i64 k, const Blocks& from, i64 l
     auto work = [&](int t) {
         try {
             for (i64 b = taken++; b < nblocks; b = taken++)
-                assemble_block(g, k, from, std::min(m, b * size), std::min(m, (b + 1) * size), levels, keep_all,
-                               next, cleared, uppers, maxdeg, out[static_cast<std::size_t>(b)]);
+                assemble_block(g, a, std::min(m, b * size), std::min(m, (b + 1) * size), maxdeg,
+                               out[static_cast<std::size_t>(b)]);
         } catch (...) {
             errors[static_cast<std::size_t>(t)] = std::current_exception();
         }
@@ -635,19 +670,22 @@ class Reducer {
     }
 };
 
-// The outcome of one dimension's reduction.
+// The outcome of one dimension's reduction: the finite bars, the essential ones, their cocycles (when
+// asked for, in the same orders) and the statistics.
 struct Reduced {
     std::vector<double> births, deaths, ess;
+    CocycleList finite, essential;
     Table pivots{0};
     i64 emergent = 0, worked = 0, additions = 0, read = 0, most = 0;
 };
 
 // Reduce the coboundary columns of the k-simplices cols (latest first) over Z/p: each column's tau and
 // sign are its earliest coface when that may make an emergent pair (else −1) and its sign; the
-// pivots of zero apparent pairs met are found by zero_apparent_facet.
+// pivots of zero apparent pairs met are found by zero_apparent_facet.  With cocycles, the chain V of
+// each column that gives a bar (of positive length, or essential) is kept as its representative.
 // Thesis: Algorithm 1 (Reduce) inside Algorithm 2, §2.3.5, on the cohomology side (Theorem 2.39),
 // with emergent and apparent pairs (Definitions 4.30–4.33).
-Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
+Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p, bool cocycles) {
     const i64 ncol = static_cast<i64>(cols.size());
     Reduced out;
     out.pivots = Table(ncol);
@@ -681,6 +719,7 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
         wc.clear();
         wd.clear();
         i64 piv = -1;
+        bool bar = false;  // a finite bar of positive length
         for (;;) {
             const Pivot<double, i64, i64> pv = col.pop_pivot(out.read);
             if (pv.coef == 0) {  // the column is zero: s creates an essential class
@@ -734,6 +773,7 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
             if (pv.value > ds) {
                 out.births.push_back(ds);
                 out.deaths.push_back(pv.value);
+                bar = true;
             }
             piv_t.keys[h] = piv;
             piv_t.vals[h] = c;
@@ -743,6 +783,8 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
         out.most = std::max(out.most, col.nr);
         const i64 wn = static_cast<i64>(wk.size());
         if (wn > 0) ++out.worked;
+        if (cocycles && (bar || piv == -1))
+            append_cocycle(g, k, p, s, ds, {wk.data(), wc.data(), wd.data(), wn}, piv == -1 ? out.essential : out.finite);
         if (piv == -1) {
             out.ess.push_back(ds);
             continue;
@@ -761,13 +803,22 @@ Reduced reduce(const Graph& g, i64 k, const std::vector<Column>& cols, i64 p) {
     return out;
 }
 
-// One dimension's output: births, deaths, essential births and the statistics (simplices, apparent,
-// columns, emergent, reduced, additions, entries, enumerators).
-using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>>;
+// One dimension's output: births, deaths, essential births, the statistics (simplices, apparent,
+// columns, emergent, reduced, additions, entries, enumerators) and, when asked for, the cocycles of
+// the finite bars then of the essential ones: their offsets (one more than the bars; [0] when not
+// asked for, and in dimension 0) and their rows, (vertices, coefficient) each.
+using DimResult = std::tuple<Array<double>, Array<double>, Array<double>, Array<i64>, Array<i64>, Array<i64>>;
 
-struct DimOut {
-    std::vector<double> births, deaths, ess;
-    std::vector<i64> stats;
+// The options of rips_barcode: the largest simplex dimension, the prime, whether the dense distance
+// matrix is kept, the threads (0: OMP_NUM_THREADS or every core), the number of k-simplices from
+// which a dimension is assembled in parallel, and whether representative cocycles are returned.
+struct Options {
+    i64 max_dim = 2;
+    i64 p = 2;
+    bool dense = true;
+    int n_threads = 0;
+    i64 parallel_min = 50000;
+    bool cocycles = false;
 };
 
 // Refuse a graph that is not the symmetric, sorted neighbour lists of rips_graph.
@@ -809,12 +860,15 @@ void check_graph(i64 n, const i64* indptr, std::size_t nptr, const i64* nbr, con
 // The barcode of the Rips filtration of the graph in dimensions 0 .. max_dim − 1, in diameters: births,
 // deaths and essential births per dimension (in dimension 0 the vertices are born at vertex_births,
 // inf for a vertex not in the complex; an edge's length is at least its vertices' births), with the
-// statistics of the reduction above dimension 0.
+// statistics of the reduction above dimension 0 and, with options.cocycles, a representative cocycle
+// of each bar of dimension >= 1 (implicit_rips_cocycles.hpp).
 // Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, by the dual reduction),
 // Definitions 4.30–4.33 and Theorem 4.42 (apparent pairs as a discrete gradient).
 std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, nb::ndim<1>> neighbours,
                                     In<double, nb::ndim<1>> lengths, In<double, nb::ndim<1>> vertex_births,
-                                    i64 max_dim, i64 p, bool dense, int n_threads, i64 parallel_min) {
+                                    const Options& options) {
+    const i64 max_dim = options.max_dim, p = options.p, parallel_min = options.parallel_min;
+    const bool dense = options.dense;
     check_graph(n, indptr.data(), indptr.shape(0), neighbours.data(), lengths.data(), neighbours.shape(0),
                 lengths.shape(0));
     if (vertex_births.shape(0) != static_cast<std::size_t>(n))
@@ -824,7 +878,7 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
     if (max_dim < 1 || max_dim > n + 1) throw std::invalid_argument("rips_barcode: max_dim must be in 1 .. n + 1");
     if (p < 2 || p >= (i64(1) << 31)) throw std::invalid_argument("rips_barcode: p must be a prime below 2^31");
     if (dense && n > 46340) throw std::invalid_argument("rips_barcode: too many points for a dense matrix");
-    const int threads = thread_count(n_threads);
+    const int threads = thread_count(options.n_threads);
     std::vector<DimOut> dims(static_cast<std::size_t>(max_dim));
     {
         nb::gil_scoped_release release;
@@ -842,7 +896,7 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
         std::vector<i64> ei;
         edges_by_index(g, ed, ei);
         std::vector<char> positive;
-        h0(n, vertex_births.data(), ed, ei, dims[0].births, dims[0].deaths, dims[0].ess, positive);
+        h0(n, vertex_births.data(), ed, ei, dims[0], positive);
         // ---- dimensions 1 .. max_dim − 1: cohomology with clearing, apparent and emergent pairs
         Blocks from, all;  // the candidates of H1 (the positive edges); every (k − 1)-simplex, to build the k-simplices
         from.parts.emplace_back();
@@ -861,9 +915,9 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
             const bool next = k + 1 < max_dim;
             const bool two = k >= 3 && !next;
             const bool keep = next && !(k + 2 == max_dim && k >= 2);
-            std::vector<Assembled> parts = k == 1
-                ? assemble(g, 1, from, 0, false, next, cleared, uppers, maxdeg, threads, parallel_min)
-                : assemble(g, k, all, two ? 2 : 1, keep, next, cleared, uppers, maxdeg, threads, parallel_min);
+            const Assembly step = k == 1 ? Assembly{1, from, 0, false, next, cleared, uppers}
+                                         : Assembly{k, all, two ? 2 : 1, keep, next, cleared, uppers};
+            std::vector<Assembled> parts = assemble(g, step, maxdeg, threads, parallel_min);
             if (k >= 2 && (keep || !next)) {
                 all.parts.clear();
                 if (keep)
@@ -891,20 +945,27 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
             // latest first: diameter down, index up
             std::sort(cols.begin(), cols.end(),
                       [](const Column& a, const Column& b) { return a.d > b.d || (a.d == b.d && a.idx < b.idx); });
-            Reduced red = reduce(g, k, cols, p);
+            Reduced red = reduce(g, k, cols, p, options.cocycles);
             DimOut& out = dims[static_cast<std::size_t>(k)];
             out.births = std::move(red.births);
             out.deaths = std::move(red.deaths);
             out.ess = std::move(red.ess);
+            if (options.cocycles) {  // the finite bars' cocycles, then the essential ones'
+                out.cocycles = std::move(red.finite);
+                extend(out.cocycles, red.essential);
+            }
             out.stats = {ncand, napp, static_cast<i64>(cols.size()), red.emergent, red.worked, red.additions, red.read,
                          red.most};
             cleared = std::move(red.pivots);
         }
     }
     std::vector<DimResult> result;
-    for (DimOut& d : dims) {
+    for (std::size_t k = 0; k < dims.size(); ++k) {
+        DimOut& d = dims[k];
+        const std::size_t nrows = d.cocycles.rows.size() / (k + 2);
         result.emplace_back(to_numpy(std::move(d.births)), to_numpy(std::move(d.deaths)), to_numpy(std::move(d.ess)),
-                            to_numpy(std::move(d.stats)));
+                            to_numpy(std::move(d.stats)), to_numpy(std::move(d.cocycles.offsets)),
+                            to_numpy(std::move(d.cocycles.rows), {nrows, k + 2}));
     }
     return result;
 }
@@ -914,12 +975,20 @@ std::vector<DimResult> rips_barcode(i64 n, In<i64, nb::ndim<1>> indptr, In<i64, 
 
 NB_MODULE(implicit_rips, m) {
     namespace nb = nanobind;
-    m.doc() = "The implicit Vietoris–Rips persistence engine (thesis Definition 2.11, Algorithm 2, §4.2).";
+    m.doc() = "The implicit Vietoris–Rips persistence engine (thesis Definition 2.11, Algorithm 2, §4.2), "
+              "with representative cocycles on request.";
     m.def("neighbour_lists", &thesis::rips::neighbour_lists, nb::arg("n"), nb::arg("edges"), nb::arg("lengths"),
           "Symmetric neighbour lists (indptr, neighbours, lengths) of the edges, each list by decreasing vertex.");
+    nb::class_<thesis::rips::Options>(m, "Options", "The options of rips_barcode.")
+        .def(nb::init<>())
+        .def_rw("max_dim", &thesis::rips::Options::max_dim)
+        .def_rw("p", &thesis::rips::Options::p)
+        .def_rw("dense", &thesis::rips::Options::dense)
+        .def_rw("n_threads", &thesis::rips::Options::n_threads)
+        .def_rw("parallel_min", &thesis::rips::Options::parallel_min)
+        .def_rw("cocycles", &thesis::rips::Options::cocycles);
     m.def("rips_barcode", &thesis::rips::rips_barcode, nb::arg("n"), nb::arg("indptr"), nb::arg("neighbours"),
-          nb::arg("lengths"), nb::arg("vertex_births"), nb::arg("max_dim"), nb::arg("p"), nb::arg("dense"),
-          nb::arg("n_threads"),
-          nb::arg("parallel_min"),
-          "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics), in diameters.");
+          nb::arg("lengths"), nb::arg("vertex_births"), nb::arg("options"),
+          "Per dimension 0 .. max_dim - 1: (births, deaths, essential births, statistics, cocycle offsets, "
+          "cocycle rows), in diameters.");
 }

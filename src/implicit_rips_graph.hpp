@@ -127,14 +127,29 @@ inline i64 upper(const double* arr, i64 lo, i64 hi, double x) {
     return lo;
 }
 
+// The buffers an enumeration of cofaces writes into: cur, one list position per vertex of the simplex
+// (scratch), and per coface found its diameter, index and new vertex (d, index, j: room for as many
+// cofaces as the simplex's vertex of least degree has neighbours, or for one when only the first is
+// asked for).
+struct CofaceBuffers {
+    i64* cur;
+    double* d;
+    i64* index;
+    i64* j;
+};
+
 // Enumerate the cofaces s ∪ {j} of the k-simplex s (vertices verts, decreasing), j decreasing: each
-// coface's diameter, index and new vertex j into out_*, returning their number.  With first_equal it
+// coface's diameter, index and new vertex j into out, returning their number.  With first_equal it
 // stops at the first coface of diameter diam (the earliest coface when one has s's diameter) and
 // returns 1 (0 when there is none); with above_only only cofaces whose new vertex is above s's are
 // listed (each (k+1)-simplex from exactly one facet).
 // Thesis: Definition 2.11 (a coface of a flag simplex is a common neighbour), §2.3.5 (coboundary).
-inline i64 cofaces(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur, double* out_d,
-                   i64* out_i, i64* out_j, bool first_equal, bool above_only) {
+inline i64 cofaces(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, const CofaceBuffers& out,
+                   bool first_equal, bool above_only) {
+    i64* cur = out.cur;
+    double* out_d = out.d;
+    i64* out_i = out.index;
+    i64* out_j = out.j;
     const i64* indptr = g.indptr;
     const i64* nbr = g.nbr;
     const double* length = g.length;
@@ -230,10 +245,11 @@ inline i64 dense_first(const Graph& g, const i64* verts, i64 k, double diam) {
 // new vertex j (−1 when not known).  The cofaces of s's diameter are s ∪ {j} for the j within diam of
 // every vertex; the earliest has the largest j.  When one vertex has few neighbours that close they
 // are read from its distance-sorted list and checked; otherwise the coboundary is scanned with j
-// decreasing up to the first hit (with a dense matrix, a scan of its columns j = n − 1, n − 2, ...).
+// decreasing up to the first hit (with a dense matrix, a scan of its columns j = n − 1, n − 2, ...),
+// written into out (room for one coface).
 // Thesis: Definition 4.30 (the earliest coface of a zero apparent pair), Theorem 4.42's idea.
-inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 idx, double diam, i64* cur,
-                                 double* od, i64* oi, i64* oj) {
+inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 idx, double diam,
+                                 const CofaceBuffers& out) {
     const i64* indptr = g.indptr;
     const double* dlen = g.dlen.data();
     if (g.dense) {  // every vertex has more than 1/8 of its neighbours within diam: scan D
@@ -261,7 +277,7 @@ inline Coface zero_pivot_cofacet(const Graph& g, const i64* verts, i64 k, i64 id
     i64 jmax = -1;
     if (8 * bcount > indptr[verts[best] + 1] - indptr[verts[best]]) {
         if (g.dense) return with_vertex(g, verts, k, idx, dense_first(g, verts, k, diam));
-        if (cofaces(g, verts, k, idx, diam, cur, od, oi, oj, true, false)) return with_vertex(g, verts, k, idx, oj[0]);
+        if (cofaces(g, verts, k, idx, diam, out, true, false)) return with_vertex(g, verts, k, idx, out.j[0]);
         return {-1, 0, -1};
     }
     const i64 vb = verts[best];

@@ -1,5 +1,5 @@
 // Smith normal form mod primes: the word-size kernels of the exact Smith form of a dense integer
-// matrix by modular arithmetic (port of thesis_lib/_modular.py): rank profiles and determinants with
+// matrix by modular arithmetic (driven by thesis_lib/homology/_modular.py): rank profiles and determinants with
 // adjugates modulo 26-bit primes (float64 residues), inverses modulo a 31-bit prime, and p-adic digits
 // of b⁻¹ y (Dixon).  The drivers (Chinese remaindering, rational reconstruction, the Smith form over
 // Z/M) stay in Python on Python integers.
@@ -41,10 +41,18 @@ inline double sub_mod(double d, double s, double f, double p, double inv_p) {
     return x;
 }
 
-// dst[c] = (dst[c] - f src[c]) mod p over idx[0, n_idx) (if n_idx >= 0) or [lo, hi).
+// The columns a row operation touches: idx[0, n_idx) when n_idx >= 0 (the non-zero columns of a
+// sparse pivot row), else the range [lo, hi).
+struct ColumnSet {
+    const std::int64_t* idx;
+    std::int64_t n_idx, lo, hi;
+};
+
+// dst[c] = (dst[c] - f src[c]) mod p over the columns c of cols.
 // Thesis: Theorem 2.20 (row operation 3: row i + q row j), over Z_p.
-inline void axpy(double* dst, const double* src, double f, double p, double inv_p, const std::int64_t* idx,
-                 std::int64_t n_idx, std::int64_t lo, std::int64_t hi) {
+inline void axpy(double* dst, const double* src, double f, double p, double inv_p, const ColumnSet& cols) {
+    const std::int64_t* idx = cols.idx;
+    const std::int64_t n_idx = cols.n_idx, lo = cols.lo, hi = cols.hi;
     if (n_idx >= 0) {
         for (std::int64_t t = 0; t < n_idx; ++t) {
             const std::int64_t c = idx[t];
@@ -123,12 +131,13 @@ std::tuple<Array<std::int64_t>, Array<std::int64_t>> rank_profile(Out<double, nb
                 }
             }
             const std::int64_t sparse = 2 * nnz < n - j ? nnz : -1;
+            const ColumnSet touched{idx.data(), sparse, j, n};
             for (std::int64_t i = k + 1; i < m; ++i) {
                 double* ri = a + i * n;
                 if (ri[j] != 0) {
                     double f = ri[j] * inv;
                     f -= fp * floor_small(f * inv_p);
-                    axpy(ri, rk, f, fp, inv_p, idx.data(), sparse, j, n);
+                    axpy(ri, rk, f, fp, inv_p, touched);
                 }
             }
             rows.push_back(order[k]);
@@ -181,12 +190,13 @@ std::tuple<std::int64_t, Array<std::int64_t>, bool> det_adjugate(In<double, nb::
             }
             det = det * static_cast<std::int64_t>(rk[k]) % p;
             const double inv = static_cast<double>(mod_inverse(static_cast<std::int64_t>(rk[k]), p));
+            const ColumnSet right{nullptr, -1, k + 1, w};  // the columns right of the pivot
             for (std::int64_t i = k + 1; i < r; ++i) {
                 double* ri = A + i * w;
                 if (ri[k] != 0) {
                     double f = ri[k] * inv;
                     f -= fp * floor_small(f * inv_p);
-                    axpy(ri, rk, f, fp, inv_p, nullptr, -1, k + 1, w);
+                    axpy(ri, rk, f, fp, inv_p, right);
                 }
             }
         }

@@ -24,6 +24,14 @@ constexpr int KEEP_V = 0, KEEP_V_ALL = 1, KEEP_REDUCED = 2;
 using I64 = Array<std::int64_t>;
 using Reduction = std::tuple<I64, I64, I64, std::int64_t, I64, I64, I64, I64>;
 
+// The columns to reduce (in that order) and the state of every column of the matrix: cleared (to be
+// skipped), its pivot (least row, −1 when empty) and the coefficient there.
+struct ColumnState {
+    In<std::int64_t, nb::ndim<1>> columns;
+    In<bool, nb::ndim<1>> cleared;
+    In<std::int64_t, nb::ndim<1>> pivot, pivot_coef;
+};
+
 // Reduce the columns `columns` (in that order) of the CSC matrix (indptr, rows, coefs) over Z/p, rows
 // ordered by (row_value[r], r), pivot = least row; cleared columns are skipped, a column whose pivot
 // is free is paired untouched, a colliding column is reduced lazily on a heap (Bauer 2021) by adding
@@ -33,10 +41,12 @@ using Reduction = std::tuple<I64, I64, I64, std::int64_t, I64, I64, I64, I64>;
 // Thesis: Algorithm 1 (Reduce) inside Algorithm 2 (ComputeIntervals), §2.3.5.
 template <class R, class C>
 Reduction reduce_columns(In<std::int64_t, nb::ndim<1>> indptr_a, In<R, nb::ndim<1>> rows_a,
-                         In<C, nb::ndim<1>> coefs_a, In<double, nb::ndim<1>> row_value_a,
-                         In<std::int64_t, nb::ndim<1>> columns_a, In<bool, nb::ndim<1>> cleared_a,
-                         In<std::int64_t, nb::ndim<1>> pivot_a, In<std::int64_t, nb::ndim<1>> pivot_coef_a,
+                         In<C, nb::ndim<1>> coefs_a, In<double, nb::ndim<1>> row_value_a, const ColumnState& state,
                          std::int64_t p, int keep) {
+    const In<std::int64_t, nb::ndim<1>>& columns_a = state.columns;
+    const In<bool, nb::ndim<1>>& cleared_a = state.cleared;
+    const In<std::int64_t, nb::ndim<1>>& pivot_a = state.pivot;
+    const In<std::int64_t, nb::ndim<1>>& pivot_coef_a = state.pivot_coef;
     // ---- the shapes and indices, checked once (the rows of an entry where it is read)
     if (indptr_a.shape(0) < 1) throw std::invalid_argument("reduce_columns: indptr must have m + 1 >= 1 entries");
     const std::int64_t m = static_cast<std::int64_t>(indptr_a.shape(0)) - 1;
@@ -195,8 +205,7 @@ Reduction reduce_columns(In<std::int64_t, nb::ndim<1>> indptr_a, In<R, nb::ndim<
 template <class R, class C>
 void bind_reduce_columns(nb::module_& m) {
     m.def("reduce_columns", &reduce_columns<R, C>, nb::arg("indptr"), nb::arg("rows"), nb::arg("coefs"),
-          nb::arg("row_value"), nb::arg("columns"), nb::arg("cleared"), nb::arg("pivot"), nb::arg("pivot_coef"),
-          nb::arg("p"), nb::arg("keep"));
+          nb::arg("row_value"), nb::arg("state"), nb::arg("p"), nb::arg("keep"));
 }
 
 }  // namespace thesis
@@ -206,6 +215,14 @@ NB_MODULE(reduction, m) {
     m.attr("KEEP_V") = thesis::KEEP_V;
     m.attr("KEEP_V_ALL") = thesis::KEEP_V_ALL;
     m.attr("KEEP_REDUCED") = thesis::KEEP_REDUCED;
+    namespace nb = nanobind;
+    using thesis::In;
+    nb::class_<thesis::ColumnState>(m, "ColumnState",
+                                    "The columns to reduce, in order, and every column's cleared flag, pivot and "
+                                    "pivot coefficient.")
+        .def(nb::init<In<std::int64_t, nb::ndim<1>>, In<bool, nb::ndim<1>>, In<std::int64_t, nb::ndim<1>>,
+                      In<std::int64_t, nb::ndim<1>>>(),
+             nb::arg("columns"), nb::arg("cleared"), nb::arg("pivot"), nb::arg("pivot_coef"));
     // rows as int32 (the explicit engine's coboundaries) or int64, coefficients as int8 (signs) or int64
     thesis::bind_reduce_columns<std::int32_t, std::int8_t>(m);
     thesis::bind_reduce_columns<std::int32_t, std::int64_t>(m);

@@ -1,6 +1,6 @@
 // Integer homology by elimination: sparse Gaussian elimination on unit pivots with the Markowitz rule,
 // over Z (pivots ±1, every entry kept within a limit) or over Z/p, and the dense unit-pivot elimination
-// that finishes it.  The first stage of thesis_lib.smith (port of thesis_lib/_elimination.py).
+// that finishes it.  The first stage of thesis_lib.homology.smith (driven by thesis_lib/homology/_elimination.py).
 //
 // Each step is unimodular over Z, A ~ (v) ⊕ A' with A' the Schur complement, so after t pivots
 // SNF(A) = I_t ⊕ SNF(core); over Z/p the core is empty and t is the rank.
@@ -161,6 +161,17 @@ inline void ensure(std::vector<T>& v, std::int64_t need) {
 
 }  // namespace
 
+// The options of markowitz: the modulus p (0: Z), the bound lim on entries over Z, how many shortest
+// rows and columns a pivot is searched among, and the density (with at most max_dense entries) at
+// which the active matrix is handed to the dense kernel.
+struct Options {
+    std::int64_t p;
+    std::int64_t lim;
+    std::int64_t search;
+    double density;
+    std::int64_t max_dense;
+};
+
 // Sparse Markowitz elimination of a CSC matrix on unit pivots: while the active matrix is sparse,
 // pivot on the unit entry of least (r - 1)(c - 1) among the `search` shortest rows and columns and
 // replace the other rows of its column by the Schur complement; over Z a step that would make an
@@ -171,8 +182,10 @@ inline void ensure(std::vector<T>& v, std::int64_t need) {
 std::tuple<std::int64_t, Array<bool>, Array<std::int64_t>, Array<std::int64_t>, Array<std::int64_t>,
            Array<std::int64_t>>
 markowitz(In<std::int64_t, nb::ndim<1>> indptr_a, In<std::int64_t, nb::ndim<1>> indices_a,
-          In<std::int64_t, nb::ndim<1>> data_a, std::int64_t n_rows, In<bool, nb::ndim<1>> skip_a, std::int64_t p,
-          std::int64_t lim, std::int64_t search, double density, std::int64_t max_dense) {
+          In<std::int64_t, nb::ndim<1>> data_a, std::int64_t n_rows, In<bool, nb::ndim<1>> skip_a,
+          const Options& options) {
+    const std::int64_t p = options.p, lim = options.lim, search = options.search, max_dense = options.max_dense;
+    const double density = options.density;
     // ---- checks (the Python layer validates; these keep every index and product in range)
     const std::int64_t n_ptr = static_cast<std::int64_t>(indptr_a.shape(0));
     if (n_ptr < 1) throw std::invalid_argument("indptr must have at least one entry");
@@ -643,9 +656,16 @@ std::tuple<std::int64_t, Array<bool>, Array<bool>> dense_unit_elimination(Out<st
 
 NB_MODULE(sparse_elimination, m) {
     m.doc() = "Integer homology by elimination: sparse Markowitz and dense unit-pivot elimination (thesis §2.2.1).";
+    nanobind::class_<thesis::Options>(m, "Options", "The options of markowitz.")
+        .def(nanobind::init<std::int64_t, std::int64_t, std::int64_t, double, std::int64_t>(), nanobind::arg("p"),
+             nanobind::arg("lim"), nanobind::arg("search"), nanobind::arg("density"), nanobind::arg("max_dense"))
+        .def_rw("p", &thesis::Options::p)
+        .def_rw("lim", &thesis::Options::lim)
+        .def_rw("search", &thesis::Options::search)
+        .def_rw("density", &thesis::Options::density)
+        .def_rw("max_dense", &thesis::Options::max_dense);
     m.def("markowitz", &thesis::markowitz, nanobind::arg("indptr"), nanobind::arg("indices"), nanobind::arg("data"),
-          nanobind::arg("n_rows"), nanobind::arg("skip"), nanobind::arg("p"), nanobind::arg("lim"),
-          nanobind::arg("search"), nanobind::arg("density"), nanobind::arg("max_dense"));
+          nanobind::arg("n_rows"), nanobind::arg("skip"), nanobind::arg("options"));
     m.def("dense_unit_elimination", &thesis::dense_unit_elimination, nanobind::arg("a").noconvert(),
           nanobind::arg("p"), nanobind::arg("lim"));
 }

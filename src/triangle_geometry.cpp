@@ -11,15 +11,29 @@ namespace thesis {
 // Python's max(a, b, ...) on floats: the first of the largest (a later value replaces only when >).
 inline double py_max(double a, double b) { return b > a ? b : a; }
 
-// Fill the corner data of the triangles s (m, 3) of the vertices v (nv, 3): dot (3, m), sq (3, m),
-// twice (m,), pts (3, 3, m), lo and hi (m, 3); return (first simplex with a repeated vertex, first
+// The corner data of m triangles, filled by triangle_kernel: the Gram entries dot (3, m) and squared
+// edges sq (3, m) at each corner, twice the areas (m,), the corners' coordinates pts (3, 3, m), and the
+// ends lo < hi (m, 3) of the edge opposite each corner.
+struct Corners {
+    Out<double, nb::ndim<2>> dot, sq;
+    Out<double, nb::ndim<1>> twice;
+    Out<double, nb::ndim<3>> pts;
+    Out<std::int64_t, nb::ndim<2>> lo, hi;
+};
+
+// Fill the corner data out (dot, sq, twice, pts, lo, hi) of the triangles s (m, 3) of the vertices
+// v (nv, 3); return (first simplex with a repeated vertex, first
 // degenerate one, number of degenerate ones, longest squared edge), -1 for none (degenerate: area
 // <= rtol * longest edge², as in validate_mesh).
 // Thesis: Theorem 3.18 and §3.3.2 (the Gram matrices and corner cotangents of triangles).
 std::tuple<std::int64_t, std::int64_t, std::int64_t, double> triangle_kernel(
-    In<double, nb::ndim<2>> v, In<std::int64_t, nb::ndim<2>> s, Out<double, nb::ndim<2>> dot,
-    Out<double, nb::ndim<2>> sq, Out<double, nb::ndim<1>> twice, Out<double, nb::ndim<3>> pts,
-    Out<std::int64_t, nb::ndim<2>> lo, Out<std::int64_t, nb::ndim<2>> hi, double rtol) {
+    In<double, nb::ndim<2>> v, In<std::int64_t, nb::ndim<2>> s, const Corners& out, double rtol) {
+    const Out<double, nb::ndim<2>>& dot = out.dot;
+    const Out<double, nb::ndim<2>>& sq = out.sq;
+    const Out<double, nb::ndim<1>>& twice = out.twice;
+    const Out<double, nb::ndim<3>>& pts = out.pts;
+    const Out<std::int64_t, nb::ndim<2>>& lo = out.lo;
+    const Out<std::int64_t, nb::ndim<2>>& hi = out.hi;
     const std::size_t m = s.shape(0);
     const std::int64_t nv = static_cast<std::int64_t>(v.shape(0));
     if (v.shape(1) != 3) throw std::invalid_argument("triangle_kernel: v must have shape (nv, 3)");
@@ -96,6 +110,10 @@ std::tuple<std::int64_t, std::int64_t, std::int64_t, double> triangle_kernel(
 NB_MODULE(triangle_geometry, m) {
     namespace nb = nanobind;
     m.doc() = "Corner data of triangle meshes in R^3 (thesis Theorem 3.18, §3.3.2).";
-    m.def("triangle_kernel", &thesis::triangle_kernel, nb::arg("v"), nb::arg("s"), nb::arg("dot"), nb::arg("sq"),
-          nb::arg("twice"), nb::arg("pts"), nb::arg("lo"), nb::arg("hi"), nb::arg("rtol"));
+    using thesis::Out;
+    nb::class_<thesis::Corners>(m, "Corners", "The corner data of m triangles that triangle_kernel fills.")
+        .def(nb::init<Out<double, nb::ndim<2>>, Out<double, nb::ndim<2>>, Out<double, nb::ndim<1>>,
+                      Out<double, nb::ndim<3>>, Out<std::int64_t, nb::ndim<2>>, Out<std::int64_t, nb::ndim<2>>>(),
+             nb::arg("dot"), nb::arg("sq"), nb::arg("twice"), nb::arg("pts"), nb::arg("lo"), nb::arg("hi"));
+    m.def("triangle_kernel", &thesis::triangle_kernel, nb::arg("v"), nb::arg("s"), nb::arg("out"), nb::arg("rtol"));
 }

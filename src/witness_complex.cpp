@@ -89,10 +89,22 @@ std::int64_t candidate_count(const Level& L, std::int64_t r) {
     return c;
 }
 
+// One thread's scratch for witness_parent, n_x entries each: the parent's value at every point (cur)
+// and, gathered, the values at the points within eps (ccur) and those points (idx).
+struct ParentScratch {
+    std::vector<double> cur, ccur;
+    std::vector<std::int64_t> idx;
+    explicit ParentScratch(std::int64_t n_x)
+        : cur(static_cast<std::size_t>(n_x)), ccur(static_cast<std::size_t>(n_x)), idx(static_cast<std::size_t>(n_x)) {}
+};
+
 // Children of parent r written into rows start, start + 1, ... (one per candidate).
 // Thesis: §2.1.2, the strong witness rule max_i |l_i − x| <= ε + m(x) for some x.
 void witness_parent(const Level& L, std::int64_t r, std::int64_t* out, double* out_v, std::uint8_t* valid,
-                    std::int64_t start, double* cur, double* ccur, std::int64_t* idx) {
+                    std::int64_t start, ParentScratch& scratch) {
+    double* cur = scratch.cur.data();
+    double* ccur = scratch.ccur.data();
+    std::int64_t* idx = scratch.idx.data();
     const std::int64_t width = L.width;
     const std::int64_t n_l = L.n_l, n_x = L.n_x;
     const std::int64_t* row = L.parents + r * width;
@@ -267,6 +279,14 @@ std::tuple<Array<double>, Array<std::int64_t>> edge_values(In<double, nb::ndim<2
     return {to_numpy(std::move(out), {s, s}), to_numpy(std::move(arg), {s, s})};
 }
 
+// Each landmark's points by increasing distance, order[l] and their distances sorted_d[l], used when
+// use_sorted (else placeholders).
+struct SortedDistances {
+    In<std::int64_t, nb::ndim<2>> order;
+    In<double, nb::ndim<2>> sorted_d;
+    bool use_sorted;
+};
+
 // Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.
 // ev[a, b] is the (unclamped) value of edge ab and arg[a, b] a witness realising it; they give a
 // lower bound and candidate witnesses.  With use_sorted, order[l] lists the points by increasing
@@ -275,8 +295,10 @@ std::tuple<Array<double>, Array<std::int64_t>> edge_values(In<double, nb::ndim<2
 // rows.  Thesis: §2.1.2 "The Witness Complex" (a p-simplex is in W when its faces are and a witness sees it).
 std::tuple<Array<std::int64_t>, Array<double>> witness_level(
     In<std::int64_t, nb::ndim<2>> parents, In<double, nb::ndim<2>> D, In<double, nb::ndim<2>> ev,
-    In<std::int64_t, nb::ndim<2>> arg, double eps, In<std::int64_t, nb::ndim<2>> order,
-    In<double, nb::ndim<2>> sorted_d, bool use_sorted, int n_threads) {
+    In<std::int64_t, nb::ndim<2>> arg, double eps, const SortedDistances& sorted, int n_threads) {
+    const In<std::int64_t, nb::ndim<2>>& order = sorted.order;
+    const In<double, nb::ndim<2>>& sorted_d = sorted.sorted_d;
+    const bool use_sorted = sorted.use_sorted;
     Level L;
     L.parents = parents.data();
     L.width = static_cast<std::int64_t>(parents.shape(1));
@@ -323,13 +345,11 @@ std::tuple<Array<std::int64_t>, Array<double>> witness_level(
         const std::int64_t n_chunks = std::max<std::int64_t>(1, std::min<std::int64_t>(m, 64 * std::int64_t(threads)));
         std::atomic<std::int64_t> next{0};
         auto work = [&]() {
-            std::vector<double> cur(static_cast<std::size_t>(L.n_x)), ccur(static_cast<std::size_t>(L.n_x));
-            std::vector<std::int64_t> idx(static_cast<std::size_t>(L.n_x));
+            ParentScratch scratch(L.n_x);
             for (std::int64_t c = next.fetch_add(1); c < n_chunks; c = next.fetch_add(1)) {
                 for (std::int64_t r = c * m / n_chunks; r < (c + 1) * m / n_chunks; ++r) {
                     if (counts[r] > 0)
-                        witness_parent(L, r, out.data(), out_v.data(), valid.data(), starts[r], cur.data(),
-                                       ccur.data(), idx.data());
+                        witness_parent(L, r, out.data(), out_v.data(), valid.data(), starts[r], scratch);
                 }
             }
         };
@@ -372,7 +392,12 @@ NB_MODULE(witness_complex, m) {
     m.doc() = "Witness and lazy witness complexes (thesis §2.1.2, \"The Witness Complex\").";
     m.def("edge_values", &thesis::edge_values, nb::arg("D"),
           "Unclamped edge values min_x max(D[a, x], D[b, x]) and a witness realising each.");
+    nb::class_<thesis::SortedDistances>(m, "SortedDistances",
+                                        "Each landmark's points by increasing distance and those distances, used "
+                                        "when use_sorted.")
+        .def(nb::init<thesis::In<std::int64_t, nb::ndim<2>>, thesis::In<double, nb::ndim<2>>, bool>(),
+             nb::arg("order"), nb::arg("sorted_d"), nb::arg("use_sorted"));
     m.def("witness_level", &thesis::witness_level, nb::arg("parents"), nb::arg("D"), nb::arg("ev"), nb::arg("arg"),
-          nb::arg("eps"), nb::arg("order"), nb::arg("sorted_d"), nb::arg("use_sorted"), nb::arg("n_threads") = 0,
+          nb::arg("eps"), nb::arg("sorted"), nb::arg("n_threads") = 0,
           "Children one dimension up with value min_x max_{l in child} D[l, x] (<= eps), lexicographic.");
 }

@@ -169,3 +169,13 @@ def check_claim_file(name: str) -> None:
         for ref in results if isinstance(results, list) else [results]:
             experiment, key = ref.split(":", 1)
             assert experiment != name or key not in params, f"{claim['id']} compares the parameter {key!r} of {name}"
+
+
+def rips_engine_options(max_dim: int, p: int, dense: bool, n_threads: int, parallel_min: int, cocycles: bool = False):
+    """The compiled Rips engine's options (``thesis_lib._core.implicit_rips.Options``) with these fields."""
+    from thesis_lib._core import implicit_rips
+
+    options = implicit_rips.Options()
+    options.max_dim, options.p, options.dense, options.n_threads = max_dim, p, dense, n_threads
+    options.parallel_min, options.cocycles = parallel_min, cocycles
+    return options

@@ -4,7 +4,10 @@ ripser.py computes in float32 and so does the drop-in (it rounds the distances f
 are compared to rtol 1e-5 after sorting rows (in practice they agree to the last bit), the
 permutations, covering radii and edge counts exactly, ``dperm2all`` to float64 rounding (ripser.py's
 distances come from scikit-learn's ``pairwise_distances``, ours from ``scipy.spatial.distance.cdist``).
-The last part ports ripser.py's own test cases (its package ships no tests).
+With ``do_cocycles=True`` the cocycles are compared bar by bar (matched by birth and death, since
+bars of equal birth may come in another order) and they are the same arrays, rows in the same order:
+the engine's reduction is ripser.py's on the same float32 values, so it picks the same pairs and the
+same chains, ties included.  The last part ports ripser.py's own test cases (its package ships no tests).
 """
 
 from __future__ import annotations
@@ -20,7 +23,6 @@ from hypothesis import strategies as st
 from ripser import ripser as reference
 
 from thesis_lib.compat import ripser
-from thesis_lib.compat.ripser import COCYCLES_MESSAGE
 
 KEYS = {"dgms", "cocycles", "num_edges", "dperm2all", "idx_perm", "r_cover"}
 
@@ -36,7 +38,7 @@ def assert_same_result(ours: dict, theirs: dict, *, dperm2all_rtol: float = 1e-9
         assert a.dtype == b.dtype == np.float64 and a.ndim == 2 and a.shape[1] == 2, k
         assert a.shape == b.shape, (k, a, b)
         np.testing.assert_allclose(sorted_rows(a), sorted_rows(b), rtol=1e-5, atol=1e-12, err_msg=f"H{k}")
-    assert ours["cocycles"] == theirs["cocycles"] == [[] for _ in theirs["dgms"]]
+    assert_same_cocycles(ours, theirs)
     assert type(ours["num_edges"]) is int and ours["num_edges"] == theirs["num_edges"]
     assert ours["idx_perm"].dtype == theirs["idx_perm"].dtype == np.int64
     np.testing.assert_array_equal(ours["idx_perm"], theirs["idx_perm"])
@@ -47,6 +49,25 @@ def assert_same_result(ours: dict, theirs: dict, *, dperm2all_rtol: float = 1e-9
     else:
         assert ours["dperm2all"].shape == theirs["dperm2all"].shape
         np.testing.assert_allclose(ours["dperm2all"], theirs["dperm2all"], rtol=dperm2all_rtol, atol=1e-12)
+
+
+def cocycles_by_bar(result: dict, k: int) -> list:
+    """Dimension k's (birth, death, cocycle rows) sorted: the bars matched whatever their order."""
+    return sorted((b, d, c.tolist()) for (b, d), c in zip(result["dgms"][k].tolist(), result["cocycles"][k]))
+
+
+def assert_same_cocycles(ours: dict, theirs: dict) -> None:
+    assert len(ours["cocycles"]) == len(theirs["cocycles"]) == len(theirs["dgms"])
+    assert ours["cocycles"][0] == theirs["cocycles"][0] == []
+    for k in range(1, len(theirs["dgms"])):
+        a, b = ours["cocycles"][k], theirs["cocycles"][k]
+        assert len(a) == len(b), k
+        if not b:
+            continue
+        assert len(a) == ours["dgms"][k].shape[0]
+        for c in a:
+            assert c.dtype == np.int64 and c.ndim == 2 and c.shape[1] == k + 2
+        assert cocycles_by_bar(ours, k) == cocycles_by_bar(theirs, k), k
 
 
 def both(X, **kw) -> tuple[dict, dict]:
@@ -71,9 +92,10 @@ def births_matrix(rng: np.random.Generator, n: int) -> np.ndarray:
 @pytest.mark.parametrize("maxdim", [0, 1, 2])
 @pytest.mark.parametrize("coeff", [2, 3, 5])
 @pytest.mark.parametrize("thresh", [np.inf, 0.45])
-def test_points_agree_with_ripser(seed, d, maxdim, coeff, thresh):
+@pytest.mark.parametrize("do_cocycles", [False, True])
+def test_points_agree_with_ripser(seed, d, maxdim, coeff, thresh, do_cocycles):
     X = np.random.default_rng(seed).random((25, d))
-    ours, theirs = both(X, maxdim=maxdim, coeff=coeff, thresh=thresh)
+    ours, theirs = both(X, maxdim=maxdim, coeff=coeff, thresh=thresh, do_cocycles=do_cocycles)
     assert_same_result(ours, theirs)
     for a, b in zip(ours["dgms"], theirs["dgms"]):  # float32 distances on both sides: the same values
         np.testing.assert_array_equal(sorted_rows(a), sorted_rows(b))
@@ -97,10 +119,13 @@ def test_thresh_at_a_distance_is_compared_in_float32(seed):
 @pytest.mark.parametrize("thresh", [np.inf, 0.6])
 def test_greedy_permutation_agrees_with_ripser(seed, n_perm, thresh):
     X = np.random.default_rng(seed).normal(size=(40, 3))
-    ours, theirs = both(X, maxdim=2, n_perm=n_perm, thresh=thresh)
+    ours, theirs = both(X, maxdim=2, n_perm=n_perm, thresh=thresh, do_cocycles=True)
     assert_same_result(ours, theirs)
     assert ours["dperm2all"].shape == (n_perm, 40) and ours["idx_perm"][0] == 0
     assert len(set(ours["idx_perm"].tolist())) == n_perm
+    for cocycles in ours["cocycles"][1:]:  # the vertices are the points' own indices, as ripser.py gives them
+        for c in cocycles:
+            assert set(c[:, :-1].ravel().tolist()) <= set(ours["idx_perm"].tolist())
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -108,7 +133,7 @@ def test_greedy_permutation_agrees_with_ripser(seed, n_perm, thresh):
 @pytest.mark.parametrize("thresh", [np.inf, 0.5])
 def test_dense_distance_matrix_with_zero_diagonal_agrees_with_ripser(seed, maxdim, thresh):
     dm = distances(np.random.default_rng(seed).random((30, 3)))
-    ours, theirs = both(dm, distance_matrix=True, maxdim=maxdim, thresh=thresh, coeff=3)
+    ours, theirs = both(dm, distance_matrix=True, maxdim=maxdim, thresh=thresh, coeff=3, do_cocycles=True)
     assert_same_result(ours, theirs)
     assert ours["dperm2all"] is dm
 
@@ -118,7 +143,7 @@ def test_dense_distance_matrix_with_zero_diagonal_agrees_with_ripser(seed, maxdi
 @pytest.mark.parametrize("n_perm", [None, 12])
 def test_dense_distance_matrix_with_births_agrees_with_ripser(seed, thresh, n_perm):
     dm = births_matrix(np.random.default_rng(seed), 25)
-    ours, theirs = both(dm, distance_matrix=True, maxdim=2, thresh=thresh, n_perm=n_perm)
+    ours, theirs = both(dm, distance_matrix=True, maxdim=2, thresh=thresh, n_perm=n_perm, do_cocycles=True)
     assert_same_result(ours, theirs)
     births = ours["dgms"][0][:, 0]
     assert births.max() > 0  # the diagonal is read as births
@@ -135,14 +160,14 @@ def test_sparse_distance_matrix_agrees_with_ripser(seed, fmt, half, thresh):
     if half:  # the upper triangle only (ripser.py's sparse tutorial builds its matrices so)
         dm = np.triu(dm)
     sp = scipy.sparse.coo_matrix(dm).asformat(fmt)
-    ours, theirs = both(sp, distance_matrix=True, maxdim=2, thresh=thresh)
+    ours, theirs = both(sp, distance_matrix=True, maxdim=2, thresh=thresh, do_cocycles=True)
     assert_same_result(ours, theirs)
 
 
 def test_sparse_distance_matrix_with_births_agrees_with_ripser():
     dm = births_matrix(np.random.default_rng(7), 25)
     dm[dm > 0.6] = 0
-    ours, theirs = both(scipy.sparse.csr_matrix(dm), distance_matrix=True, maxdim=1)
+    ours, theirs = both(scipy.sparse.csr_matrix(dm), distance_matrix=True, maxdim=1, do_cocycles=True)
     assert_same_result(ours, theirs)
 
 
@@ -173,8 +198,9 @@ def test_rows_come_in_ripsers_order():
 
 def test_positional_call_as_ripser_py():
     X = np.random.default_rng(5).random((20, 2))
-    ours = ripser(X, 2, 0.8, 3, False, False, "euclidean", 10)
-    assert_same_result(ours, reference(X, 2, 0.8, 3, False, False, "euclidean", 10))
+    for do_cocycles in (False, True):
+        ours = ripser(X, 2, 0.8, 3, False, do_cocycles, "euclidean", 10)
+        assert_same_result(ours, reference(X, 2, 0.8, 3, False, do_cocycles, "euclidean", 10))
 
 
 def test_where_the_drop_in_reads_more_than_ripser_py():
@@ -292,16 +318,32 @@ def test_warnings_as_ripser_py():
     (dict(n_perm=-3), ValueError, "n_perm must be >= 0"),
     (dict(n_perm=21), ValueError, "n_perm = 21 is greater than the number of points \\(20\\)"),
     (dict(n_perm=2.5), TypeError, "n_perm must be an integer"),
-    (dict(do_cocycles=True), NotImplementedError, "do_cocycles=True: representative cocycles are not"),
+    (dict(do_cocycles="yes"), ValueError, "do_cocycles must be True or False"),
+    (dict(do_cocycles=2), ValueError, "do_cocycles must be True or False"),
 ])
 def test_bad_options(kw, error, match):
     with pytest.raises(error, match=match):
         ripser(np.random.default_rng(9).random((20, 2)), **kw)
 
 
-def test_cocycles_message_points_to_ripser_py():
-    assert COCYCLES_MESSAGE == ("do_cocycles=True: representative cocycles are not available yet; "
-                                "use ripser.ripser")
+@pytest.mark.parametrize("seed", range(6))
+def test_cocycles_on_ties_agree_with_ripser(seed):
+    """Points on a grid: many equal diameters, so emergent and apparent pairs and ties everywhere."""
+    rng = np.random.default_rng(seed)
+    X = np.round(rng.random((int(rng.integers(10, 30)), int(rng.integers(2, 4)))) * 4) / 4
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # a square grid can look like a distance matrix
+        assert_same_result(*both(X, maxdim=2, coeff=[2, 3, 5][seed % 3], do_cocycles=True))
+
+
+def test_cocycles_come_in_ripsers_order():
+    X = np.random.default_rng(11).random((40, 3))
+    ours, theirs = both(X, maxdim=2, do_cocycles=True)
+    for k in (1, 2):  # no ties on random points: the same bars in the same order, the same arrays
+        np.testing.assert_array_equal(ours["dgms"][k], theirs["dgms"][k])
+        assert len(ours["cocycles"][k]) == len(theirs["cocycles"][k]) > 0
+        for a, b in zip(ours["cocycles"][k], theirs["cocycles"][k]):
+            np.testing.assert_array_equal(a, b)
 
 
 @pytest.mark.parametrize("X, kw, match", [

@@ -290,8 +290,10 @@ def test_witness_kernel_paths_agree():
     sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
     tri = np.array(list(itertools.combinations(range(16), 3)))
     for eps in (np.inf, 0.3):
-        a = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, True, n_threads=2)
-        b = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, False, n_threads=1)
+        a = witness_complex.witness_level(tri, D, ev, arg, eps, witness_complex.SortedDistances(order, sorted_d, True),
+                                          n_threads=2)
+        b = witness_complex.witness_level(tri, D, ev, arg, eps, witness_complex.SortedDistances(order, sorted_d, False),
+                                          n_threads=1)
         np.testing.assert_array_equal(a[0], b[0])
         np.testing.assert_array_equal(a[1], b[1])
 

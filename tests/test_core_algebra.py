@@ -25,8 +25,8 @@ def csc(a):
 def markowitz(m, p=0, skip=None, lim=LIMIT, search=4, density=0.2, max_dense=2 * 10**7, n_rows=None):
     skip = np.zeros(m.shape[1], dtype=bool) if skip is None else skip
     return sparse_elimination.markowitz(m.indptr.astype(I64), m.indices.astype(I64), m.data.astype(I64),
-                                        m.shape[0] if n_rows is None else n_rows, skip, p, lim, search, density,
-                                        max_dense)
+                                        m.shape[0] if n_rows is None else n_rows, skip,
+                                        sparse_elimination.Options(p, lim, search, density, max_dense))
 
 
 def test_markowitz_rank_mod_p_matches_gauss_jordan():
@@ -94,8 +94,9 @@ def test_markowitz_refuses_bad_input(bad):
                 data=np.array([1, 2], dtype=I64), n_rows=2, skip=np.zeros(1, dtype=bool), p=0, lim=LIMIT,
                 search=4, density=0.2, max_dense=10)
     args.update(bad)
+    options = sparse_elimination.Options(**{k: args.pop(k) for k in ("p", "lim", "search", "density", "max_dense")})
     with pytest.raises(ValueError):
-        sparse_elimination.markowitz(**args)
+        sparse_elimination.markowitz(**args, options=options)
 
 
 def test_markowitz_empty_shapes():

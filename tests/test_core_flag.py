@@ -109,11 +109,11 @@ def test_edge_values_against_brute_force():
 def test_witness_level_threads_give_identical_output(use_sorted):
     D, ev, arg, order, sorted_d = witness_input(n_points=600, n_landmarks=14)
     tri = np.array(list(itertools.combinations(range(14), 3)), dtype=I64)
+    sorted_lists = witness_complex.SortedDistances(order, sorted_d, use_sorted)
     for eps in (np.inf, 0.25, 0.1):
-        one = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, use_sorted, n_threads=1)
+        one = witness_complex.witness_level(tri, D, ev, arg, eps, sorted_lists, n_threads=1)
         for threads in (2, 3, 0):
-            other = witness_complex.witness_level(tri, D, ev, arg, eps, order, sorted_d, use_sorted,
-                                                  n_threads=threads)
+            other = witness_complex.witness_level(tri, D, ev, arg, eps, sorted_lists, n_threads=threads)
             assert one[0].tobytes() == other[0].tobytes() and one[1].tobytes() == other[1].tobytes()
         # the children of all triangles are the tetrahedra of value min_x max_{l in σ} D[l, x] <= eps,
         # clamped at 0
@@ -126,28 +126,29 @@ def test_witness_level_threads_give_identical_output(use_sorted):
 def test_witness_kernels_refuse_bad_input():
     D, ev, arg, order, sorted_d = witness_input(n_points=50, n_landmarks=5)
     tri = np.array([[0, 1, 2]], dtype=I64)
-    level = witness_complex.witness_level
+    level, lists = witness_complex.witness_level, witness_complex.SortedDistances
+    used, unused = lists(order, sorted_d, True), lists(order, sorted_d, False)
     with pytest.raises(ValueError, match="parent vertex"):
-        level(np.array([[0, 1, 5]], dtype=I64), D, ev, arg, 1.0, order, sorted_d, True)
+        level(np.array([[0, 1, 5]], dtype=I64), D, ev, arg, 1.0, used)
     bad_arg = arg.copy()
     bad_arg[0, 1] = 50
     with pytest.raises(ValueError, match="witness in arg"):
-        level(tri, D, ev, bad_arg, 1.0, order, sorted_d, True)
+        level(tri, D, ev, bad_arg, 1.0, used)
     with pytest.raises(ValueError, match="L x L"):
-        level(tri, D, ev[:4], arg, 1.0, order, sorted_d, True)
+        level(tri, D, ev[:4], arg, 1.0, used)
     with pytest.raises(ValueError, match="shape of D"):
-        level(tri, D, ev, arg, 1.0, order[:, :10], sorted_d, True)
+        level(tri, D, ev, arg, 1.0, lists(order[:, :10], sorted_d, True))
     bad_order = order.copy()
     bad_order[2, 3] = -1
     with pytest.raises(ValueError, match="point in order"):
-        level(tri, D, ev, arg, 1.0, bad_order, sorted_d, True)
+        level(tri, D, ev, arg, 1.0, lists(bad_order, sorted_d, True))
     with pytest.raises(ValueError, match="no points"):
-        level(tri, np.empty((5, 0)), ev, arg, 1.0, order, sorted_d, False)
+        level(tri, np.empty((5, 0)), ev, arg, 1.0, unused)
     with pytest.raises(ValueError, match="at least one column"):
-        level(np.empty((1, 0), dtype=I64), D, ev, arg, 1.0, order, sorted_d, False)
+        level(np.empty((1, 0), dtype=I64), D, ev, arg, 1.0, unused)
     # without the sorted lists, order and sorted_d are not read: placeholders are fine
-    a = level(tri, D, ev, arg, 1.0, np.zeros((1, 1), I64), np.zeros((1, 1)), False)
-    b = level(tri, D, ev, arg, 1.0, order, sorted_d, True)
+    a = level(tri, D, ev, arg, 1.0, lists(np.zeros((1, 1), I64), np.zeros((1, 1)), False))
+    b = level(tri, D, ev, arg, 1.0, used)
     assert a[0].tobytes() == b[0].tobytes() and a[1].tobytes() == b[1].tobytes()
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from helpers import rips_engine_options
 
 from thesis_lib._core import implicit_rips
 from thesis_lib.complexes import rips
@@ -20,7 +21,8 @@ def _graph(points, eps=np.inf):
 def _barcode(graph, max_dim=3, p=2, dense=True, n_threads=1, parallel_min=PARALLEL_MIN, births=None):
     n, indptr, nbr, length = graph
     births = np.zeros(max(n, 0)) if births is None else births
-    return implicit_rips.rips_barcode(n, indptr, nbr, length, births, max_dim, p, dense, n_threads, parallel_min)
+    return implicit_rips.rips_barcode(n, indptr, nbr, length, births,
+                                      rips_engine_options(max_dim, p, dense, n_threads, parallel_min))
 
 
 def _same(a, b):
@@ -137,7 +139,7 @@ def test_sparse_path_agrees_with_the_explicit_engine():
     dense = _barcode(_graph(pts, 0.3), max_dim=3, dense=False)
     ref = persistence(rips(pts, max_radius=0.3, max_dim=3), coefficients=2)
     for d in range(3):
-        births, deaths, ess, _ = dense[d]
+        births, deaths, ess = dense[d][:3]
         iv = np.concatenate([np.column_stack([births, deaths]), np.column_stack([ess, np.full(ess.shape, np.inf)])])
         expected = ref.intervals(d)
         assert np.array_equal(np.sort(iv * 0.5, axis=0), np.sort(expected, axis=0))
@@ -152,3 +154,21 @@ def test_rips_persistence_n_threads_is_checked():
         with pytest.raises(ValueError, match="n_threads"):
             rips_persistence(pts, n_threads=bad)
     assert rips_persistence(pts, n_threads=4) == rips_persistence(pts)
+
+
+def test_cocycles_come_as_offsets_and_rows_only_when_asked_for():
+    n, indptr, nbr, length = graph = _graph(np.random.default_rng(3).random((12, 2)))
+    off = _barcode(graph, max_dim=3)
+    options = rips_engine_options(3, 2, True, 1, PARALLEL_MIN, cocycles=True)
+    on = implicit_rips.rips_barcode(n, indptr, nbr, length, np.zeros(n), options)
+    for k, (a, b) in enumerate(zip(off, on)):
+        _same([a[:4]], [b[:4]])  # the same bars and statistics
+        assert a[4].tolist() == [0] and a[5].shape == (0, k + 2)
+        bars = b[0].shape[0] + b[2].shape[0]
+        offsets, rows = b[4], b[5]
+        assert rows.dtype == np.int64 and rows.shape[1] == k + 2
+        if k == 0:  # no cocycles of H0, as ripser.py
+            assert offsets.tolist() == [0] and rows.shape[0] == 0
+            continue
+        assert offsets.shape == (bars + 1,) and offsets[-1] == rows.shape[0] and (np.diff(offsets) >= 1).all()
+        assert bars > 0 or k == 2  # two bars of H1 (the points make no H2)

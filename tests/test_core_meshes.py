@@ -55,7 +55,8 @@ def test_triangle_areas_refuses(bad):
 def test_triangle_kernel_values():
     v = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
     arrays = tri_arrays(1)
-    checks = triangle_geometry.triangle_kernel(v, np.array([[0, 1, 2]], dtype=I64), *arrays, 1e-10)
+    checks = triangle_geometry.triangle_kernel(v, np.array([[0, 1, 2]], dtype=I64), triangle_geometry.Corners(*arrays),
+                                                1e-10)
     dot, sq, twice, pts, lo, hi = arrays
     assert checks == (-1, -1, 0, 2.0)
     assert dot[:, 0].tolist() == [0.0, 1.0, 1.0] and sq[:, 0].tolist() == [2.0, 1.0, 1.0] and twice[0] == 1.0
@@ -63,7 +64,8 @@ def test_triangle_kernel_values():
     assert pts[:, :, 0].tolist() == v.tolist()
     # repeated vertex and degenerate triangle are reported, not refused
     arrays = tri_arrays(2)
-    checks = triangle_geometry.triangle_kernel(v, np.array([[0, 1, 2], [0, 0, 1]], dtype=I64), *arrays, 1e-10)
+    checks = triangle_geometry.triangle_kernel(v, np.array([[0, 1, 2], [0, 0, 1]], dtype=I64),
+                                                triangle_geometry.Corners(*arrays), 1e-10)
     assert checks[:3] == (1, 1, 1)
 
 
@@ -83,7 +85,7 @@ def test_triangle_kernel_refuses(bad):
     else:
         arrays[3] = np.zeros((3, 3, 2))
     with pytest.raises(ValueError):
-        triangle_geometry.triangle_kernel(v, s, *arrays, 1e-10)
+        triangle_geometry.triangle_kernel(v, s, triangle_geometry.Corners(*arrays), 1e-10)
 
 
 # --- pseudo-manifolds (§3.3) ----------------------------------------------------------------------
@@ -151,7 +153,8 @@ def candidates():
 def test_walk_and_greedy_manifold(candidates):
     pts, cand, structure = candidates
     alive = np.ones(len(cand), dtype=bool)
-    orient, order, conflicts = crust_trimming.walk(pts, cand, alive, *structure, 0, False, False, np.pi)
+    orient, order, conflicts = crust_trimming.walk(pts, cand, alive, crust_trimming.Ridges(*structure), 0, False, False,
+                                                   np.pi)
     assert orient.shape == cand.shape and len(np.unique(order)) == len(order) and order[0] == 0
     assert (np.sort(orient[order], axis=1) == np.sort(cand[order], axis=1)).all()
     keep = crust_trimming.greedy_manifold(structure[1], order, len(structure[0]))
@@ -179,7 +182,8 @@ def test_sharp_ridges_and_openness(candidates):
     single = np.diff(start) == 1
     assert sharp[single].all()
     ts = np.array([0, 0, 1], dtype=I64)
-    worst = crust_trimming.openness(pts, cand, alive, *structure, ts, np.array([False, True, False]))
+    worst = crust_trimming.openness(pts, cand, alive, crust_trimming.Ridges(*structure), ts,
+                                    np.array([False, True, False]))
     assert worst.shape == (3,) and ((worst >= 0) & (worst <= 2 * np.pi)).all()
 
 
@@ -204,12 +208,14 @@ def test_walk_refuses(candidates, bad):
     else:
         opp[4] = len(pts)
     with pytest.raises(ValueError):
-        crust_trimming.walk(pts, cand, alive, ridges, ridge_of, start, tri_of, opp, seed, False, False, np.pi)
+        crust_trimming.walk(pts, cand, alive, crust_trimming.Ridges(ridges, ridge_of, start, tri_of, opp), seed,
+                            False, False, np.pi)
 
 
 def test_trimming_kernels_refuse(candidates):
     pts, cand, structure = candidates
     ridges, ridge_of, start, tri_of, opp = structure
+    ridge_arrays = crust_trimming.Ridges(*structure)
     alive = np.ones(len(cand), dtype=bool)
     sharp = np.zeros(len(ridges), dtype=bool)
     with pytest.raises(ValueError):
@@ -221,13 +227,13 @@ def test_trimming_kernels_refuse(candidates):
     with pytest.raises(ValueError):
         crust_trimming.greedy_manifold(ridge_of, np.array([0], dtype=I64), 1)
     with pytest.raises(ValueError):
-        crust_trimming.openness(pts, cand, alive, *structure, np.array([-1], dtype=I64), np.array([False]))
+        crust_trimming.openness(pts, cand, alive, ridge_arrays, np.array([-1], dtype=I64), np.array([False]))
     with pytest.raises(ValueError):
-        crust_trimming.openness(pts, cand, alive, *structure, np.array([0], dtype=I64), np.array([False, True]))
+        crust_trimming.openness(pts, cand, alive, ridge_arrays, np.array([0], dtype=I64), np.array([False, True]))
     bad = pts.copy()
     bad[cand[0, 0]] = np.nan  # numba's det refused non-finite matrices: so does the port
     with pytest.raises(ValueError, match="infs or NaNs"):
-        crust_trimming.walk(bad, cand, alive, *structure, 0, False, False, np.pi)
+        crust_trimming.walk(bad, cand, alive, ridge_arrays, 0, False, False, np.pi)
 
 
 # --- discrete gradients (chapter 4) -----------------------------------------------------------------
@@ -291,17 +297,21 @@ def test_morse_columns():
     partner = np.array([-1, 2, 1], dtype=I64)
     rank = np.array([0, 1, 2], dtype=I64)
     crit = np.array([True, False, False])
-    rows, cols, vals, overflow = discrete_gradient.morse_columns(3, fptr, fidx, data, partner, rank, crit,
+    rows, cols, vals, overflow = discrete_gradient.morse_columns(3, fptr, fidx, data,
+                                                                 discrete_gradient.Gradient(partner, rank, crit),
                                                                  np.array([2], dtype=I64), 0)
     assert rows.tolist() == [] and not overflow
     partner = np.array([-1, -1, -1], dtype=I64)
-    rows, cols, vals, _ = discrete_gradient.morse_columns(3, fptr, fidx, data, partner, rank, np.ones(3, dtype=bool),
-                                                          np.array([2], dtype=I64), 3)
+    every = discrete_gradient.Gradient(partner, rank, np.ones(3, dtype=bool))
+    rows, cols, vals, _ = discrete_gradient.morse_columns(3, fptr, fidx, data, every, np.array([2], dtype=I64), 3)
     assert rows.tolist() == [0, 1] and cols.tolist() == [2, 2] and vals.tolist() == [2, 1]  # -1 mod 3 = 2
     with pytest.raises(ValueError):
-        discrete_gradient.morse_columns(3, fptr, fidx, data, np.array([-1, 3, 1], dtype=I64), rank, crit,
+        discrete_gradient.morse_columns(3, fptr, fidx, data,
+                                        discrete_gradient.Gradient(np.array([-1, 3, 1], dtype=I64), rank, crit),
                                         np.array([2], dtype=I64), 0)
     with pytest.raises(ValueError):
-        discrete_gradient.morse_columns(3, fptr, fidx, data, partner, rank, crit, np.array([3], dtype=I64), 0)
+        discrete_gradient.morse_columns(3, fptr, fidx, data, discrete_gradient.Gradient(partner, rank, crit),
+                                        np.array([3], dtype=I64), 0)
     with pytest.raises(ValueError):
-        discrete_gradient.morse_columns(3, fptr, fidx, data[:1], partner, rank, crit, np.array([2], dtype=I64), 0)
+        discrete_gradient.morse_columns(3, fptr, fidx, data[:1], discrete_gradient.Gradient(partner, rank, crit),
+                                        np.array([2], dtype=I64), 0)

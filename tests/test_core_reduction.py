@@ -143,8 +143,8 @@ def test_reduce_columns_refuses_bad_input(change):
 def test_reduce_columns_refuses_bad_dimensions():
     indptr, rows, vals, row_value, pivot, pivot_coef = _triangle_boundary()
     with pytest.raises((ValueError, TypeError)):
-        reduction.reduce_columns(indptr[None], rows, vals, row_value, np.array([3]), np.zeros(7, dtype=np.bool_),
-                                 pivot, pivot_coef, 3, 0)
+        state = reduction.ColumnState(np.array([3]), np.zeros(7, dtype=np.bool_), pivot, pivot_coef)
+        reduction.reduce_columns(indptr[None], rows, vals, row_value, state, 3, 0)
 
 
 def test_explicit_kernels_refuse_bad_input():

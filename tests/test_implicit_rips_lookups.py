@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import ripser
+from helpers import rips_engine_options
 
 from thesis_lib._core import implicit_rips
 from thesis_lib.complexes import rips
@@ -18,8 +19,8 @@ from thesis_lib.persistence.implicit import DENSE_FILL, DENSE_FULL_MAX, DENSE_MA
 
 def _engine(points, eps, max_dim, p, dense, parallel_min=PARALLEL_MIN, n_threads=1):
     n, indptr, nbr, length = rips_graph(points, max_radius=eps)
-    return implicit_rips.rips_barcode(n, indptr, nbr, length, np.zeros(n), max_dim, p, dense, n_threads,
-                                      parallel_min)
+    return implicit_rips.rips_barcode(n, indptr, nbr, length, np.zeros(n),
+                                      rips_engine_options(max_dim, p, dense, n_threads, parallel_min))
 
 
 @pytest.mark.parametrize("seed", range(12))

@@ -2,8 +2,9 @@
 run with every checker of the validation layer counting what it is handed.
 
 The checkers are the parsers of ``thesis_lib._validate`` and the mesh parser of the curvature
-functions (``curvature.validate.validate_mesh``).  Within one call of a public function (nested public calls included) a checker may see a given array,
-list or other non-scalar argument once; a second look at the same object means an inner function
+functions (``curvature.validate.validate_mesh``).  Within one call of a public function (nested
+public calls included) a checker may see a given array, list or other non-scalar argument once; a
+second look at the same object means an inner function
 validated again what the outer one had already parsed.  The examples are those of the doctests
 (every public name of the main subpackages has one, ``tests/test_doctests.py``); scalars are left
 out, since Python shares small numbers and strings between unrelated arguments, and so are the

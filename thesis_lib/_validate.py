@@ -118,6 +118,15 @@ def check_int(value, name: str, *, minimum: int | None = None, maximum: int | No
     return v
 
 
+def check_flag(value, name: str) -> bool:
+    """A yes/no option: True or False (numpy's too, and the integers 0 and 1); anything else refused."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    if isinstance(value, numbers.Integral) and int(value) in (0, 1):
+        return bool(value)
+    raise InvalidTypeError(f"{name} must be True or False, got {value!r}")
+
+
 def check_seed(seed, *, optional: bool = False) -> int | None:
     """A random seed: a non-negative integer (every random draw of the library takes one).
 

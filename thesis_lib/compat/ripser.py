@@ -11,7 +11,10 @@ arguments in the same order and returns the same keys with the same conventions,
 * ``thresh=inf`` on a dense matrix uses the *enclosing radius* min_i max_j d(i, j) as ripser.py
   does: above it the complex is a cone, so the barcode is unchanged, and ``num_edges`` counts the
   edges up to it;
-* ``n_perm`` subsamples by ripser.py's greedy permutation (farthest point sampling from point 0).
+* ``n_perm`` subsamples by ripser.py's greedy permutation (farthest point sampling from point 0);
+* ``do_cocycles=True`` gives ripser.py's representative cocycles: the reduction chain of the
+  coboundary column that gave each bar, which the engine's reduction is (Ripser's, on the same
+  float32 values), so the cocycles agree with ripser.py's wherever the two choose the same pairs.
 
 ripser.py itself is never called here; the tests use it as the reference.
 """
@@ -33,6 +36,7 @@ from .._validate import (
     InvalidTypeError,
     as_distance_matrix,
     as_points,
+    check_flag,
     check_int,
     is_prime,
     warn_user,
@@ -47,8 +51,6 @@ SKLEARN_ALIASES = {"manhattan": "cityblock", "l1": "cityblock", "l2": "euclidean
 SUPPORTED_METRICS = ("'euclidean', 'precomputed' (X is a distance matrix), any metric name of "
                      "scipy.spatial.distance.cdist ('cityblock', 'chebyshev', 'cosine', 'minkowski', ...), "
                      "scikit-learn's 'manhattan', 'l1', 'l2', or a callable of two rows")
-
-COCYCLES_MESSAGE = "do_cocycles=True: representative cocycles are not available yet; use ripser.ripser"
 
 
 def ripser(
@@ -89,7 +91,7 @@ def ripser(
     distance_matrix : bool
         Whether ``X`` is a distance matrix.
     do_cocycles : bool
-        Representative cocycles are not available: True raises ``NotImplementedError``.
+        Also compute a representative cocycle of each bar of dimension >= 1 (``"cocycles"`` below).
     metric : str or callable
         How distances between the rows of points are computed (ignored for a distance matrix):
         ``"euclidean"`` (default), ``"precomputed"`` (``X`` is a distance matrix), a metric name of
@@ -108,7 +110,14 @@ def ripser(
           diameters of dimension 0 .. maxdim (the essential H0 class as ``[0, inf]``); rows in
           ripser.py's order (H0 by death, higher dimensions by decreasing birth; rows with equal
           keys may be listed in another order).
-        * ``"cocycles"``: ``maxdim + 1`` empty lists.
+        * ``"cocycles"``: ``maxdim + 1`` lists, empty without ``do_cocycles``; with it,
+          ``cocycles[k][i]`` is a representative cocycle of the bar ``dgms[k][i]`` (k >= 1;
+          ``cocycles[0]`` is empty, as in ripser.py): an int64 array of shape (m, k + 2), a row per
+          simplex, its k + 1 vertices (decreasing; indices of the rows of ``X``, also with
+          ``n_perm``, as ripser.py gives them) then its coefficient in 1 .. p − 1.  It is the
+          reduction chain of the bar's coboundary column (``rips_persistence(..., cocycles=True)``):
+          restricted to the simplices of diameter <= t it is a cocycle, not a coboundary, for every
+          t from the birth to just before the death.
         * ``"num_edges"``: the number of edges {i, j} with distance ≤ the threshold, as ripser.py
           counts them (dense input with ``thresh=inf``: up to the enclosing radius; a pair stored
           twice in a sparse matrix counts once).
@@ -129,9 +138,8 @@ def ripser(
         A negative, NaN or non-number ``maxdim``/``thresh``; ``coeff`` not a prime; an unknown
         ``metric``; ``n_perm`` negative, above the number of points, or given with a sparse matrix;
         a distance matrix that is not square, symmetric, or has NaN or negative entries; a sparse
-        ``X`` without ``distance_matrix=True``; points that are not a finite (n, d) array.
-    NotImplementedError
-        ``do_cocycles=True``.
+        ``X`` without ``distance_matrix=True``; points that are not a finite (n, d) array;
+        ``do_cocycles`` not True or False.
 
     Examples
     --------
@@ -144,12 +152,14 @@ def ripser(
     [(12, 2), (1, 2)]
     >>> bool(np.allclose(result["dgms"][1], [[0.5176381, 1.7320508]]))
     True
+    >>> square = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+    >>> ripser(square, do_cocycles=True)["cocycles"][1][0].tolist()  # the side from vertex 1 to vertex 0
+    [[1, 0, 1]]
     """
     maxdim = check_int(maxdim, "maxdim", minimum=0)
     thresh = _float32_threshold(thresh)
     coeff = _check_coeff(coeff)
-    if do_cocycles:
-        raise NotImplementedError(COCYCLES_MESSAGE)
+    do_cocycles = check_flag(do_cocycles, "do_cocycles")
     if n_perm is not None:
         n_perm = check_int(n_perm, "n_perm", minimum=0)
     if isinstance(metric, str) and metric == "precomputed":
@@ -190,10 +200,15 @@ def ripser(
         dm = dperm2all[:, idx_perm]
 
     engine_input, threshold, num_edges = _float32_filtration(dm, thresh)
-    barcode = rips_persistence(distance_matrix=engine_input, max_radius=threshold / 2, max_dim=maxdim + 1,
-                               coefficients=coeff)
-    dgms = [_ripser_order(dgm, k) for k, dgm in enumerate(barcode.to_diagrams(scale="diameter"))]
-    return {"dgms": dgms, "cocycles": [[] for _ in range(maxdim + 1)], "num_edges": num_edges,
+    result = rips_persistence(distance_matrix=engine_input, max_radius=threshold / 2, max_dim=maxdim + 1,
+                              coefficients=coeff, cocycles=do_cocycles)
+    barcode, reps = result if do_cocycles else (result, {})
+    dgms, cocycles = [], []
+    for k, dgm in enumerate(barcode.to_diagrams(scale="diameter")):
+        order = _ripser_order(dgm, k)
+        dgms.append(dgm[order])
+        cocycles.append([_original_vertices(reps[k][i], idx_perm) for i in order] if k in reps else [])
+    return {"dgms": dgms, "cocycles": cocycles, "num_edges": num_edges,
             "dperm2all": dperm2all, "idx_perm": idx_perm, "r_cover": r_cover}
 
 
@@ -278,7 +293,13 @@ def _float32_filtration(dm, thresh: float):
 
 
 def _ripser_order(dgm: np.ndarray, dim: int) -> np.ndarray:
-    """Rows in ripser.py's order: H0 by death (the essential bars last), higher dimensions by
+    """The order of the rows in ripser.py: H0 by death (the essential bars last), higher dimensions by
     decreasing birth (the order in which its reduction finds them)."""
-    order = np.argsort(dgm[:, 1], kind="stable") if dim == 0 else np.argsort(-dgm[:, 0], kind="stable")
-    return dgm[order]
+    return np.argsort(dgm[:, 1], kind="stable") if dim == 0 else np.argsort(-dgm[:, 0], kind="stable")
+
+
+def _original_vertices(cocycle: np.ndarray, idx_perm: np.ndarray) -> np.ndarray:
+    """A cocycle on the subsample's vertices with the indices of the points they are (as ripser.py)."""
+    out = cocycle.copy()
+    out[:, :-1] = idx_perm[cocycle[:, :-1]]
+    return out

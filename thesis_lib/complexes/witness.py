@@ -152,11 +152,12 @@ def witness(points: npt.ArrayLike, landmarks: npt.ArrayLike, *, max_radius: floa
             sorted_d = np.ascontiguousarray(np.take_along_axis(D, order, axis=1))
         else:
             order, sorted_d = np.zeros((1, 1), np.int64), np.zeros((1, 1))
+        sorted_lists = witness_complex.SortedDistances(order, sorted_d, use_sorted)
         for _ in range(2, max_dim + 1):
             if simplices[-1].shape[0] == 0:
                 break
             s, v = witness_complex.witness_level(np.ascontiguousarray(simplices[-1], dtype=np.int64), D, ev, arg,
-                                                 eps, order, sorted_d, use_sorted)
+                                                 eps, sorted_lists)
             simplices.append(s)
             values.append(v)
     return Filtration(simplices, values, validate=False, truncated_at=max_dim)

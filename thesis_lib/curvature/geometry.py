@@ -107,8 +107,8 @@ def checked_triangle_geometry(v: np.ndarray, s: np.ndarray) -> tuple[TriangleGeo
     twice, pts = np.empty(m), np.empty((3, 3, m))
     lo, hi = np.empty((m, 3), dtype=np.int64), np.empty((m, 3), dtype=np.int64)
     checks = _triangle_core.triangle_kernel(np.ascontiguousarray(v, dtype=np.float64),
-                                            np.ascontiguousarray(s, dtype=np.int64), dot, sq, twice, pts, lo, hi,
-                                            DEGENERATE_RTOL)
+                                            np.ascontiguousarray(s, dtype=np.int64),
+                                            _triangle_core.Corners(dot, sq, twice, pts, lo, hi), DEGENERATE_RTOL)
     return (TriangleGeometry(dot, sq, twice, pts, lo, hi), *checks)
 
 

@@ -82,7 +82,7 @@ def markowitz_eliminate(indptr: np.ndarray, indices: np.ndarray, data: np.ndarra
     rank, pivot_rows, core_rows, core_ptr, core_cols, core_vals = sparse_elimination.markowitz(
         np.ascontiguousarray(indptr, dtype=np.int64), np.ascontiguousarray(indices, dtype=np.int64),
         np.ascontiguousarray(data, dtype=np.int64), int(n_rows), np.ascontiguousarray(skip, dtype=np.bool_),
-        int(p), LIMIT, int(search), float(density), int(max_dense),
+        sparse_elimination.Options(int(p), LIMIT, int(search), float(density), int(max_dense)),
     )
     cols = np.unique(core_cols)
     dense = np.zeros((core_rows.size, cols.size), dtype=np.int64)

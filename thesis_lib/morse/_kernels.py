@@ -47,8 +47,9 @@ def morse_columns(n: int, ptr: np.ndarray, idx: np.ndarray, data: np.ndarray, pa
     i64 = np.int64
     return discrete_gradient.morse_columns(
         int(n), np.ascontiguousarray(ptr, dtype=i64), np.ascontiguousarray(idx, dtype=i64),
-        np.ascontiguousarray(data, dtype=i64), np.ascontiguousarray(partner, dtype=i64),
-        np.ascontiguousarray(rank, dtype=i64), np.ascontiguousarray(is_crit, dtype=np.bool_),
+        np.ascontiguousarray(data, dtype=i64),
+        discrete_gradient.Gradient(np.ascontiguousarray(partner, dtype=i64), np.ascontiguousarray(rank, dtype=i64),
+                                   np.ascontiguousarray(is_crit, dtype=np.bool_)),
         np.ascontiguousarray(sources, dtype=i64), int(p))
 
 

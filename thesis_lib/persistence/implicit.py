@@ -53,6 +53,12 @@ matrix for up to 2048 points, or a hash of the edges), the (k − 1)-simplices w
 is assembled, one column record per column, the pivot table, the reduction chains of the columns
 that needed work and, while a column is reduced, its enumerators.
 
+With ``cocycles=True`` the reduction also keeps, for each bar of dimension k ≥ 1, the chain V_s of
+the column that gave it (s and the simplices whose coboundaries were added to it) as the bar's
+representative cocycle, as ripser.py's ``do_cocycles`` does; the bars of an emergent or a zero
+apparent pair have length zero and are not reported, so the shortcuts never hide a chain that is
+asked for.  Without it nothing more is kept than the barcode needs.
+
 Everything after the graph is compiled C++ (``src/implicit_rips.cpp``, with the graph and the
 combinatorial number system in ``src/implicit_rips_graph.hpp``).
 """
@@ -60,7 +66,7 @@ combinatorial number system in ``src/implicit_rips_graph.hpp``).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -71,6 +77,7 @@ from .._validate import (
     Edges,
     Field,
     Points,
+    check_flag,
     check_int,
     check_max_dim,
     check_min_persistence,
@@ -79,7 +86,7 @@ from .._validate import (
     parse_rips_input,
 )
 from ..complexes.rips import rips_edges
-from .barcode import Barcode
+from .barcode import Barcode, _canonical
 
 if TYPE_CHECKING:
     import scipy.sparse
@@ -173,12 +180,31 @@ def _dense(n: int, neighbours: int) -> bool:
     return n <= DENSE_MAX or (n <= DENSE_FULL_MAX and neighbours >= DENSE_FILL * n * n)
 
 
+#: representative cocycles per homology dimension: ``cocycles[k][i]`` belongs to ``barcode.intervals(k)[i]``
+Cocycles = dict[int, list[npt.NDArray[np.int64]]]
+
+
 # ---------------------------------------------------------------------------- driver
+@overload
+def rips_persistence(
+    points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
+    stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
+    cocycles: Literal[False] = ...,
+) -> Barcode: ...
+@overload
+def rips_persistence(
+    points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
+    stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
+    cocycles: Literal[True],
+) -> tuple[Barcode, Cocycles]: ...
 def rips_persistence(
     points: npt.ArrayLike | None = None, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
     distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = None,
     stats: dict[int, dict[str, int]] | None = None, n_threads: int | None = None, min_persistence: float = 0.0,
-) -> Barcode:
+    cocycles: bool = False,
+) -> Barcode | tuple[Barcode, Cocycles]:
     """Barcode of the Vietoris–Rips filtration of ``points`` without building it (implicit engine).
 
     Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, computed by the dual
@@ -217,6 +243,15 @@ def rips_persistence(
         Intervals with ``death − birth <= min_persistence`` (in ε) are left out; default 0: only the
         zero-length ones.  Tied distances give bars of length ~1e-16 that ripser.py (on float32
         distances) does not report: 1e-12 drops them.
+    cocycles : bool
+        Also return a representative cocycle of every bar of dimension >= 1 (default False: the
+        barcode alone, and the reduction keeps no more than it needs).  The cocycle of a bar born by
+        the k-simplex s is the reduction chain V_s of s's coboundary column, as ripser.py's
+        ``do_cocycles`` gives it (the columns of V with M_p V reduced, Theorem 2.39, on the
+        coboundary side): s with coefficient 1 plus multiples of later simplices.  Restricted to the
+        simplices of value <= t it is a cocycle of the complex at t whose class is not zero, for every
+        t from the bar's birth to just before its death (every t from the birth on for an essential
+        bar); it may hold simplices born after the birth (restrict it to see the class at a value).
 
     Returns
     -------
@@ -226,6 +261,12 @@ def rips_persistence(
         are :func:`~thesis_lib.complexes.rips`'s (distances computed on the points scaled by a
         power of two and scaled back exactly, so coordinates near 1e160 or 1e-170 are fine).
         ``barcode.to_diagrams(scale="diameter")`` gives ripser.py's ``dgms`` (diameters 2ε).
+    dict of int to list of numpy.ndarray
+        Only with ``cocycles=True``, after the barcode: ``cocycles[k]`` for each dimension
+        k = 1 .. max_dim − 1, one array per bar, ``cocycles[k][i]`` belonging to
+        ``barcode.intervals(k)[i]`` (sorted by birth, then death).  Each is ripser.py's format: an
+        int64 array of shape (m, k + 2), a row per simplex of the cocycle, its k + 1 vertices
+        (decreasing) then its coefficient in 1 .. p − 1, rows in filtration order (value up).
 
     Warns
     -----
@@ -248,6 +289,14 @@ def rips_persistence(
     >>> circle = np.column_stack([np.cos(np.arange(12) * np.pi / 6), np.sin(np.arange(12) * np.pi / 6)])
     >>> rips_persistence(circle, max_dim=2).betti(0.4)
     [1, 1]
+
+    A square of side 2: its loop is born with the sides (ε = 1) and dies with the diagonals; its
+    cocycle is one side, the last of the four in the filtration (vertices 1 and 0, coefficient 1):
+
+    >>> square = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+    >>> barcode, cocycles = rips_persistence(square, max_dim=2, cocycles=True)
+    >>> barcode.intervals(1).round(3).tolist(), cocycles[1][0].tolist()
+    ([[1.0, 1.414]], [[1, 0, 1]])
     """
     max_dim = check_max_dim(max_dim, maximum=MAX_DIM)
     if max_dim < 1:
@@ -256,13 +305,15 @@ def rips_persistence(
     threads = 0 if n_threads is None else check_int(n_threads, "n_threads", minimum=1)
     eps = check_radius(max_radius)
     min_persistence = check_min_persistence(min_persistence)
+    cocycles = check_flag(cocycles, "cocycles")
     source = parse_rips_input(points, distance_matrix, sparse=True)
-    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads, min_persistence=min_persistence)
+    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads, min_persistence=min_persistence,
+                        cocycles=cocycles)
 
 
 def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim: int, field: Field, *,
                  stats: dict[int, dict[str, int]] | None = None, n_threads: int = 0,
-                 min_persistence: float = 0.0) -> Barcode:
+                 min_persistence: float = 0.0, cocycles: bool = False) -> Barcode | tuple[Barcode, Cocycles]:
     """:func:`rips_persistence` on parsed input (the implicit engine's one entry point).
 
     Thesis: Definition 2.11 (Rips) and Theorem 2.39 (the pairs, by the dual reduction).
@@ -283,11 +334,15 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
         Threads for assembling the columns; 0: ``OMP_NUM_THREADS`` when set, else every core.
     min_persistence : float
         The checked ``min_persistence`` of :func:`rips_persistence`.
+    cocycles : bool
+        Also return the representative cocycles, as :func:`rips_persistence`.
 
     Returns
     -------
     Barcode
         As :func:`rips_persistence`.
+    dict of int to list of numpy.ndarray
+        Only with ``cocycles``: as :func:`rips_persistence`.
 
     Raises
     ------
@@ -298,18 +353,23 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
     asked, max_dim = max_dim, min(max_dim, n + 1)  # no simplex has more than n vertices: H_k = 0 for k >= n
     if math.comb(n, max_dim + 1) >= 2**62:
         raise ValueError(f"{n} points with max_dim={max_dim}: simplex indices would overflow 64 bits")
+    options = implicit_rips.Options()
+    options.max_dim, options.p, options.dense = max_dim, field.p, _dense(n, nbr.shape[0])
+    options.n_threads, options.parallel_min, options.cocycles = n_threads, PARALLEL_MIN, cocycles
     dims = implicit_rips.rips_barcode(
         n, np.ascontiguousarray(indptr, dtype=np.int64), np.ascontiguousarray(nbr, dtype=np.int64),
-        np.ascontiguousarray(length, dtype=np.float64), np.ascontiguousarray(births, dtype=np.float64), max_dim,
-        field.p, _dense(n, nbr.shape[0]), n_threads, PARALLEL_MIN)
+        np.ascontiguousarray(length, dtype=np.float64), np.ascontiguousarray(births, dtype=np.float64), options)
     intervals: dict[int, np.ndarray] = {}
-    for k, (births, deaths, ess, counts) in enumerate(dims):
+    reps: Cocycles = {k: [] for k in range(1, asked)}
+    for k, (births, deaths, ess, counts, offsets, rows) in enumerate(dims):
         iv = np.empty((births.shape[0] + ess.shape[0], 2))
         iv[: births.shape[0], 0] = births
         iv[: births.shape[0], 1] = deaths
         iv[births.shape[0] :, 0] = ess
         iv[births.shape[0] :, 1] = np.inf
         intervals[k] = iv * 0.5  # diameters -> ε
+        if cocycles and k > 0:
+            reps[k] = _bar_cocycles(intervals[k], offsets, rows, min_persistence)
         if stats is None:
             continue
         if k == 0:
@@ -317,4 +377,14 @@ def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim
         else:
             stats[k] = dict(zip(("simplices", "apparent", "columns", "emergent", "reduced", "additions", "entries",
                                  "enumerators"), (int(x) for x in counts)))
-    return Barcode(intervals, dimensions=range(asked), coefficients=field, min_persistence=min_persistence)
+    barcode = Barcode(intervals, dimensions=range(asked), coefficients=field, min_persistence=min_persistence)
+    return (barcode, reps) if cocycles else barcode
+
+
+def _bar_cocycles(intervals: np.ndarray, offsets: np.ndarray, rows: np.ndarray,
+                  min_persistence: float) -> list[np.ndarray]:
+    """The engine's cocycles (one per row of ``intervals``: rows ``offsets[i] .. offsets[i + 1]``) in the
+    order of the barcode's intervals (the same rows kept, sorted the same way)."""
+    parts = np.split(rows, offsets[1:-1])
+    _, order = _canonical(intervals, np.arange(intervals.shape[0]), min_persistence)
+    return [parts[i] for i in order]

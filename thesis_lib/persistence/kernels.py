@@ -135,7 +135,10 @@ def reduce_columns(
         np.ascontiguousarray(indptr, dtype=np.int64),
         np.ascontiguousarray(rows, dtype=np.int32 if rows.dtype == np.int32 else np.int64),
         np.ascontiguousarray(coefs, dtype=np.int8 if coefs.dtype == np.int8 else np.int64),
-        np.ascontiguousarray(row_value, dtype=np.float64), np.ascontiguousarray(columns, dtype=np.int64),
-        np.ascontiguousarray(cleared, dtype=np.bool_), np.ascontiguousarray(pivot, dtype=np.int64),
-        np.ascontiguousarray(pivot_coef, dtype=np.int64), int(p), int(keep),
+        np.ascontiguousarray(row_value, dtype=np.float64),
+        reduction.ColumnState(np.ascontiguousarray(columns, dtype=np.int64),
+                              np.ascontiguousarray(cleared, dtype=np.bool_),
+                              np.ascontiguousarray(pivot, dtype=np.int64),
+                              np.ascontiguousarray(pivot_coef, dtype=np.int64)),
+        int(p), int(keep),
     )

@@ -122,7 +122,7 @@ def _open_seed(pts, s, structure) -> tuple[int, bool]:
     near = np.argsort(dist, kind="stable")[:_OPEN_SEEDS]
     ts = np.repeat(near.astype(np.int64), 2)
     flips = np.tile(np.array([False, True]), len(near))
-    worst = _trimming_core.openness(pts, s, alive, *structure, ts, flips).tolist()
+    worst = _trimming_core.openness(pts, s, alive, _trimming_core.Ridges(*structure), ts, flips).tolist()
     best = max((worst[2 * i + j], -i, int(t), f) for i, t in enumerate(near) for j, f in enumerate((False, True)))
     return best[2], best[3]
 
@@ -164,7 +164,8 @@ def outer_walk(pts: np.ndarray, simplices: np.ndarray, *, prune: bool = True) ->
         if not alive.any():
             raise ValueError("trimming removed every simplex: the sample is too sparse for the Crust")
     seed, flip = _outer_seed(pts, simplices, alive)
-    return _kept(*_trimming_core.walk(pts, simplices, alive, *structure, seed, flip, False, np.pi), structure)
+    ridges = _trimming_core.Ridges(*structure)
+    return _kept(*_trimming_core.walk(pts, simplices, alive, ridges, seed, flip, False, np.pi), structure)
 
 
 def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
@@ -193,7 +194,8 @@ def open_walk(pts: np.ndarray, simplices: np.ndarray) -> tuple[np.ndarray, int]:
     structure = _ridge_structure(simplices, len(pts))
     alive = np.ones(len(simplices), dtype=bool)
     seed, flip = _open_seed(pts, simplices, structure)
-    return _kept(*_trimming_core.walk(pts, simplices, alive, *structure, seed, flip, True, np.pi / 2), structure)
+    ridges = _trimming_core.Ridges(*structure)
+    return _kept(*_trimming_core.walk(pts, simplices, alive, ridges, seed, flip, True, np.pi / 2), structure)
 
 
 def _kept(orient, order, conflicts, structure) -> tuple[np.ndarray, int]:
