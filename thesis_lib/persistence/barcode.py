@@ -36,10 +36,29 @@ def _long_enough(arr: np.ndarray, min_persistence: float) -> np.ndarray:
     return keep
 
 
-def _canonical(arr: np.ndarray, extra: np.ndarray | None = None,
+def canonical_intervals(arr: np.ndarray, extra: np.ndarray | None = None,
                min_persistence: float = 0.0) -> tuple[np.ndarray, np.ndarray | None]:
     """Drop the intervals of length at most ``min_persistence`` (zero-length ones always) and sort by
-    (birth, death) (two stable sorts: faster than lexsort)."""
+    (birth, death) (two stable sorts: faster than lexsort), the order of every barcode.
+
+    Thesis: Definition 2.23 (the P-intervals; their order is ours).
+
+    Parameters
+    ----------
+    arr : ndarray of float64, shape (k, 2)
+        Intervals (birth, death).
+    extra : ndarray or None
+        Rows carried along (kept and reordered with the intervals), or None.
+    min_persistence : float
+        Intervals of length at most this are dropped.
+
+    Returns
+    -------
+    intervals : ndarray of float64, shape (k', 2)
+        The intervals kept, sorted.
+    extra : ndarray or None
+        ``extra`` kept and sorted alike.
+    """
     keep = _long_enough(arr, min_persistence)
     if not keep.all():
         arr = arr[keep]
@@ -402,7 +421,7 @@ class Barcode:
         if dim not in self._done:
             if dim not in self._raw:
                 return np.empty((0, 2), dtype=np.float64), np.empty((0, 2), dtype=np.int64)
-            arr, extra = _canonical(*self._raw.pop(dim), self._min_persistence)
+            arr, extra = canonical_intervals(*self._raw.pop(dim), self._min_persistence)
             arr.setflags(write=False)
             if extra is not None:
                 extra.setflags(write=False)

@@ -86,7 +86,7 @@ from .._validate import (
     parse_rips_input,
 )
 from ..complexes.rips import rips_edges
-from .barcode import Barcode, _canonical
+from .barcode import Barcode, canonical_intervals
 
 if TYPE_CHECKING:
     import scipy.sparse
@@ -386,5 +386,5 @@ def _bar_cocycles(intervals: np.ndarray, offsets: np.ndarray, rows: np.ndarray,
     """The engine's cocycles (one per row of ``intervals``: rows ``offsets[i] .. offsets[i + 1]``) in the
     order of the barcode's intervals (the same rows kept, sorted the same way)."""
     parts = np.split(rows, offsets[1:-1])
-    _, order = _canonical(intervals, np.arange(intervals.shape[0]), min_persistence)
+    _, order = canonical_intervals(intervals, np.arange(intervals.shape[0]), min_persistence)
     return [parts[i] for i in order]
