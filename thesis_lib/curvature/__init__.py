@@ -5,7 +5,7 @@ n-simplices of the hypersurface (n = 2 is a triangle mesh).  Every function vali
 through :func:`validate_mesh` (one module, ``curvature.validate``; the simplices' geometry is in
 ``curvature.geometry``).  The exact curvatures of the smooth surfaces they are measured against are
 in :mod:`thesis_lib.surfaces`; estimates on point clouds in :mod:`.point_curvature` (a surface by
-the Crust, or none) and :mod:`.pointcloud`.
+the Crust, or none) and ``curvature.pointcloud``.
 """
 
 from .areas import AREA_KINDS, circumcentric_fractions, vertex_areas

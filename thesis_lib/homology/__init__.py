@@ -2,8 +2,8 @@
 forms and ranks over Z and Z/p, and the simplicial homology groups read off them.
 
 Modules, bottom up: :mod:`.simplicial` (simplices as integer arrays, closure, signed boundary
-matrices), :mod:`.facet_lookup`, :mod:`.filtration` (the compact filtered complex), the sparse
-elimination and modular arithmetic behind :mod:`.smith`, and :mod:`.groups` (H_p over Z and Z/p).
+matrices), ``facet_lookup``, :mod:`.filtration` (the compact filtered complex), the sparse
+elimination and modular arithmetic behind :mod:`.smith`, and ``groups`` (H_p over Z and Z/p).
 """
 
 from .groups import (

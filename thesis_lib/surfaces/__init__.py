@@ -4,6 +4,12 @@ One module per surface (the torus, the n-sphere, the n-catenoid, ellipsoids), on
 parametrised hypersurface (normal, fundamental forms, shape operator by differentiation) and one for
 the Gauss–Bonnet–Chern theorem.  The discrete estimates of :mod:`thesis_lib.curvature` are measured
 against these.
+
+Sign conventions follow the thesis: the normal is N = X_{u_1} ∧ ... ∧ X_{u_n} / W (eq. 3.9, for
+n = 2 the cross product X_u × X_v), the shape operator is S = -N_* (Definition 3.1, eq. 3.10),
+H = tr(S)/n and K = det(S) (Definitions 3.4 and 3.10).  The discrete estimates of
+:mod:`thesis_lib.curvature` give |H| = ||∇area|| / (n · area), to be compared with ``abs`` of the
+signed values returned here.
 """
 
 from .catenoid import catenoid_mean_curvature, catenoid_point, catenoid_principal_curvatures

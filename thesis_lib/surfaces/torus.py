@@ -1,10 +1,6 @@
 """The torus of revolution of §3.4.1 (radii R > r): its parametrisation and exact curvatures.
 
-Sign conventions follow the thesis: the normal is N = X_{u_1} ∧ ... ∧ X_{u_n} / W (eq. 3.9, for
-n = 2 the cross product X_u × X_v), the shape operator is S = -N_* (Definition 3.1, eq. 3.10),
-H = tr(S)/n and K = det(S) (Definitions 3.4 and 3.10).  The discrete estimates of
-:mod:`thesis_lib.curvature` give |H| = ||∇area|| / (n · area), to be compared with ``abs`` of the
-signed values returned here.
+Sign conventions: those of :mod:`thesis_lib.surfaces`.
 """
 
 from __future__ import annotations
