@@ -57,7 +57,9 @@ With ``cocycles=True`` the reduction also keeps, for each bar of dimension k ≥
 the column that gave it (s and the simplices whose coboundaries were added to it) as the bar's
 representative cocycle, as ripser.py's ``do_cocycles`` does; the bars of an emergent or a zero
 apparent pair have length zero and are not reported, so the shortcuts never hide a chain that is
-asked for.  Without it nothing more is kept than the barcode needs.
+asked for.  Without it nothing more is kept than the barcode needs.  Representative *cycles*
+(``cycles=True``) are not the implicit engine's: ``rips_cycles`` computes them by the explicit engine
+on the Rips complex truncated to what the bars need.
 
 Everything after the graph is compiled C++ (``src/implicit_rips.cpp``, with the graph and the
 combinatorial number system in ``src/implicit_rips_graph.hpp``).
@@ -87,6 +89,7 @@ from .._validate import (
 )
 from ..complexes.rips import rips_edges
 from .barcode import Barcode, canonical_intervals
+from .rips_cycles import Cycles, bar_cycles
 
 if TYPE_CHECKING:
     import scipy.sparse
@@ -190,21 +193,35 @@ def rips_persistence(
     points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
     distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
     stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
-    cocycles: Literal[False] = ...,
+    cocycles: Literal[False] = ..., cycles: Literal[False] = ...,
 ) -> Barcode: ...
 @overload
 def rips_persistence(
     points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
     distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
     stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
-    cocycles: Literal[True],
+    cocycles: Literal[True], cycles: Literal[False] = ...,
 ) -> tuple[Barcode, Cocycles]: ...
+@overload
+def rips_persistence(
+    points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
+    stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
+    cocycles: Literal[False] = ..., cycles: Literal[True],
+) -> tuple[Barcode, Cycles]: ...
+@overload
+def rips_persistence(
+    points: npt.ArrayLike | None = None, *, max_radius: float = ..., max_dim: int = ..., coefficients: int = ...,
+    distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = ...,
+    stats: dict[int, dict[str, int]] | None = ..., n_threads: int | None = ..., min_persistence: float = ...,
+    cocycles: Literal[True], cycles: Literal[True],
+) -> tuple[Barcode, Cocycles, Cycles]: ...
 def rips_persistence(
     points: npt.ArrayLike | None = None, *, max_radius: float = np.inf, max_dim: int = 2, coefficients: int = 2,
     distance_matrix: npt.ArrayLike | scipy.sparse.spmatrix | scipy.sparse.sparray | None = None,
     stats: dict[int, dict[str, int]] | None = None, n_threads: int | None = None, min_persistence: float = 0.0,
-    cocycles: bool = False,
-) -> Barcode | tuple[Barcode, Cocycles]:
+    cocycles: bool = False, cycles: bool = False,
+) -> Barcode | tuple[Barcode, Cocycles] | tuple[Barcode, Cycles] | tuple[Barcode, Cocycles, Cycles]:
     """Barcode of the Vietoris–Rips filtration of ``points`` without building it (implicit engine).
 
     Thesis: Definition 2.11 (Rips), Theorem 2.39 / Algorithm 2 (the pairs, computed by the dual
@@ -252,6 +269,17 @@ def rips_persistence(
         simplices of value <= t it is a cocycle of the complex at t whose class is not zero, for every
         t from the bar's birth to just before its death (every t from the birth on for an essential
         bar); it may hold simplices born after the birth (restrict it to see the class at a value).
+    cycles : bool
+        Also return a representative cycle of every bar of dimension >= 1 (default False).  Unlike the
+        cocycles, which the implicit engine's own reduction gives at almost no cost, these do not come
+        from the implicit engine, which keeps no simplex of a pair: the
+        cycles of dimension k are :meth:`Barcode.representative`'s (Theorem 2.39's z_i) computed by
+        the explicit engine on the Rips filtration of the same parsed input truncated to what the bars
+        need, simplices of dimension <= k + 1 and value up to the largest finite death of dimension k
+        (``max_radius`` when there is an essential bar), so they cost that complex's construction and
+        reduction (``thesis_lib.persistence.rips_cycles``).  The cycle of a bar [b, d) is a cycle over
+        Z/p of simplices of value <= b, one of them of value b; for a finite bar it is a boundary in
+        the complex at d and not before.
 
     Returns
     -------
@@ -267,6 +295,12 @@ def rips_persistence(
         ``barcode.intervals(k)[i]`` (sorted by birth, then death).  Each is ripser.py's format: an
         int64 array of shape (m, k + 2), a row per simplex of the cocycle, its k + 1 vertices
         (decreasing) then its coefficient in 1 .. p − 1, rows in filtration order (value up).
+    dict of int to list of numpy.ndarray
+        Only with ``cycles=True``, last (after the cocycles when both are asked for: ``(barcode,
+        cocycles, cycles)``): ``cycles[k][i]`` belongs to ``barcode.intervals(k)[i]`` for
+        k = 1 .. max_dim − 1, the same layout as the cocycles but with the k + 1 vertices of each row
+        *increasing* (the library's simplices; the cocycles keep ripser.py's decreasing order), rows
+        in the filtration order of the explicit engine (the bar's creating simplex last).
 
     Warns
     -----
@@ -280,8 +314,8 @@ def rips_persistence(
     ValueError
         ``max_dim`` below 1 or above ``MAX_DIM`` (10⁴; dimensions above
         the number of points are computed as the empty homology they are), a non-prime
-        ``coefficients``, ``n_threads`` below 1, a negative, infinite or NaN ``min_persistence``, or
-        invalid points / distances.
+        ``coefficients``, ``cocycles`` or ``cycles`` not True or False, ``n_threads`` below 1, a
+        negative, infinite or NaN ``min_persistence``, or invalid points / distances.
 
     Examples
     --------
@@ -297,6 +331,12 @@ def rips_persistence(
     >>> barcode, cocycles = rips_persistence(square, max_dim=2, cocycles=True)
     >>> barcode.intervals(1).round(3).tolist(), cocycles[1][0].tolist()
     ([[1.0, 1.414]], [[1, 0, 1]])
+
+    Its cycle is the four sides (the last, 2-3, creates the loop); over Z/3 the signs show:
+
+    >>> barcode, cycles = rips_persistence(square, max_dim=2, coefficients=3, cycles=True)
+    >>> cycles[1][0].tolist()
+    [[0, 1, 1], [0, 3, 2], [1, 2, 1], [2, 3, 1]]
     """
     max_dim = check_max_dim(max_dim, maximum=MAX_DIM)
     if max_dim < 1:
@@ -305,10 +345,15 @@ def rips_persistence(
     threads = 0 if n_threads is None else check_int(n_threads, "n_threads", minimum=1)
     eps = check_radius(max_radius)
     min_persistence = check_min_persistence(min_persistence)
-    cocycles = check_flag(cocycles, "cocycles")
+    cocycles, cycles = check_flag(cocycles, "cocycles"), check_flag(cycles, "cycles")
     source = parse_rips_input(points, distance_matrix, sparse=True)
-    return rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads, min_persistence=min_persistence,
-                        cocycles=cocycles)
+    out = rips_barcode(source, eps, max_dim, field, stats=stats, n_threads=threads, min_persistence=min_persistence,
+                       cocycles=cocycles)
+    if not cycles:
+        return out
+    barcode = out[0] if cocycles else out
+    reps = bar_cycles(source, eps, field, barcode, range(1, max_dim))
+    return (*out, reps) if cocycles else (barcode, reps)
 
 
 def rips_barcode(source: Points | np.ndarray | Edges, max_radius: float, max_dim: int, field: Field, *,
