@@ -89,8 +89,10 @@ def test_neighbour_weights_change_the_fit_and_other_refusals():
         knn_shape_operator(pts, weights="gaussian")
     with pytest.raises(ValueError, match="n = 2"):
         knn_curvature(sample_sphere(100, n_dims=4, seed=0), curvature="gaussian")
-    with pytest.raises(ValueError, match="estimator"):
+    with pytest.raises(ValueError, match="^estimator must be one of 'knn', 'crust', got 'mls'$"):
         point_curvature(pts, estimator="mls")
+    with pytest.raises(ValueError, match="^estimator must be one of 'knn', 'crust', got array"):  # a 0-d array of 'knn'
+        point_curvature(pts, estimator=np.array("knn"))
     with pytest.raises(ValueError, match="R³"):
         point_curvature(sample_sphere(100, n_dims=4, seed=0), estimator="crust", curvature="gaussian")
     with pytest.raises(ValueError, match="mixed"):

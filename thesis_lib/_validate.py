@@ -262,8 +262,7 @@ def check_scale(scale) -> float:
 
     Thesis: Definition 2.11 (ε, with diameter ≤ 2ε).
     """
-    if not isinstance(scale, str) or scale not in SCALES:
-        raise ValueError(f"scale must be one of {', '.join(map(repr, SCALES))}, got {scale!r}")
+    check_choice(scale, SCALES, "scale")
     return SCALES[scale]
 
 
@@ -708,3 +707,34 @@ def finite_floats(name: str, x) -> np.ndarray:
     if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} contains NaN or infinite values")
     return arr
+
+
+def check_choice(value, choices, name: str) -> str:
+    """``value`` if it is one of the names ``choices``; a ``ValueError`` naming the argument and the
+    choices otherwise (also for a value that is not a string, such as an array).
+
+    Thesis: the named options of the constructions and estimators (§2.1 complexes, §3.3 vertex areas
+    and estimators, §3.4 reconstructions).
+
+    Parameters
+    ----------
+    value : object
+        What the caller passed.
+    choices : sequence of str
+        The names allowed.
+    name : str
+        The argument's name, for the message.
+
+    Returns
+    -------
+    str
+        ``value``.
+
+    Examples
+    --------
+    >>> check_choice("mixed", ("mixed", "voronoi"), "area")
+    'mixed'
+    """
+    if isinstance(value, str) and value in choices:
+        return value
+    raise ValueError(f"{name} must be one of {', '.join(map(repr, choices))}, got {value!r}")

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.spatial import Delaunay
 
-from .._validate import check_int
+from .._validate import check_choice, check_int
 from ..curvature import mean_curvature
 from ..lab.results import round_sig
 from ..meshes.sampling import sample_n_catenoid, sample_sphere
@@ -56,11 +56,9 @@ def sample_hypersurface(surface: str, n_samples: int, *, seed: int = 0) -> tuple
     ValueError
         On an unknown ``surface`` or an invalid ``n_samples`` (or ``seed``, for the sphere).
     """
-    if surface == "sphere":
+    if check_choice(surface, HYPERSURFACES, "surface") == "sphere":
         return sample_sphere(n_samples, n_dims=4, radius=SPHERE_RADIUS, seed=seed), None
-    if surface == "catenoid":
-        return sample_n_catenoid(n_samples, dimension=3, seed=seed, return_params=True)
-    raise ValueError(f"surface must be one of {HYPERSURFACES}, got {surface!r}")
+    return sample_n_catenoid(n_samples, dimension=3, seed=seed, return_params=True)
 
 
 def _errors(surface: str, H: np.ndarray, params, where: np.ndarray) -> np.ndarray:
@@ -220,8 +218,7 @@ def describe_crust_run(run: Mapping, *, surface: str, width: int = 76) -> str:
     |H| estimated at 500 samp
     """
     _check_run(run)
-    if surface not in HYPERSURFACES:
-        raise ValueError(f"surface must be one of {HYPERSURFACES}, got {surface!r}")
+    check_choice(surface, HYPERSURFACES, "surface")
     width = check_int(width, "width", minimum=20)
     check = textwrap.fill(f"{surface}, {len(run['points'])} samples: {run['report'].describe()}", width)
     errors = textwrap.fill(f"|H| estimated at {int(run['estimated'].sum())} samples; error median "
@@ -383,8 +380,7 @@ def crust_error_curve(surface: str, counts: Sequence[int], *, repeats: int = 2, 
     >>> print(curve.describe().splitlines()[0][:22])
     sphere     300: median
     """
-    if surface not in HYPERSURFACES:
-        raise ValueError(f"surface must be one of {HYPERSURFACES}, got {surface!r}")
+    check_choice(surface, HYPERSURFACES, "surface")
     counts = tuple(check_int(n, "counts", minimum=1) for n in counts)
     if not counts or len(set(counts)) != len(counts):
         raise ValueError(f"counts must be distinct sample counts, at least one, got {list(counts)}")

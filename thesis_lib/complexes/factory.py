@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_seed, parse_points
+from .._validate import check_choice, check_seed, parse_points
 from ..homology.filtration import Filtration
 from .landmarks import maxmin_landmarks, random_landmarks
 from .rips import rips
@@ -42,8 +42,7 @@ def choose_landmarks(points: npt.ArrayLike, *, landmark_method: str, n: int, see
     >>> choose_landmarks(points, landmark_method="random", n=4, seed=0).tolist()
     [10, 19, 24, 31]
     """
-    if not isinstance(landmark_method, str) or landmark_method not in LANDMARK_METHODS:
-        raise ValueError(f"landmark_method must be one of {sorted(LANDMARK_METHODS)}, got {landmark_method!r}")
+    check_choice(landmark_method, sorted(LANDMARK_METHODS), "landmark_method")
     return LANDMARK_METHODS[landmark_method](points, n=n, seed=seed)
 
 
@@ -86,14 +85,11 @@ def build_filtration(
     >>> f.counts(), persistence(f).intervals(1).round(6).tolist()
     ([8, 22, 20], [[0.503326, inf]])
     """
-    if not isinstance(complex, str):
-        raise ValueError(f"complex must be one of {COMPLEXES}, got {complex!r}")
+    check_choice(complex, COMPLEXES, "complex")
     seed = check_seed(seed)  # checked for every complex, also where it is not used (a rips call)
     points = parse_points(points, warn_square=True)  # parsed once: each construction takes the record
     if complex == "rips":
         return rips(points, max_radius=max_radius, max_dim=max_dim)
-    if complex in ("witness", "lazy-witness"):
-        landmarks = choose_landmarks(points, landmark_method=landmark_method, n=n_landmarks, seed=seed)
-        build = witness if complex == "witness" else lazy_witness
-        return build(points, landmarks, max_radius=max_radius, max_dim=max_dim, nu=nu)
-    raise ValueError(f"complex must be one of {COMPLEXES}, got {complex!r}")
+    landmarks = choose_landmarks(points, landmark_method=landmark_method, n=n_landmarks, seed=seed)
+    build = witness if complex == "witness" else lazy_witness
+    return build(points, landmarks, max_radius=max_radius, max_dim=max_dim, nu=nu)

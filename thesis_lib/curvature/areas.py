@@ -27,7 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import vertex_areas as _vertex_areas_core
-from .._validate import InvalidTypeError
+from .._validate import InvalidTypeError, check_choice
 from .manifold import checked_mesh
 from .validate import ASPECT_BOUND, Mesh
 
@@ -56,9 +56,7 @@ def check_area(area: object) -> str:
     ValueError
         If ``area`` is not one of :data:`AREA_KINDS` (including a non-string).
     """
-    if not isinstance(area, str) or area not in AREA_KINDS:
-        raise ValueError(f"unknown area {area!r}: use one of {AREA_KINDS}")
-    return area
+    return check_choice(area, AREA_KINDS, "area")
 
 
 def circumcentric_fractions(corners: npt.ArrayLike) -> np.ndarray:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_points
+from .._validate import as_points, check_choice
 from ..reconstruction.crust import crust
 from ..reconstruction.crust_nd import crust_nd
 from .gaussian import gaussian_curvature
@@ -60,8 +60,7 @@ def point_curvature(points: npt.ArrayLike, *, estimator: str = "knn", curvature:
         reconstruct, a ``k`` out of range).
     """
     pts = as_points(points, allow_duplicates=False)
-    if estimator not in CURVATURE_ESTIMATORS:
-        raise ValueError(f"estimator must be one of {CURVATURE_ESTIMATORS}, got {estimator!r}")
+    check_choice(estimator, CURVATURE_ESTIMATORS, "estimator")
     if curvature not in ("mean", "gaussian"):
         raise ValueError(f"curvature must be 'mean' or 'gaussian', got {curvature!r}")
     if estimator == "knn":

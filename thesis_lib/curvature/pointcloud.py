@@ -22,7 +22,7 @@ import numpy as np
 import numpy.typing as npt
 from scipy.spatial import cKDTree
 
-from .._validate import as_points, check_int
+from .._validate import as_points, check_choice, check_int
 from .shape import ShapeOperator
 
 __all__ = ["knn_shape_operator", "knn_curvature", "neighbour_mean", "KNN_WEIGHTS"]
@@ -68,8 +68,7 @@ def knn_shape_operator(points: npt.ArrayLike, *, k: int = 16, neighbour_weights:
     k = check_int(k, "k", minimum=need)
     if k >= npts:
         raise ValueError(f"k = {k} neighbours need more than {k} points, got {npts}")
-    if not isinstance(neighbour_weights, str) or neighbour_weights not in KNN_WEIGHTS:
-        raise ValueError(f"neighbour_weights must be one of {KNN_WEIGHTS}, got {neighbour_weights!r}")
+    check_choice(neighbour_weights, KNN_WEIGHTS, "neighbour_weights")
     dist, nb = cKDTree(pts).query(pts, k=k + 1)
     diff = pts[nb[:, 1:]] - pts[:, None, :]  # (N, k, d): x_j - x_i
     centred = pts[nb] - pts[nb].mean(axis=1, keepdims=True)

@@ -18,6 +18,7 @@ from typing import NamedTuple
 import numpy as np
 import numpy.typing as npt
 
+from .._validate import check_choice
 from .manifold import checked_mesh
 from .validate import Mesh, check_orientation
 
@@ -103,15 +104,11 @@ def _normals(mesh: Mesh, kind: str = "max") -> np.ndarray:
 
 
 def _check_normals(normals) -> str:
-    if not isinstance(normals, str) or normals not in NORMALS:
-        raise ValueError(f"unknown normals {normals!r}: use 'max' or 'area'")
-    return normals
+    return check_choice(normals, NORMALS, "normals")
 
 
 def _check_edge_weights(edge_weights) -> str:
-    if not isinstance(edge_weights, str) or edge_weights not in EDGE_WEIGHTS:
-        raise ValueError(f"unknown edge_weights {edge_weights!r}: use 'voronoi' or 'uniform'")
-    return edge_weights
+    return check_choice(edge_weights, EDGE_WEIGHTS, "edge_weights")
 
 
 def vertex_normals(vertices: npt.ArrayLike, simplices: npt.ArrayLike, *, normals: str = "max") -> np.ndarray:

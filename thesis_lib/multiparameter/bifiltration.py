@@ -18,7 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_max_dim, check_radius, parse_points
+from .._validate import check_choice, check_max_dim, check_radius, parse_points
 from ..complexes import alpha
 from ..complexes.rips import rips_filtration
 from ..homology.filtration import Filtration, as_complex
@@ -259,8 +259,7 @@ def radius_curvature_bifiltration(points: npt.ArrayLike, curvature: npt.ArrayLik
         unknown complex.
     """
     pts = parse_points(points)
-    if complex not in COMPLEX_KINDS:
-        raise ValueError(f"complex must be one of {COMPLEX_KINDS}, got {complex!r}")
+    check_choice(complex, COMPLEX_KINDS, "complex")
     k = np.asarray(curvature, dtype=np.float64) if not isinstance(curvature, str) else curvature
     if np.ndim(k) != 1 or np.shape(k)[0] != pts.n:
         raise ValueError(f"curvature must have one value per point ({pts.n}), got shape {np.shape(k)}")

@@ -26,6 +26,7 @@ from .._validate import (
     MAX_DIM,
     Field,
     InvalidTypeError,
+    check_choice,
     check_int,
     check_max_dim,
     check_min_persistence,
@@ -203,8 +204,7 @@ class RipsDiagrams:
         check_scale(self.scale)
         check_min_persistence(self.min_persistence)
         _jobs(self.n_jobs)
-        if self.output not in OUTPUTS:
-            raise ValueError(f"output must be one of {', '.join(map(repr, OUTPUTS))}, got {self.output!r}")
+        check_choice(self.output, OUTPUTS, "output")
         if self.metric not in METRICS:
             raise ValueError(f"metric must be one of {', '.join(map(repr, METRICS))}, got {self.metric!r}")
         if self.homology_dimensions is None:
