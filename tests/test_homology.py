@@ -297,5 +297,5 @@ def test_bad_simplices():
         boundary_matrices([], coefficients=0)
     with pytest.raises(ValueError, match=">= 3"):
         klein_bottle(n=2, m=4)
-    with pytest.raises(ValueError, match="non-negative"):
+    with pytest.raises(ValueError, match="^n must be >= 0, got -1$"):
         sphere(-1)

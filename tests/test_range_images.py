@@ -125,7 +125,7 @@ def test_sample_patches():
         sample_patches(imgs, n=pool.shape[0] + 1)
     with pytest.raises(ValueError, match="no images"):
         sample_patches([], n=10)
-    with pytest.raises(ValueError, match="positive"):
+    with pytest.raises(ValueError, match="^n must be >= 1, got 0$"):
         sample_patches(imgs, n=0)
 
 
@@ -216,7 +216,7 @@ def test_density_filter_keeps_densest_in_brute_force_order():
         density_filter(X, k=5, percent=0)
     with pytest.raises(ValueError, match="k ="):
         density_filter(X, k=100, percent=30)
-    with pytest.raises(ValueError, match="positive integer"):
+    with pytest.raises(ValueError, match="^k must be >= 1, got 0$"):
         density_filter(X, k=0, percent=30)
     with pytest.raises(ValueError, match="NaN"):
         density_filter(np.full((5, 2), np.nan), k=1, percent=30)

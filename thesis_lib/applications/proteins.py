@@ -27,6 +27,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
+from .._validate import check_int
 from ..homology.filtration import Filtration
 
 __all__ = [
@@ -207,8 +208,7 @@ def read_pdb(
     info = require("biotite.structure.info", extra="proteins", purpose="reading PDB files")
     PDBFile = require("biotite.structure.io.pdb", extra="proteins", purpose="reading PDB files").PDBFile
 
-    if isinstance(model, bool) or not isinstance(model, (int, np.integer)) or model < 1:
-        raise ValueError(f"model must be a positive integer, got {model!r}")
+    model = check_int(model, "model", minimum=1)
     if altloc not in ("first", "occupancy", "all"):
         raise ValueError(f"altloc must be 'first', 'occupancy' or 'all', got {altloc!r}")
     path = Path(path)

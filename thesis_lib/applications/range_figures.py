@@ -10,6 +10,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
+from .._validate import check_int
 from .range_images import dct_basis
 
 if TYPE_CHECKING:
@@ -55,8 +56,7 @@ def plot_range_images(images: Sequence[npt.ArrayLike], *, n: int = 3,
     >>> plt.close(fig)
     """
     plt = require("matplotlib.pyplot", extra="plot", purpose="drawing range images")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"n must be an integer >= 1, got {n!r}")
+    n = check_int(n, "n", minimum=1)
     shown = [np.asarray(img, dtype=np.float64) for img in list(images)[: int(n)]]
     if not shown:
         raise ValueError("no image to show")

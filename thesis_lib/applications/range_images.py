@@ -36,7 +36,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_seed
+from .._validate import check_int, check_seed
 
 __all__ = [
     "synthetic_range_image",
@@ -358,8 +358,7 @@ def sample_patches(images: Sequence[npt.ArrayLike], *, n: int, size: int = 5, se
         ``n`` not a positive integer or larger than the number of valid patches, no images, or an
         invalid image or ``size``.
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"n must be a positive integer, got {n!r}")
+    n = check_int(n, "n", minimum=1)
     if len(images) == 0:
         raise ValueError("no images given")
     size = _check_patch_size(size)
@@ -383,8 +382,7 @@ def sample_patches(images: Sequence[npt.ArrayLike], *, n: int, size: int = 5, se
 
 
 def _check_patch_size(size) -> int:
-    if isinstance(size, bool) or not isinstance(size, (int, np.integer)) or size < 2:
-        raise ValueError(f"patch size must be an integer >= 2, got {size!r}")
+    size = check_int(size, "patch size", minimum=2)
     return int(size)
 
 
@@ -518,8 +516,7 @@ def kth_neighbour_distance(X: npt.ArrayLike, *, k: int) -> np.ndarray:
         raise ValueError(f"points must be a non-empty (n, d) array, got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         raise ValueError("points contain NaN or infinite values")
-    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
-        raise ValueError(f"k must be a positive integer, got {k!r}")
+    k = check_int(k, "k", minimum=1)
     if k >= arr.shape[0]:
         raise ValueError(f"k = {k} needs more than {k} points, got {arr.shape[0]}")
     k = int(k)
@@ -722,8 +719,7 @@ def projection_summary(coords: npt.ArrayLike, *, n_sectors: int = 12) -> dict[st
     c = np.asarray(coords, dtype=np.float64)
     if c.ndim != 2 or c.shape[1] != 2 or c.shape[0] == 0 or not np.all(np.isfinite(c)):
         raise ValueError(f"coords must be a non-empty (n, 2) array of finite numbers, got shape {c.shape}")
-    if isinstance(n_sectors, bool) or not isinstance(n_sectors, (int, np.integer)) or n_sectors < 1:
-        raise ValueError(f"n_sectors must be an integer >= 1, got {n_sectors!r}")
+    n_sectors = check_int(n_sectors, "n_sectors", minimum=1)
     radius = np.linalg.norm(c, axis=1)
     angles = np.arctan2(c[:, 1], c[:, 0])
     sectors = np.histogram(angles, bins=int(n_sectors), range=(-np.pi, np.pi))[0] > 0

@@ -10,6 +10,8 @@ import itertools
 
 import numpy as np
 
+from .._validate import check_int
+
 __all__ = ["rp2", "RP2_LABELS", "torus", "klein_bottle", "dunce_hat", "sphere"]
 
 #: Vertex names of Figure 2.7: vertex ``i`` of :func:`rp2` is ``RP2_LABELS[i]``.
@@ -139,6 +141,5 @@ def sphere(n: int) -> list[tuple[int, ...]]:
     ValueError
         ``n`` not a non-negative integer.
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 0:
-        raise ValueError(f"n must be a non-negative integer, got {n!r}")
+    n = check_int(n, "n", minimum=0)
     return [tuple(c) for c in itertools.combinations(range(int(n) + 2), int(n) + 1)]

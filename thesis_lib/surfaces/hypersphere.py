@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import finite_floats
+from .._validate import check_int, finite_floats
 
 __all__ = ["hypersphere_point", "hypersphere_mean_curvature", "hypersphere_quadrature", "hypersphere_volume"]
 
@@ -92,8 +92,7 @@ def hypersphere_mean_curvature(*, radius: float = 2.0, n: int = 3) -> float:
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
         raise ValueError(f"radius must be a positive finite number, got {radius!r}")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"n must be a positive integer, got {n!r}")
+    n = check_int(n, "n", minimum=1)
     return 1.0 / radius
 
 
@@ -135,10 +134,8 @@ def hypersphere_quadrature(n: int, *, nodes: int = 16) -> tuple[np.ndarray, np.n
     >>> params.shape, round(float(weights.sum() / np.pi**2), 6)
     ((128, 2), 2.0)
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"n must be a positive integer, got {n!r}")
-    if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 2:
-        raise ValueError(f"nodes must be an integer >= 2, got {nodes!r}")
+    n = check_int(n, "n", minimum=1)
+    nodes = check_int(nodes, "nodes", minimum=2)
     x, wx = np.polynomial.legendre.leggauss(int(nodes))
     psi, wpsi = 0.5 * np.pi * (x + 1), 0.5 * np.pi * wx
     phi = 2 * np.pi * np.arange(2 * nodes) / (2 * nodes)
@@ -183,8 +180,7 @@ def hypersphere_volume(n: int, *, nodes: int = 64) -> float:
     >>> round(hypersphere_volume(2) / np.pi, 6), round(hypersphere_volume(3) / np.pi**2, 6)
     (4.0, 2.0)
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"n must be a positive integer, got {n!r}")
+    n = check_int(n, "n", minimum=1)
     x, wx = np.polynomial.legendre.leggauss(int(nodes))
     psi, wpsi = 0.5 * np.pi * (x + 1), 0.5 * np.pi * wx
     return float(2 * np.pi * np.prod([np.sum(wpsi * np.sin(psi) ** k) for k in range(1, n)]))

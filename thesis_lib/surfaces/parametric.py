@@ -10,7 +10,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import finite_floats
+from .._validate import check_int, finite_floats
 
 __all__ = ["hypersurface_normal", "fundamental_forms", "parametric_shape_operator", "normal_curvature_circle"]
 
@@ -231,8 +231,7 @@ def normal_curvature_circle(X: Callable[[np.ndarray], np.ndarray], w: npt.ArrayL
     g, B = fundamental_forms(X, w, h=h)
     if g.shape[-1] != 2:
         raise ValueError(f"normal_curvature_circle needs a surface (n = 2), got n = {g.shape[-1]}")
-    if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 3:
-        raise ValueError(f"nodes must be an integer >= 3, got {nodes!r}")
+    nodes = check_int(nodes, "nodes", minimum=3)
     L = np.linalg.cholesky(g)  # g = L Lᵀ: parameter components of the orthonormal frame are L⁻ᵀ
     Linv = np.linalg.inv(L)
     S_orth = np.einsum("...ij,...jk,...lk->...il", Linv, B, Linv)  # L⁻¹ B L⁻ᵀ, symmetric
