@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._validate import check_torus_radii
 from ..homology import betti_numbers, homology
 from ..morse._cells import Pairs, Simplex
 from ..morse.checks import (
@@ -203,8 +204,7 @@ def hessian_section(*, R: float = 3.0, r: float = 1.0) -> Section:
     >>> [s.results[f"ex42_hessian_{i}"] for i in range(3)]
     [-4.0, -1.0, 0.0]
     """
-    if not 0 < r < R:
-        raise ValueError(f"the torus needs 0 < r < R, got R={R}, r={r}")
+    R, r = check_torus_radii(R, r)
     points = [(0.0, 0.0), (0.0, np.pi), (np.pi, np.pi), (np.pi, 0.0)]
     printed = [np.diag([-(R + r), -r]), np.diag([-R + r, r]), np.diag([R - r, -r]), np.diag([R + r, r])]
     fd = [finite_difference_hessian(lambda u, v: float(torus_height(u, v, R=R, r=r)), u, v) for u, v in points]

@@ -23,6 +23,7 @@ import scipy.integrate
 import scipy.optimize
 import scipy.sparse as sp
 
+from .._validate import check_int, check_torus_radii
 from ..homology import homology
 from ..homology.smith import rank_mod_p
 from ._cells import ComplexLike, Pairs, Simplex
@@ -111,8 +112,7 @@ def torus_surface(*, R: float = 2.0, r: float = 1.0) -> Surface:
     ValueError
         Unless 0 < r < R.
     """
-    if not (0 < r < R) or not np.isfinite(R):
-        raise ValueError(f"the torus needs 0 < r < R, got R = {R}, r = {r}")
+    R, r = check_torus_radii(R, r)
 
     def g(p):
         rho = np.hypot(p[0], p[2])
@@ -582,9 +582,8 @@ def torus_grid(n: int, *, R: float = 2.0, r: float = 1.0) -> tuple[list[Simplex]
     ValueError
         n < 3 or radii without 0 < r < R.
     """
-    n = int(n)
-    if n < 3 or not (0 < r < R):
-        raise ValueError(f"torus_grid needs n >= 3 and 0 < r < R, got n = {n}, R = {R}, r = {r}")
+    n = check_int(n, "n", minimum=3)
+    R, r = check_torus_radii(R, r)
     idx = lambda i, j: (i % n) * n + (j % n)  # noqa: E731
     tris = []
     for i in range(n):

@@ -37,7 +37,7 @@ from scipy.spatial import Delaunay, QhullError
 
 from .._validate import as_points, check_real, check_simplices
 from ..complexes.scaling import scaled
-from .crust_geometry import circumcentres, filtered_faces, poles_from_delaunay
+from .crust_geometry import check_theta, circumcentres, filtered_faces, poles_from_delaunay
 from .crust_trimming import outer_walk
 
 __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
@@ -175,16 +175,9 @@ def crust_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far: fl
     ValueError
         As :func:`poles`, or a ``theta`` outside (0, π/2).
     """
-    theta = _theta(theta)
+    theta = check_theta(theta)
     pts, e = _samples(points)
     return _candidates(pts, e, theta, far)
-
-
-def _theta(theta) -> float:
-    theta = check_real(theta, "theta")
-    if not 0 < theta < np.pi / 2:
-        raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
-    return theta
 
 
 def _candidates(pts: np.ndarray, e: int, theta: float, far: float | None) -> np.ndarray:
@@ -262,7 +255,7 @@ def crust(points: npt.ArrayLike, *, theta: float = np.pi / 4, prune: bool = True
     ValueError
         As :func:`crust_candidates`, or when no triangle survives the filtering.
     """
-    theta = _theta(theta)
+    theta = check_theta(theta)
     pts, e = _samples(points)
     cand = _candidates(pts, e, theta, far)
     if len(cand) == 0:

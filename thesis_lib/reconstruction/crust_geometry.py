@@ -24,7 +24,9 @@ from collections.abc import Callable
 import numpy as np
 from scipy.spatial import Delaunay, cKDTree
 
-__all__ = ["circumcentres", "simplex_normals", "poles_from_delaunay", "filtered_faces"]
+from .._validate import check_real
+
+__all__ = ["check_theta", "circumcentres", "simplex_normals", "poles_from_delaunay", "filtered_faces"]
 
 #: bisection rounds of the Voronoi filter; an edge interval still open after them is narrower than
 #: 2⁻⁶⁰ of the edge (a degenerate, co-spherical configuration) and its simplex is dropped
@@ -35,6 +37,27 @@ _RAY_LENGTH = 1e6
 #: ``(pts, tri, cc, ok) -> (centre, keep, across)``: how the flat (circumcentre-less) Delaunay
 #: simplices are treated, see :func:`_drop_flat` and :func:`thesis_lib.reconstruction.crust._flat_tetrahedra`
 FlatResolution = Callable[[np.ndarray, Delaunay, np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+
+def check_theta(theta: float) -> float:
+    """The Crust's angle θ: a number in (0, π/2), or a ``ValueError`` naming it.
+
+    Thesis: §3.4 (the Crust [ABK98]; θ bounds the angle between a triangle's normal and the poles).
+
+    Parameters
+    ----------
+    theta : float
+        The angle, in radians.
+
+    Returns
+    -------
+    float
+        ``theta``.
+    """
+    theta = check_real(theta, "theta")
+    if not 0 < theta < np.pi / 2:
+        raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
+    return theta
 
 
 def _group_argmax(group: np.ndarray, value: np.ndarray, n_groups: int) -> np.ndarray:

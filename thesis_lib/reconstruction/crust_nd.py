@@ -52,7 +52,7 @@ from scipy.spatial import Delaunay, QhullError, cKDTree
 
 from .._validate import as_points
 from ..meshes.topology import euler_characteristic
-from .crust_geometry import filtered_faces
+from .crust_geometry import check_theta, filtered_faces
 from .crust_trimming import open_walk, outer_walk, unique_rows
 
 __all__ = ["crust_nd", "crust_nd_candidates", "extract_manifold_nd", "manifold_report", "manifold_vertices",
@@ -172,13 +172,6 @@ def _far(pts: np.ndarray, far) -> float:
     return f
 
 
-def _check_theta(theta) -> float:
-    theta = float(theta)
-    if not 0 < theta < np.pi / 2:
-        raise ValueError(f"theta must lie in (0, π/2), got {theta!r}")
-    return theta
-
-
 def crust_nd_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far: float | None = None) -> np.ndarray:
     """Steps 1–4 of the Crust in R^{n+1}: the n-simplices of Del(S ∪ P) with sample vertices that
     pass the normal filter.
@@ -207,7 +200,7 @@ def crust_nd_candidates(points: npt.ArrayLike, *, theta: float = np.pi / 4, far:
         On invalid or too few samples, points in R^d with d > 4 or in a lower-dimensional subspace,
         ``theta`` outside (0, π/2), or a ``far`` that is not a positive distance.
     """
-    theta = _check_theta(theta)
+    theta = check_theta(theta)
     pts = _samples_nd(points)
     return filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))[0]
 
@@ -475,7 +468,7 @@ def crust_nd(
         manifold; the message says what failed and whether the points look like a sample of a
         hypersurface at all.
     """
-    theta = _check_theta(theta)
+    theta = check_theta(theta)
     pts = _samples_nd(points)
     faces, p_plus, p_minus = filtered_faces(pts, _delaunay(pts), theta, _far(pts, far))
     ratio = _pole_ratio(pts, p_plus, p_minus)
