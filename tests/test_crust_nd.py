@@ -187,6 +187,8 @@ def test_bad_input():
         crust_nd(np.column_stack([sample_sphere(100, n_dims=3), np.zeros(100)]))
     with pytest.raises(ValueError, match="theta"):
         crust_nd(sample_sphere(100, n_dims=4), theta=0.0)
+    with pytest.raises(TypeError, match="^theta must be a number, got '0.5'$"):  # not read as float('0.5')
+        crust_nd(sample_sphere(100, n_dims=4), theta="0.5")
     with pytest.raises(ValueError, match="duplicate"):
         crust_nd(np.vstack([sample_sphere(50, n_dims=4), sample_sphere(50, n_dims=4)[:1]]))
     with pytest.raises(ValueError, match="R\\^d with d >= 2"):
