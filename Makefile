@@ -27,7 +27,13 @@ install: $(STAMP)
 
 # The compiled core (src/*.cpp) is built by scikit-build-core into build/ (kept: a C++ change
 # recompiles only what changed, and `make test` / `make book` reinstall when a source is newer).
-$(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*.cpp src/*.hpp)
+# The editable install maps the package's files when it is made: when a module is added, moved or
+# removed, the list below changes and the project is installed again.
+MODULES := $(VENV)/.modules
+$(shell mkdir -p $(VENV) && find thesis_lib -name '*.py' -not -path '*/__pycache__/*' | LC_ALL=C sort > $(MODULES).new \
+    && { cmp -s $(MODULES).new $(MODULES) && rm -f $(MODULES).new || mv -f $(MODULES).new $(MODULES); })
+
+$(STAMP): pyproject.toml CMakeLists.txt $(wildcard src/*.cpp src/*.hpp) $(MODULES)
 	@command -v c++ >/dev/null 2>&1 || command -v g++ >/dev/null 2>&1 || command -v clang++ >/dev/null 2>&1 || { \
 	    echo "error: thesis_lib's compiled core needs a C++17 compiler and none was found (Debian/Ubuntu: apt-get install g++)"; exit 1; }
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
