@@ -277,13 +277,19 @@ prange = range
 FIXED_KERNELS = {"OPENBLAS_CORETYPE": "Haswell", "OPENBLAS_NUM_THREADS": "1",
                  "NPY_DISABLE_CPU_FEATURES": "AVX512F AVX512CD AVX512_SKX AVX512_CLX AVX512_CNL AVX512_ICL AVX512_SPR"}
 
-_OLD_SCRIPT = r"""
+#: run first by the old sources: an editable install's import hook would hand out the checkout's
+#: thesis_lib whatever PYTHONPATH says
+_OLD_PRELUDE = r"""
 import os, sys
-# an editable install's import hook would hand out the checkout's thesis_lib whatever PYTHONPATH says
 sys.meta_path[:] = [f for f in sys.meta_path if not type(f).__module__.startswith("_editable")]
-import numpy as np
 import thesis_lib
 assert thesis_lib.__file__.startswith(os.environ["PYTHONPATH"]), thesis_lib.__file__
+"""
+
+#: the formulas of one library on the meshes of argv[1], written to argv[2]
+_FORMULAS = r"""
+import sys
+import numpy as np
 from thesis_lib import curvature as c
 data = np.load(sys.argv[1], allow_pickle=False)
 out = {}
@@ -338,14 +344,12 @@ def test_well_conditioned_meshes_bit_identical_to_the_float_formulas(tmp_path):
             (tmp_path / "extract" / "thesis_lib").rename(old_src / "thesis_lib")
     data = _well_conditioned_meshes()
     np.savez(tmp_path / "meshes.npz", **data)
-    subprocess.run([sys.executable, "-c", _OLD_SCRIPT, str(tmp_path / "meshes.npz"), str(tmp_path / "old.npz")],
+    meshes = str(tmp_path / "meshes.npz")
+    subprocess.run([sys.executable, "-c", _OLD_PRELUDE + _FORMULAS, meshes, str(tmp_path / "old.npz")],
                    check=True, cwd=tmp_path, env={"PYTHONPATH": str(old_src), "PATH": "/usr/bin:/bin", **FIXED_KERNELS})
     # the checkout's library, as installed (its compiled core is not in the source tree)
-    new_script = _OLD_SCRIPT.split("import numpy as np", 1)[1].replace(
-        'assert thesis_lib.__file__.startswith(os.environ["PYTHONPATH"]), thesis_lib.__file__\n', "")
-    subprocess.run([sys.executable, "-c", "import sys\nimport numpy as np" + new_script, str(tmp_path / "meshes.npz"),
-                    str(tmp_path / "new.npz")], check=True, cwd=tmp_path, env={"PATH": "/usr/bin:/bin",
-                                                                                **FIXED_KERNELS})
+    subprocess.run([sys.executable, "-c", _FORMULAS, meshes, str(tmp_path / "new.npz")],
+                   check=True, cwd=tmp_path, env={"PATH": "/usr/bin:/bin", **FIXED_KERNELS})
     old, computed = np.load(tmp_path / "old.npz"), np.load(tmp_path / "new.npz")
     assert sorted(computed.files) == sorted(old.files)
     keys = sorted({k.split(":")[0] for k in data})

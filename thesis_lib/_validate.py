@@ -295,7 +295,7 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
     A :class:`Points` record is already parsed: its array is returned as it is, unless it may hold
     duplicates that ``allow_duplicates=False`` refuses or has fewer than ``min_points`` rows.
     """
-    if isinstance(points, Points) and (allow_duplicates or points.distinct) and points.n >= min_points:
+    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates):
         return points.array
     if isinstance(points, Points):
         points = points.array
@@ -375,6 +375,10 @@ class Points:
     scaled: np.ndarray
     distinct: bool = False  #: parsed with ``allow_duplicates=False``: no two rows are equal
 
+    def satisfies(self, *, min_points: int, allow_duplicates: bool) -> bool:
+        """Whether this record meets the options of :func:`as_points` without being checked again."""
+        return (allow_duplicates or self.distinct) and self.n >= min_points
+
     @property
     def n(self) -> int:
         """The number of points."""
@@ -416,7 +420,7 @@ def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, 
     in R^n (as ripser.py reads it, with a warning too), and a distance matrix has its own keyword.
     A :class:`Points` record that satisfies the options is returned as it is.
     """
-    if isinstance(points, Points) and (allow_duplicates or points.distinct) and points.n >= min_points:
+    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates):
         return points
     arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
     if warn_square and looks_like_distance_matrix(arr):
@@ -698,7 +702,6 @@ def check_torus_radii(R: float, r: float) -> tuple[float, float]:
     if not (np.isfinite(R) and np.isfinite(r)) or r <= 0 or R <= r:
         raise ValueError(f"torus radii need 0 < r < R (finite; R > r > 0), got R={R!r}, r={r!r}")
     return R, r
-
 
 
 def finite_floats(name: str, x) -> np.ndarray:

@@ -79,18 +79,15 @@ def bar_cycles(source: Points | np.ndarray | Edges, max_radius: float, field: Fi
         radius = max_radius if np.isinf(deaths).any() else float(deaths.max())
         truncated = filtration_barcode(rips_filtration(source, radius, k + 1), field)
         mine = truncated.intervals(k)
-        rows: dict[tuple[float, float], list[int]] = {}
+        free: dict[tuple[float, float], list[int]] = {}  # the truncated barcode's rows of each bar, in order
         for j, bar in enumerate(mine.tolist()):
-            rows.setdefault((bar[0], bar[1]), []).append(j)
-        taken: dict[tuple[float, float], int] = {}
+            free.setdefault((bar[0], bar[1]), []).append(j)
         cycles = []
         for bar in bars.tolist():
-            key = (bar[0], bar[1])
-            free, used = rows.get(key, []), taken.get(key, 0)
-            if used == len(free):
+            rows = free.get((bar[0], bar[1]))
+            if not rows:
                 raise RuntimeError(f"the Rips filtration at radius {radius} has no bar {bar} in dimension {k}")
-            taken[key] = used + 1  # equal bars take the truncated barcode's equal bars in turn
-            chain = truncated.representative(k, free[used])
+            chain = truncated.representative(k, rows.pop(0))  # equal bars take equal bars in turn
             cycles.append(np.array([[*simplex, c] for simplex, c in chain], dtype=np.int64).reshape(-1, k + 2))
         out[k] = cycles
     return out

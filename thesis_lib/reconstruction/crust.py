@@ -260,13 +260,11 @@ def crust(points: npt.ArrayLike, *, theta: float = np.pi / 4, prune: bool = True
     cand = _candidates(pts, e, theta, far)
     if len(cand) == 0:
         raise ValueError("no triangle survived the Crust's filtering")
-    # the samples are scaled already (the walk reads angles only): the candidates index them
-    walk_pts, _ = scaled(pts)
-    tris = cand.astype(np.int64)
+    tris = cand.astype(np.int64)  # indices into the samples, which _samples scaled already
     try:
-        faces, _ = outer_walk(walk_pts, tris, prune=prune)
+        faces, _ = outer_walk(pts, tris, prune=prune)
     except ValueError:
         if not prune:
             raise
-        faces, _ = outer_walk(walk_pts, tris, prune=False)
+        faces, _ = outer_walk(pts, tris, prune=False)
     return faces
