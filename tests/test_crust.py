@@ -186,7 +186,7 @@ def test_ball_pivoting_reference():
 
 
 def test_bad_input():
-    with pytest.raises(ValueError, match="R³"):
+    with pytest.raises(ValueError, match=r"^points must lie in R\^3 \(an \(n, 3\) array\), got shape \(20, 2\)$"):
         crust(np.random.default_rng(0).normal(size=(20, 2)))
     with pytest.raises(ValueError, match="duplicate"):
         crust(np.vstack([np.eye(3), np.eye(3), [[1, 1, 1]]]))
@@ -198,8 +198,14 @@ def test_bad_input():
         crust(sample_sphere(50, n_dims=3), far=-1.0)
     with pytest.raises(ValueError, match="triangles"):
         extract_manifold(np.eye(3), np.zeros((0, 3), dtype=int))
-    with pytest.raises(ValueError, match="normals"):
+    with pytest.raises(ValueError, match=r"^normals must have shape \(50, 3\), got \(3, 3\)$"):
         ball_pivoting(sample_sphere(50, n_dims=3), normals=np.zeros((3, 3)))
+    with pytest.raises(ValueError, match=r"^normals contains NaN or infinite values$"):
+        ball_pivoting(sample_sphere(50, n_dims=3), normals=np.full((50, 3), np.nan))
+    with pytest.raises(ValueError, match=r"^points must lie in R\^3 \(an \(n, 3\) array\), got shape \(50, 2\)$"):
+        ball_pivoting(sample_sphere(50, n_dims=2))
+    with pytest.raises(ValueError, match=r"^points must lie in R\^3 \(an \(n, 3\) array\), got shape \(50, 4\)$"):
+        estimate_normals(sample_sphere(50, n_dims=4))
     with pytest.raises(ValueError, match="radii"):
         ball_pivoting(sample_sphere(50, n_dims=3), radii=[-1.0])
 

@@ -63,6 +63,6 @@ def test_the_slices_of_the_reconstructed_sphere():
     assert [ax.get_title() for ax in fig.axes[:2]] == ["w = −1", "w = 0.5"] and fig.axes[-1].get_title() == "|H|"
     shapes = {ax.images[0].get_array().shape for ax in fig.axes[:2]}
     assert len(shapes) == 1 and next(iter(shapes))[0] < 480  # cropped alike, smaller than the window
-    with pytest.raises(ValueError, match="at least one hyperplane"):
+    with pytest.raises(ValueError, match=r"^levels must hold at least 1 entry, got 0$"):
         plot_hyperplane_slices(run["points"], run["simplices"], run["H"], levels=[], clim=(0.3, 0.7))
     plt.close("all")

@@ -69,6 +69,7 @@ __all__ = [
     "check_real",
     "check_indices",
     "check_simplices",
+    "check_shape",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -287,15 +288,18 @@ def float_array(value, *, kind: str, message: str) -> np.ndarray:
         raise InvalidTypeError(f"{message}: {why}") from None
 
 
-def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points") -> np.ndarray:
+def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points",
+              dimension: int | None = None) -> np.ndarray:
     """Return ``points`` as a finite ``(n, d)`` float64 array, or raise naming the problem.
 
     Thesis: §2.1.2 (a point set X in R^d).
 
-    A :class:`Points` record is already parsed: its array is returned as it is, unless it may hold
-    duplicates that ``allow_duplicates=False`` refuses or has fewer than ``min_points`` rows.
+    ``dimension`` fixes d (points in R^d only).  A :class:`Points` record is already parsed: its
+    array is returned as it is, unless it may hold duplicates that ``allow_duplicates=False``
+    refuses, has fewer than ``min_points`` rows or lives in another dimension.
     """
-    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates):
+    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates,
+                                                       dimension=dimension):
         return points.array
     if isinstance(points, Points):
         points = points.array
@@ -306,6 +310,8 @@ def as_points(points, *, min_points: int = 1, allow_duplicates: bool = True, nam
         raise ValueError(f"need at least {min_points} {name}, got {arr.shape[0]}")
     if arr.shape[1] == 0:
         raise ValueError(f"{name} must have at least one coordinate")
+    if dimension is not None and arr.shape[1] != dimension:
+        raise ValueError(f"{name} must lie in R^{dimension} (an (n, {dimension}) array), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
         row = int(np.argmax(~np.all(np.isfinite(arr), axis=1)))
         raise ValueError(f"{name}: row {row} has a NaN or infinite coordinate")
@@ -375,9 +381,10 @@ class Points:
     scaled: np.ndarray
     distinct: bool = False  #: parsed with ``allow_duplicates=False``: no two rows are equal
 
-    def satisfies(self, *, min_points: int, allow_duplicates: bool) -> bool:
+    def satisfies(self, *, min_points: int, allow_duplicates: bool, dimension: int | None = None) -> bool:
         """Whether this record meets the options of :func:`as_points` without being checked again."""
-        return (allow_duplicates or self.distinct) and self.n >= min_points
+        return ((allow_duplicates or self.distinct) and self.n >= min_points
+                and (dimension is None or self.array.shape[1] == dimension))
 
     @property
     def n(self) -> int:
@@ -410,7 +417,7 @@ def looks_like_distance_matrix(arr: np.ndarray) -> bool:
 
 
 def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points",
-                 warn_square: bool = False) -> Points:
+                 dimension: int | None = None, warn_square: bool = False) -> Points:
     """``points`` checked by :func:`as_points` and scaled by a power of two, as a :class:`Points`.
 
     Thesis: §2.1.2 (a point set X in R^d, up to similarity).
@@ -420,9 +427,11 @@ def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, 
     in R^n (as ripser.py reads it, with a warning too), and a distance matrix has its own keyword.
     A :class:`Points` record that satisfies the options is returned as it is.
     """
-    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates):
+    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates,
+                                                       dimension=dimension):
         return points
-    arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
+    arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name,
+                                         dimension=dimension))
     if warn_square and looks_like_distance_matrix(arr):
         n = arr.shape[0]
         warn_user(f"{name} is a square ({n}, {n}) array, symmetric with a zero diagonal: it is read as {n} points "
@@ -598,10 +607,10 @@ def parse_field(coefficients, *, default: int | None = None, field: bool = False
 
 # ---------------------------------------------------------------------------------------- geometry
 # (numbers, index arrays and simplex arrays for the complexes, curvature and meshes)
-def check_real(value, name: str, *, minimum: float | None = None, positive: bool = False,
-               finite: bool = True) -> float:
+def check_real(value, name: str, *, minimum: float | None = None, maximum: float | None = None,
+               positive: bool = False, finite: bool = True) -> float:
     """A real number as a float: not a bool or a string, not NaN, finite unless ``finite=False``,
-    ``> 0`` with ``positive``, ``>= minimum`` when given."""
+    ``> 0`` with ``positive``, ``>= minimum`` and ``<= maximum`` when given."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise InvalidTypeError(f"{name} must be a number, got {value!r}")
     x = _as_float(value, name)
@@ -613,6 +622,8 @@ def check_real(value, name: str, *, minimum: float | None = None, positive: bool
         raise ValueError(f"{name} must be positive, got {x}")
     if minimum is not None and x < minimum:
         raise ValueError(f"{name} must be >= {minimum}, got {x}")
+    if maximum is not None and x > maximum:
+        raise ValueError(f"{name} must be <= {maximum}, got {x}")
     return x
 
 
@@ -704,12 +715,144 @@ def check_torus_radii(R: float, r: float) -> tuple[float, float]:
     return R, r
 
 
-def finite_floats(name: str, x) -> np.ndarray:
-    """``x`` as a float64 array, or ValueError naming ``name`` when it holds NaN or infinite values."""
-    arr = np.asarray(x, dtype=np.float64)
-    if not np.all(np.isfinite(arr)):
+def shape_text(shape) -> str:
+    """A shape pattern as the messages print it: ``(..., 3)``, ``(n, 2)``, ``(m, n + 1, d)``."""
+    return "(" + ", ".join("..." if a is Ellipsis else str(a) for a in shape) + ")"
+
+
+def _matches(actual: tuple, shape: tuple) -> bool:
+    if Ellipsis in shape:
+        cut = shape.index(Ellipsis)
+        head, tail = shape[:cut], shape[cut + 1:]
+        if len(actual) < len(head) + len(tail):
+            return False
+        return _matches(actual[:len(head)], head) and _matches(actual[len(actual) - len(tail):], tail)
+    return len(actual) == len(shape) and all(not isinstance(a, int) or a == b for a, b in zip(shape, actual))
+
+
+def check_shape(array: np.ndarray, shape: tuple, name: str) -> np.ndarray:
+    """``array`` if its shape fits the pattern ``shape``, else a ``ValueError`` naming both.
+
+    An int fixes an axis, a string names a free axis (``"n"``, ``"n + 1"``: printed, not checked),
+    ``...`` stands for any number of leading or trailing axes.
+
+    Thesis: the arrays of the constructions (§2.1 points, §3.3 simplices and parameters).
+
+    Parameters
+    ----------
+    array : numpy.ndarray
+        The array to check.
+    shape : tuple
+        The pattern: ints, strings and at most one ``...``.
+    name : str
+        The argument's name, for the message.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``array``.
+
+    Examples
+    --------
+    >>> check_shape(np.zeros((4, 3)), ("n", 3), "points").shape
+    (4, 3)
+    >>> check_shape(np.zeros((4, 2)), (..., 3), "points")
+    Traceback (most recent call last):
+    ...
+    ValueError: points must have shape (..., 3), got (4, 2)
+    """
+    if not _matches(tuple(array.shape), tuple(shape)):
+        raise ValueError(f"{name} must have shape {shape_text(shape)}, got {tuple(array.shape)}")
+    return array
+
+
+def as_floats(value, name: str, *, shape: tuple | None = None, finite: bool = True,
+              allow_empty: bool = True) -> np.ndarray:
+    """``value`` as a float64 array of the pattern ``shape`` (:func:`check_shape`), refusing what is
+    not numeric (:class:`InvalidTypeError`), NaN or infinite values (unless ``finite=False``) and an
+    empty array (with ``allow_empty=False``).
+
+    Thesis: the arrays of numbers the constructions take (§2.1, §3.3, §4.1).
+
+    Parameters
+    ----------
+    value : array_like
+        What the caller passed.
+    name : str
+        The argument's name, for the messages.
+    shape : tuple, optional
+        The shape pattern; any shape when omitted.
+    finite : bool
+        Refuse NaN and infinite entries.
+    allow_empty : bool
+        Accept an array with no entries.
+
+    Returns
+    -------
+    numpy.ndarray
+        A float64 array.
+
+    Examples
+    --------
+    >>> as_floats([[0, 1], [2, 3]], "params", shape=(..., 2)).dtype
+    dtype('float64')
+    >>> as_floats([1.0, float("nan")], "weights")
+    Traceback (most recent call last):
+    ...
+    ValueError: weights contains NaN or infinite values
+    """
+    arr = float_array(value, kind="numbers", message=f"{name} must be an array of numbers")
+    if shape is not None:
+        check_shape(arr, shape, name)
+    if not allow_empty and arr.size == 0:
+        raise ValueError(f"{name} is empty")
+    if finite and not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} contains NaN or infinite values")
     return arr
+
+
+def check_length(items, name: str, *, length: int | None = None, minimum: int | None = None):
+    """``items`` if ``len(items)`` is ``length`` (when given) and at least ``minimum`` (when given),
+    else a ``ValueError`` naming the argument; a value without a length is an
+    :class:`InvalidTypeError`.
+
+    Thesis: the lists the book's functions take (one name per critical point, one panel per
+    sample, ...).
+
+    Parameters
+    ----------
+    items : sized
+        A list, tuple, mapping or array.
+    name : str
+        The argument's name, for the message.
+    length : int, optional
+        The exact length required.
+    minimum : int, optional
+        The least length allowed.
+
+    Returns
+    -------
+    sized
+        ``items``.
+
+    Examples
+    --------
+    >>> check_length(["a", "b"], "names", length=2)
+    ['a', 'b']
+    >>> check_length([], "levels", minimum=1)
+    Traceback (most recent call last):
+    ...
+    ValueError: levels must hold at least 1 entry, got 0
+    """
+    try:
+        n = len(items)
+    except TypeError:
+        raise InvalidTypeError(f"{name} must be a sequence, got {type(items).__name__}") from None
+    if length is not None and n != length:
+        raise ValueError(f"{name} must hold {length} entr{'y' if length == 1 else 'ies'}, got {n}")
+    if minimum is not None and n < minimum:
+        raise ValueError(f"{name} must hold at least {minimum} entr{'y' if minimum == 1 else 'ies'}, got {n}")
+    return items
 
 
 def check_choice(value, choices, name: str) -> str:

@@ -11,6 +11,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
+from .._validate import check_length
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -112,8 +113,7 @@ def plot_hyperplane_slices(vertices: npt.ArrayLike, simplices: npt.ArrayLike, va
     from ..meshes.plotting import mesh_figure, render_mesh
     from ..meshes.slicing import hyperplane_slice
 
-    if len(levels) == 0:
-        raise ValueError("levels must hold at least one hyperplane")
+    check_length(levels, "levels", minimum=1)
     images, titles = [], []
     for level in levels:
         P, T, V = hyperplane_slice(vertices, simplices, values, axis=axis, level=level)

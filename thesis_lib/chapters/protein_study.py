@@ -28,6 +28,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
+from .._validate import check_length
 from ..applications.proteins import (
     RADII_SETS,
     Atoms,
@@ -353,9 +354,7 @@ def model_rings(name: str | Path, *, models: Sequence[int], r_c: float, window: 
     ((28, 30), '5')
     """
     window = _check_window(window)
-    models = tuple(int(m) for m in models)
-    if not models:
-        raise ValueError("models must name at least one model")
+    models = check_length(tuple(int(m) for m in models), "models", minimum=1)
     betti1, spanning, at_start = [], [], []
     for m in models:
         structure = load_structure(name, model=m, radii_set=radii_set, hetero=hetero, waters=waters)
@@ -849,8 +848,7 @@ def plot_void_barcodes(survey: VoidSurvey, panels: Sequence[tuple[str, float]], 
     >>> plt.close(fig)
     """
     plt = require("matplotlib.pyplot", extra="plot", purpose="drawing barcodes")
-    if not panels:
-        raise ValueError("need at least one panel")
+    check_length(panels, "panels", minimum=1)
     unknown = sorted({name for name, _ in panels} - set(survey.bars))
     if unknown:
         raise ValueError(f"the survey holds {sorted(survey.bars)}, not {unknown}")

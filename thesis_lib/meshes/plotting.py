@@ -9,6 +9,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
+from .._validate import check_length
 
 if TYPE_CHECKING:  # matplotlib is imported on first use
     from matplotlib.figure import Figure
@@ -144,9 +145,7 @@ def mesh_figure(images: Iterable[npt.ArrayLike], *, titles: Sequence[str] | None
     from matplotlib.cm import ScalarMappable
     from matplotlib.colors import Normalize
 
-    images = list(images)
-    if not images:
-        raise ValueError("need at least one image")
+    images = check_length(list(images), "images", minimum=1)
     fig, axes = plt.subplots(1, len(images), figsize=figsize or (4.2 * len(images) + 0.8, 3.6))
     axes = np.atleast_1d(axes)
     for k, (ax, img) in enumerate(zip(axes, images)):

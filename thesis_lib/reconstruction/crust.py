@@ -44,9 +44,7 @@ __all__ = ["crust", "poles", "crust_candidates", "extract_manifold"]
 
 
 def _samples(points) -> tuple[np.ndarray, int]:
-    pts = as_points(points, min_points=5, allow_duplicates=False)
-    if pts.shape[1] != 3:
-        raise ValueError(f"crust needs points in R³, got dimension {pts.shape[1]}")
+    pts = as_points(points, min_points=5, allow_duplicates=False, dimension=3)
     # the Crust is scale-equivariant: run it on points scaled by a power of two to about 1 (Qhull
     # crashes on coordinates near 1e150, squared distances overflow beyond)
     return scaled(pts)

@@ -6,7 +6,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
-from .._validate import as_points, check_int
+from .._validate import as_floats, as_points, check_int
 from ..complexes.scaling import scaled
 
 __all__ = ["estimate_normals", "ball_pivoting"]
@@ -36,9 +36,7 @@ def estimate_normals(points: npt.ArrayLike, *, k: int = 10) -> np.ndarray:
     """
     from scipy.spatial import cKDTree
 
-    pts = as_points(points, min_points=3)
-    if pts.shape[1] != 3:
-        raise ValueError(f"normals are estimated for points in R³, got dimension {pts.shape[1]}")
+    pts = as_points(points, min_points=3, dimension=3)
     k = check_int(k, "k", minimum=3)
     pts, _ = scaled(pts)  # normals do not depend on the scale; distances must not overflow
     k = min(k, len(pts))
@@ -86,12 +84,8 @@ def ball_pivoting(points: npt.ArrayLike, normals: npt.ArrayLike | None = None,
 
     pymeshlab = require("pymeshlab", extra="mesh", purpose="ball pivoting")
 
-    pts = as_points(points, min_points=4, allow_duplicates=False)
-    if pts.shape[1] != 3:
-        raise ValueError(f"ball pivoting needs points in R³, got dimension {pts.shape[1]}")
-    nrm = estimate_normals(pts) if normals is None else as_points(normals, name="normals")
-    if nrm.shape != pts.shape:
-        raise ValueError(f"normals must be a finite array of shape {pts.shape}, got {nrm.shape}")
+    pts = as_points(points, min_points=4, allow_duplicates=False, dimension=3)
+    nrm = estimate_normals(pts) if normals is None else as_floats(normals, "normals", shape=pts.shape)
     if radii is not None:
         try:
             radii = np.atleast_1d(np.asarray(radii, dtype=np.float64))

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import finite_floats
+from .._validate import as_floats
 
 __all__ = ["catenoid_point", "catenoid_principal_curvatures", "catenoid_mean_curvature"]
 
@@ -41,7 +41,7 @@ def catenoid_point(params: npt.ArrayLike) -> np.ndarray:
     >>> np.round(catenoid_point([[0.0, 0.0], [np.pi / 2, 0.0]]), 6).tolist()
     [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]
     """
-    p = finite_floats("params", params)
+    p = as_floats(params, "params")
     if p.ndim < 1 or p.shape[-1] < 2:
         raise ValueError(f"params must have shape (..., n) with n >= 2, got {p.shape}")
     u, v = p[..., 0], p[..., 1]
@@ -83,7 +83,7 @@ def catenoid_principal_curvatures(params: npt.ArrayLike) -> np.ndarray:
     >>> np.round(catenoid_principal_curvatures([0.0, 1.0]), 6).tolist()
     [-0.419974, 0.419974]
     """
-    p = finite_floats("params", params)
+    p = as_floats(params, "params")
     if p.ndim < 1 or p.shape[-1] < 2:
         raise ValueError(f"params must have shape (..., n) with n >= 2, got {p.shape}")
     k = 1.0 / np.cosh(p[..., 1]) ** 2

@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import finite_floats
+from .._validate import as_floats
 from .hypersphere import hypersphere_point
 
 __all__ = ["ellipsoid_point"]
@@ -43,7 +43,7 @@ def ellipsoid_point(angles: npt.ArrayLike, axes: npt.ArrayLike) -> np.ndarray:
     >>> np.round(ellipsoid_point([[0.0, 0.0], [np.pi / 2, 0.0]], [3.0, 2.0, 1.0]), 6).tolist()
     [[3.0, 0.0, 0.0], [0.0, 2.0, 0.0]]
     """
-    a = finite_floats("axes", axes)
+    a = as_floats(axes, "axes")
     if a.ndim != 1 or np.any(a <= 0):
         raise ValueError(f"axes must be a 1-D array of positive semi-axes, got {a!r}")
     y = hypersphere_point(angles, radius=1.0)

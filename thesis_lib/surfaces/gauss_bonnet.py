@@ -11,7 +11,7 @@ from math import factorial
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import finite_floats
+from .._validate import as_floats
 from .parametric import fundamental_forms
 
 __all__ = ["total_gauss_kronecker_curvature", "gauss_bonnet_chern_constant"]
@@ -60,7 +60,7 @@ def total_gauss_kronecker_curvature(
     >>> round(total_gauss_kronecker_curvature(ellipsoid, params, weights) / (4 * np.pi), 6)
     1.0
     """
-    w = finite_floats("weights", weights)
+    w = as_floats(weights, "weights")
     g, B = fundamental_forms(X, params, h=h)
     if w.shape != g.shape[:-2]:
         raise ValueError(f"weights {w.shape} do not match params {g.shape[:-2]}")

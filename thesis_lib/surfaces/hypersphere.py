@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_int, finite_floats
+from .._validate import as_floats, check_int
 
 __all__ = ["hypersphere_point", "hypersphere_mean_curvature", "hypersphere_quadrature", "hypersphere_volume"]
 
@@ -48,7 +48,7 @@ def hypersphere_point(angles: npt.ArrayLike, *, radius: float = 2.0) -> np.ndarr
     radius = float(radius)
     if not np.isfinite(radius) or radius <= 0:
         raise ValueError(f"radius must be a positive finite number, got {radius!r}")
-    a = finite_floats("angles", angles)
+    a = as_floats(angles, "angles")
     if a.ndim < 1 or a.shape[-1] < 1:
         raise ValueError(f"angles must have shape (..., n) with n >= 1, got {a.shape}")
     n = a.shape[-1]

@@ -10,7 +10,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_int, finite_floats
+from .._validate import as_floats, check_int
 
 __all__ = ["hypersurface_normal", "fundamental_forms", "parametric_shape_operator", "normal_curvature_circle"]
 
@@ -44,7 +44,7 @@ def hypersurface_normal(jacobian: npt.ArrayLike) -> np.ndarray:
     >>> np.round(hypersurface_normal([[1.0, 0.0], [0.0, 1.0], [1.0, 1.0]]), 6).tolist()
     [-0.57735, -0.57735, 0.57735]
     """
-    J = finite_floats("jacobian", jacobian)
+    J = as_floats(jacobian, "jacobian")
     if J.ndim < 2 or J.shape[-2] != J.shape[-1] + 1:
         raise ValueError(f"jacobian must have shape (..., n+1, n), got {J.shape}")
     n = J.shape[-1]
@@ -61,7 +61,7 @@ def hypersurface_normal(jacobian: npt.ArrayLike) -> np.ndarray:
 
 
 def _parameters(w) -> np.ndarray:
-    w = finite_floats("w", w)
+    w = as_floats(w, "w")
     if w.ndim < 1:
         raise ValueError("w must have shape (..., n)")
     return w

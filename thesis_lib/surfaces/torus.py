@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_torus_radii, finite_floats
+from .._validate import as_floats, check_torus_radii
 
 __all__ = [
     "torus_point",
@@ -62,7 +62,7 @@ def torus_point(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0, r: float
     [0.0, 10.0, 5.0]
     """
     R, r = check_torus_radii(R, r)
-    u, v = np.broadcast_arrays(finite_floats("u", u), finite_floats("v", v))
+    u, v = np.broadcast_arrays(as_floats(u, "u"), as_floats(v, "v"))
     rho = R + r * np.cos(v)
     return np.stack([rho * np.cos(u), rho * np.sin(u), r * np.sin(v)], axis=-1)
 
@@ -101,7 +101,7 @@ def torus_uv(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> tuple
     ([0.0, 1.570796], [0.0, 1.570796])
     """
     check_torus_radii(R, r)
-    p = finite_floats("points", points)
+    p = as_floats(points, "points")
     if p.ndim < 1 or p.shape[-1] != 3:
         raise ValueError(f"points must have shape (..., 3), got {p.shape}")
     u = np.mod(np.arctan2(p[..., 1], p[..., 0]), 2 * np.pi)
@@ -147,7 +147,7 @@ def torus_shape_operator(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0,
     [[0.2, 0.0], [0.0, -0.2]]
     """
     R, r = check_torus_radii(R, r)
-    u, v = np.broadcast_arrays(finite_floats("u", u), finite_floats("v", v))
+    u, v = np.broadcast_arrays(as_floats(u, "u"), as_floats(v, "v"))
     out = np.zeros(v.shape + (2, 2))
     out[..., 0, 0] = -np.cos(v) / (R + r * np.cos(v))
     out[..., 1, 1] = -1.0 / r
@@ -224,7 +224,7 @@ def torus_mean_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 10.0,
     [-0.133333, -0.1]
     """
     R, r = check_torus_radii(R, r)
-    u, v = np.broadcast_arrays(finite_floats("u", u), finite_floats("v", v))
+    u, v = np.broadcast_arrays(as_floats(u, "u"), as_floats(v, "v"))
     c = np.cos(v)
     return -(R + 2 * r * c) / (2 * r * (R + r * c))
 
@@ -263,7 +263,7 @@ def torus_gaussian_curvature(u: npt.ArrayLike, v: npt.ArrayLike, *, R: float = 1
     [0.013333, 0.0, -0.04]
     """
     R, r = check_torus_radii(R, r)
-    u, v = np.broadcast_arrays(finite_floats("u", u), finite_floats("v", v))
+    u, v = np.broadcast_arrays(as_floats(u, "u"), as_floats(v, "v"))
     c = np.cos(v)
     return c / (r * (R + r * c))
 
