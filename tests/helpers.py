@@ -179,3 +179,31 @@ def rips_engine_options(max_dim: int, p: int, dense: bool, n_threads: int, paral
     options.max_dim, options.p, options.dense, options.n_threads = max_dim, p, dense, n_threads
     options.parallel_min, options.cocycles = parallel_min, cocycles
     return options
+
+
+def facet_signs(k: int) -> np.ndarray:
+    """The signs of a k-simplex's facets in its boundary: the facet omitting vertex i has (−1)^i."""
+    return 1 - 2 * (np.arange(k + 1) & 1)
+
+
+def simplex_vector(K, k: int, rows: np.ndarray) -> np.ndarray:
+    """A chain or cochain in ripser.py's row format (vertices in any order, then the coefficient) as a
+    vector on the k-simplices of the filtration K."""
+    index = {tuple(s): i for i, s in enumerate(K.simplices[k].tolist())}
+    c = np.zeros(len(index), dtype=np.int64)
+    for row in rows.tolist():
+        c[index[tuple(sorted(row[:-1]))]] = row[-1]
+    return c
+
+
+def check_every_bar(barcode, representatives, dims, check) -> int:
+    """``check(k, bar, representative)`` on every bar of the dimensions ``dims``, after checking that
+    there is one representative per bar; the number of bars checked."""
+    count = 0
+    for k in dims:
+        bars = barcode.intervals(k)
+        assert len(representatives[k]) == bars.shape[0]
+        for bar, representative in zip(bars, representatives[k]):
+            check(k, bar, representative)
+            count += 1
+    return count

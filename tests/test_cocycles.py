@@ -17,6 +17,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.sparse
+from helpers import check_every_bar, facet_signs, simplex_vector
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from ripser import ripser as reference
@@ -27,23 +28,10 @@ from thesis_lib.persistence import persistence, rips_persistence
 
 
 # ---------------------------------------------------------------------------------------- the checks
-def _cochain(K, k: int, cocycle: np.ndarray) -> np.ndarray:
-    """The cocycle as a vector on K's k-simplices (rows of ripser.py's format: vertices, coefficient)."""
-    index = {tuple(s): i for i, s in enumerate(K.simplices[k].tolist())}
-    c = np.zeros(len(index), dtype=np.int64)
-    for row in cocycle.tolist():
-        c[index[tuple(sorted(row[:-1]))]] = row[-1]
-    return c
-
-
-def _signs(k: int) -> np.ndarray:
-    return 1 - 2 * (np.arange(k + 1) & 1)  # the facet omitting vertex i has sign (−1)^i
-
-
 def _coboundary(K, k: int, c: np.ndarray, p: int) -> np.ndarray:
     """δc on K's (k + 1)-simplices, mod p."""
     F = K.facet_indices(k + 1)
-    return (c[F] * _signs(k + 1)).sum(axis=1) % p
+    return (c[F] * facet_signs(k + 1)).sum(axis=1) % p
 
 
 def _coboundary_values(K, k: int, c: np.ndarray, p: int) -> np.ndarray:
@@ -57,7 +45,7 @@ def _class_is_nonzero(K, k: int, c: np.ndarray, p: int, t: float) -> bool:
     F = K.facet_indices(k)[rows]
     m = K.simplices[k - 1].shape[0]
     delta = np.zeros((rows.shape[0], m), dtype=np.int64)  # δ_{k−1}: a row per k-simplex, a column per face
-    np.put_along_axis(delta, F, np.broadcast_to(_signs(k), F.shape), axis=1)
+    np.put_along_axis(delta, F, np.broadcast_to(facet_signs(k), F.shape), axis=1)
     with_c = np.column_stack([delta, c[rows]])
     return rank_mod_p(with_c, coefficients=p) == rank_mod_p(delta, coefficients=p) + 1
 
@@ -71,7 +59,7 @@ def check_cocycle(K, k: int, p: int, bar: np.ndarray, cocycle: np.ndarray) -> No
     assert (np.diff(vertices, axis=1) < 0).all()  # each simplex's vertices decreasing, as ripser.py
     assert ((coefs >= 1) & (coefs < p)).all()
     assert len({tuple(v) for v in vertices.tolist()}) == cocycle.shape[0]
-    c = _cochain(K, k, cocycle)
+    c = simplex_vector(K, k, cocycle)
     index = {tuple(s): i for i, s in enumerate(K.simplices[k].tolist())}
     values = K.values[k][[index[tuple(sorted(v))] for v in vertices.tolist()]]
     assert values[0] == birth and coefs[0] == 1  # the creating simplex first
@@ -88,14 +76,7 @@ def check_cocycle(K, k: int, p: int, bar: np.ndarray, cocycle: np.ndarray) -> No
 
 def check_all(K, barcode, cocycles, p: int, dims) -> int:
     """check_cocycle on every bar of the dimensions; the number of bars checked."""
-    count = 0
-    for k in dims:
-        bars = barcode.intervals(k)
-        assert len(cocycles[k]) == bars.shape[0]
-        for bar, cocycle in zip(bars, cocycles[k]):
-            check_cocycle(K, k, p, bar, cocycle)
-            count += 1
-    return count
+    return check_every_bar(barcode, cocycles, dims, lambda k, bar, cocycle: check_cocycle(K, k, p, bar, cocycle))
 
 
 # ---------------------------------------------------------------------------------------- the cocycles
@@ -154,9 +135,9 @@ def test_the_checks_can_fail():
     delta = _coboundary(K, 0, vertex, 3)  # δ of vertex 0: the edges at 0, with signs
     assert _coboundary_values(K, 1, delta, 3).size == 0
     assert not _class_is_nonzero(K, 1, delta, 3, 1.0)
-    assert _class_is_nonzero(K, 1, _cochain(K, 1, cocycle), 3, 1.0)
+    assert _class_is_nonzero(K, 1, simplex_vector(K, 1, cocycle), 3, 1.0)
     trivial = np.array([[1, 0, 1], [2, 1, 2]])  # side 01 minus side 12: δ of vertex 1, a zero class at 1
-    assert not _class_is_nonzero(K, 1, _cochain(K, 1, trivial), 3, 1.0)
+    assert not _class_is_nonzero(K, 1, simplex_vector(K, 1, trivial), 3, 1.0)
     with pytest.raises(AssertionError):
         check_cocycle(K, 1, 3, bar, trivial)
     with pytest.raises(AssertionError):

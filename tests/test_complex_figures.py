@@ -85,7 +85,7 @@ def test_plot_cech_rips_one_ball_per_point_and_the_two_complexes():
     assert right.get_title() == "Vietoris–Rips complex, ε = 0.54"
     assert right.get_xlim() == (-0.7, 3.1)
     assert plot_cech_rips(pts, c, r, max_radius=0.54, xlim=(0.0, 1.0), ylim=(0.0, 2.0)).axes[0].get_ylim() == (0.0, 2.0)
-    with pytest.raises(ValueError, match="max_radius"):
+    with pytest.raises(ValueError, match=r"^max_radius must be positive, got 0\.0$"):
         plot_cech_rips(pts, c, r, max_radius=0.0)
 
 

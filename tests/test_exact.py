@@ -5,6 +5,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from thesis_lib import surfaces
 from thesis_lib.surfaces import (
     catenoid_mean_curvature,
     catenoid_point,
@@ -234,3 +235,17 @@ def test_normal_curvature_circle_needs_a_surface():
         normal_curvature_circle(lambda a: hypersphere_point(a, radius=1.0), np.array([0.5, 0.6, 0.7]))
     with pytest.raises(ValueError, match="nodes"):
         normal_curvature_circle(lambda w: torus_point(w[..., 0], w[..., 1]), np.array([0.1, 0.2]), nodes=2)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: surfaces.hypersphere_point([[0.0, 0.0]], radius=-1.0), r"^radius must be positive, got -1\.0$"),
+    (lambda: surfaces.hypersphere_point([[0.0, 0.0]], radius="1"), r"^radius must be a number, got '1'$"),
+    (lambda: surfaces.hypersphere_mean_curvature(radius=0.0), r"^radius must be positive, got 0\.0$"),
+    (lambda: surfaces.torus_uv([[1.0, 0.0]]), r"^points must have shape \(\.\.\., 3\), got \(1, 2\)$"),
+    (lambda: surfaces.torus_uv([[1.0, 0.0, np.nan]]), r"^points contains NaN or infinite values$"),
+    (lambda: surfaces.fundamental_forms(surfaces.catenoid_point, [[0.1, 0.2]], h=0.0),
+     r"^h must be positive, got 0\.0$"),
+])
+def test_surface_arguments_are_refused_by_name(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()

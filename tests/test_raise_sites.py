@@ -29,11 +29,11 @@ ENVIRONMENT = {"ImportError", "MissingExtraError", "FileNotFoundError", "OSError
 #: argument checks outside the validation layer, room by room (plain ValueError / TypeError)
 ARGUMENT_CHECKS_OUTSIDE = {
     "_optional": 2,
-    "applications": 55,
-    "chapters": 58,
+    "applications": 51,
+    "chapters": 56,
     "compat": 11,
     "complexes": 26,
-    "curvature": 68,
+    "curvature": 67,
     "datasets": 6,
     "graphics": 2,
     "homology": 53,
@@ -43,7 +43,7 @@ ARGUMENT_CHECKS_OUTSIDE = {
     "multiparameter": 26,
     "persistence": 80,
     "reconstruction": 17,
-    "surfaces": 16,
+    "surfaces": 12,
 }
 
 

@@ -287,3 +287,16 @@ def test_grazing_ground_is_out_of_range_and_rocks_change_the_scene():
         synthetic_range_image(seed=0, min_grazing_degrees=90)
     with pytest.raises(ValueError, match="n_rocks"):
         synthetic_range_image(seed=0, n_rocks=1.5)
+
+
+@pytest.mark.parametrize("options, message", [
+    ({"n_boxes": -1}, r"^n_boxes must be >= 0, got -1$"),
+    ({"n_spheres": 1.5}, r"^n_spheres must be an integer"),
+    ({"camera_height": 0.0}, r"^camera_height must be positive, got 0\.0$"),
+    ({"max_range": np.inf}, r"^max_range must be finite, got inf$"),
+    ({"noise": -0.1}, r"^noise must be >= 0\.0, got -0\.1$"),
+    ({"noise": "0.1"}, r"^noise must be a number, got '0\.1'$"),
+])
+def test_scene_options_are_refused_by_name(options, message):
+    with pytest.raises(ValueError, match=message):
+        synthetic_range_image(seed=0, size=(8, 8), **options)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.sparse
+from helpers import check_every_bar, facet_signs, simplex_vector
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -22,24 +23,11 @@ from thesis_lib.persistence import rips_persistence
 
 
 # ---------------------------------------------------------------------------------------- the checks
-def _signs(k: int) -> np.ndarray:
-    return 1 - 2 * (np.arange(k + 1) & 1)  # the facet omitting vertex i has sign (−1)^i
-
-
-def _chain(K, k: int, cycle: np.ndarray) -> np.ndarray:
-    """The cycle as a vector on K's k-simplices (rows: vertices increasing, then the coefficient)."""
-    index = {tuple(s): i for i, s in enumerate(K.simplices[k].tolist())}
-    c = np.zeros(len(index), dtype=np.int64)
-    for row in cycle.tolist():
-        c[index[tuple(row[:-1])]] = row[-1]
-    return c
-
-
 def _boundary(K, k: int, columns: np.ndarray) -> np.ndarray:
     """The boundary matrix from the (k + 1)-simplices ``columns`` to K's k-simplices (dense)."""
     F = K.facet_indices(k + 1)[columns]
     M = np.zeros((K.simplices[k].shape[0], columns.shape[0]), dtype=np.int64)
-    M[F, np.arange(columns.shape[0])[:, None]] = _signs(k + 1)
+    M[F, np.arange(columns.shape[0])[:, None]] = facet_signs(k + 1)
     return M
 
 
@@ -57,11 +45,11 @@ def check_cycle(K, k: int, p: int, bar: np.ndarray, cycle: np.ndarray) -> None:
     assert (np.diff(vertices, axis=1) > 0).all()  # each simplex's vertices increasing
     assert ((coefs >= 1) & (coefs < p)).all()
     assert len({tuple(v) for v in vertices.tolist()}) == cycle.shape[0]
-    c = _chain(K, k, cycle)
+    c = simplex_vector(K, k, cycle)
     # a cycle: ∂c = 0 over Z/p
     F = K.facet_indices(k)
     boundary = np.zeros(K.simplices[k - 1].shape[0], dtype=np.int64)
-    np.add.at(boundary, F.ravel(), (c[:, None] * _signs(k)).ravel())
+    np.add.at(boundary, F.ravel(), (c[:, None] * facet_signs(k)).ravel())
     assert not (boundary % p).any()
     # born at b: every simplex by b, one at b
     values = K.values[k][c != 0]
@@ -78,14 +66,7 @@ def check_cycle(K, k: int, p: int, bar: np.ndarray, cycle: np.ndarray) -> None:
 def check_all(K, barcode, cycles, p: int, dims) -> int:
     """check_cycle on every bar of the dimensions; the number of bars checked."""
     assert sorted(cycles) == list(dims)
-    count = 0
-    for k in dims:
-        bars = barcode.intervals(k)
-        assert len(cycles[k]) == bars.shape[0]
-        for bar, cycle in zip(bars, cycles[k]):
-            check_cycle(K, k, p, bar, cycle)
-            count += 1
-    return count
+    return check_every_bar(barcode, cycles, dims, lambda k, bar, cycle: check_cycle(K, k, p, bar, cycle))
 
 
 def same_barcode(a, b, dims) -> bool:

@@ -36,7 +36,7 @@ from collections.abc import Sequence
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import check_int, check_seed
+from .._validate import check_int, check_real, check_seed
 
 __all__ = [
     "synthetic_range_image",
@@ -191,18 +191,14 @@ def synthetic_range_image(
     h, w = _check_size(size)
     counts = (("n_boxes", n_boxes), ("n_cylinders", n_cylinders), ("n_spheres", n_spheres), ("n_rocks", n_rocks))
     for name, value in counts:
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
-            raise ValueError(f"{name} must be a non-negative integer, got {value!r}")
+        check_int(value, name, minimum=0)
     if not (0 < fov_degrees < 170):
         raise ValueError(f"fov_degrees must lie in (0, 170), got {fov_degrees!r}")
-    if not (np.isfinite(camera_height) and camera_height > 0):
-        raise ValueError(f"camera_height must be positive, got {camera_height!r}")
-    if not (np.isfinite(max_range) and max_range > 0):
-        raise ValueError(f"max_range must be positive, got {max_range!r}")
+    check_real(camera_height, "camera_height", positive=True)
+    check_real(max_range, "max_range", positive=True)
     if not (np.isfinite(min_grazing_degrees) and 0 <= min_grazing_degrees < 90):
         raise ValueError(f"min_grazing_degrees must lie in [0, 90), got {min_grazing_degrees!r}")
-    if not (np.isfinite(noise) and noise >= 0):
-        raise ValueError(f"noise must be a non-negative number, got {noise!r}")
+    check_real(noise, "noise", minimum=0.0)
     rng = np.random.default_rng(check_seed(seed))
 
     # Camera: looks along +z, x to the right, y up; image row 0 is the top.

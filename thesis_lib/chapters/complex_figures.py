@@ -11,7 +11,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
-from .._validate import as_points
+from .._validate import as_points, check_real
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -230,9 +230,7 @@ def plot_cech_rips(points: npt.ArrayLike, cech_simplices: Iterable[Sequence[int]
     from ..graphics.style import COLORS
 
     pts = _planar(points)
-    eps = max_radius
-    if not (np.isfinite(eps) and eps > 0):
-        raise ValueError(f"max_radius must be a positive number, got {eps!r}")
+    eps = check_real(max_radius, "max_radius", positive=True)
     plt = require("matplotlib.pyplot", extra="plot", purpose="drawing complexes")
     fig, axes = plt.subplots(1, 2, figsize=(7, 2.6))
     for ax, cx, title, color in [(axes[0], cech_simplices, "Čech complex", COLORS["first"]),

@@ -28,7 +28,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .._optional import require
-from .._validate import check_length
+from .._validate import check_length, check_real
 from ..applications.proteins import (
     RADII_SETS,
     Atoms,
@@ -464,8 +464,7 @@ def rings_in_window(structure: Structure, *, compare: Structure, at_radii: Radii
     (12, 28, 0)
     """
     window = _check_window(window)
-    if not (np.isfinite(vicinity) and vicinity >= 0):
-        raise ValueError(f"vicinity must be a finite number >= 0, got {vicinity!r}")
+    check_real(vicinity, "vicinity", minimum=0.0)
     bars = structure.barcode(r_c=r_c)
     h1 = bars.intervals(1)
     radii_value = r_c**2

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial import ConvexHull, HalfspaceIntersection
 
-from .._validate import check_seed
+from .._validate import check_real, check_seed
 from .areas import vertex_areas
 from .gaussian import gaussian_curvature
 from .geometry import simplex_hyperareas
@@ -208,9 +208,7 @@ def hyperarea_gradient_fd(points: ArrayLike, h: float = 1e-6) -> NDArray[np.floa
         infinite values, or ``h`` is not a positive finite number.
     """
     p = _simplices(points)
-    h = float(h)
-    if not np.isfinite(h) or h <= 0:
-        raise ValueError(f"step h must be positive, got {h!r}")
+    h = check_real(h, "h", positive=True)
     m, w, d = p.shape
     flat = np.arange(m * w).reshape(m, w)
     out = np.empty((m, d))

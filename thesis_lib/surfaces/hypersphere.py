@@ -8,7 +8,7 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_floats, check_int
+from .._validate import as_floats, check_int, check_real
 
 __all__ = ["hypersphere_point", "hypersphere_mean_curvature", "hypersphere_quadrature", "hypersphere_volume"]
 
@@ -45,9 +45,7 @@ def hypersphere_point(angles: npt.ArrayLike, *, radius: float = 2.0) -> np.ndarr
     >>> np.round(hypersphere_point([[np.pi / 2, 0.0], [np.pi / 2, np.pi / 2], [0.0, 0.0]], radius=1.0), 6).tolist()
     [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]
     """
-    radius = float(radius)
-    if not np.isfinite(radius) or radius <= 0:
-        raise ValueError(f"radius must be a positive finite number, got {radius!r}")
+    radius = check_real(radius, "radius", positive=True)
     a = as_floats(angles, "angles")
     if a.ndim < 1 or a.shape[-1] < 1:
         raise ValueError(f"angles must have shape (..., n) with n >= 1, got {a.shape}")
@@ -89,9 +87,7 @@ def hypersphere_mean_curvature(*, radius: float = 2.0, n: int = 3) -> float:
     >>> hypersphere_mean_curvature(radius=2.0, n=3)
     0.5
     """
-    radius = float(radius)
-    if not np.isfinite(radius) or radius <= 0:
-        raise ValueError(f"radius must be a positive finite number, got {radius!r}")
+    radius = check_real(radius, "radius", positive=True)
     n = check_int(n, "n", minimum=1)
     return 1.0 / radius
 

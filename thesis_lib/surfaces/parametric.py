@@ -10,7 +10,7 @@ from collections.abc import Callable
 import numpy as np
 import numpy.typing as npt
 
-from .._validate import as_floats, check_int
+from .._validate import as_floats, check_int, check_real
 
 __all__ = ["hypersurface_normal", "fundamental_forms", "parametric_shape_operator", "normal_curvature_circle"]
 
@@ -69,10 +69,7 @@ def _parameters(w) -> np.ndarray:
 
 
 def _step(h: float) -> float:
-    h = float(h)
-    if not np.isfinite(h) or h <= 0:
-        raise ValueError(f"step h must be positive, got {h!r}")
-    return h
+    return check_real(h, "h", positive=True)
 
 
 

@@ -101,9 +101,7 @@ def torus_uv(points: npt.ArrayLike, *, R: float = 10.0, r: float = 5.0) -> tuple
     ([0.0, 1.570796], [0.0, 1.570796])
     """
     check_torus_radii(R, r)
-    p = as_floats(points, "points")
-    if p.ndim < 1 or p.shape[-1] != 3:
-        raise ValueError(f"points must have shape (..., 3), got {p.shape}")
+    p = as_floats(points, "points", shape=(..., 3))
     u = np.mod(np.arctan2(p[..., 1], p[..., 0]), 2 * np.pi)
     v = np.mod(np.arctan2(p[..., 2], np.hypot(p[..., 0], p[..., 1]) - R), 2 * np.pi)
     return u, v
