@@ -18,6 +18,7 @@ import doctest
 import functools
 import importlib
 import inspect
+import os
 import pkgutil
 import sys
 from pathlib import Path
@@ -34,7 +35,7 @@ PACKAGES = ("complexes", "persistence", "homology", "curvature", "surfaces", "mo
 CHECKERS = sorted(name for name, f in vars(_validate).items()
                   if inspect.isfunction(f) and f.__module__ == _validate.__name__
                   and name.startswith(("check_", "as_", "parse_")))
-PACKAGE_DIR = str(Path(thesis_lib.__file__).resolve().parent)
+PACKAGE_DIR = str(Path(thesis_lib.__file__).resolve().parent) + os.sep
 SCALARS = (int, float, complex, str, bytes, bool, type(None), np.generic)
 
 

@@ -70,6 +70,8 @@ __all__ = [
     "check_indices",
     "check_simplices",
     "check_shape",
+    "as_floats",
+    "check_length",
 ]
 
 #: the largest prime the int64 Z/p kernels accept: products of two residues must fit in an int64
@@ -417,7 +419,7 @@ def looks_like_distance_matrix(arr: np.ndarray) -> bool:
 
 
 def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, name: str = "points",
-                 dimension: int | None = None, warn_square: bool = False) -> Points:
+                 warn_square: bool = False) -> Points:
     """``points`` checked by :func:`as_points` and scaled by a power of two, as a :class:`Points`.
 
     Thesis: §2.1.2 (a point set X in R^d, up to similarity).
@@ -427,11 +429,9 @@ def parse_points(points, *, min_points: int = 1, allow_duplicates: bool = True, 
     in R^n (as ripser.py reads it, with a warning too), and a distance matrix has its own keyword.
     A :class:`Points` record that satisfies the options is returned as it is.
     """
-    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates,
-                                                       dimension=dimension):
+    if isinstance(points, Points) and points.satisfies(min_points=min_points, allow_duplicates=allow_duplicates):
         return points
-    arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name,
-                                         dimension=dimension))
+    arr = np.ascontiguousarray(as_points(points, min_points=min_points, allow_duplicates=allow_duplicates, name=name))
     if warn_square and looks_like_distance_matrix(arr):
         n = arr.shape[0]
         warn_user(f"{name} is a square ({n}, {n}) array, symmetric with a zero diagonal: it is read as {n} points "
@@ -607,10 +607,10 @@ def parse_field(coefficients, *, default: int | None = None, field: bool = False
 
 # ---------------------------------------------------------------------------------------- geometry
 # (numbers, index arrays and simplex arrays for the complexes, curvature and meshes)
-def check_real(value, name: str, *, minimum: float | None = None, maximum: float | None = None,
-               positive: bool = False, finite: bool = True) -> float:
+def check_real(value, name: str, *, minimum: float | None = None, positive: bool = False,
+               finite: bool = True) -> float:
     """A real number as a float: not a bool or a string, not NaN, finite unless ``finite=False``,
-    ``> 0`` with ``positive``, ``>= minimum`` and ``<= maximum`` when given."""
+    ``> 0`` with ``positive``, ``>= minimum`` when given."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise InvalidTypeError(f"{name} must be a number, got {value!r}")
     x = _as_float(value, name)
@@ -622,8 +622,6 @@ def check_real(value, name: str, *, minimum: float | None = None, maximum: float
         raise ValueError(f"{name} must be positive, got {x}")
     if minimum is not None and x < minimum:
         raise ValueError(f"{name} must be >= {minimum}, got {x}")
-    if maximum is not None and x > maximum:
-        raise ValueError(f"{name} must be <= {maximum}, got {x}")
     return x
 
 
@@ -715,7 +713,7 @@ def check_torus_radii(R: float, r: float) -> tuple[float, float]:
     return R, r
 
 
-def shape_text(shape) -> str:
+def _shape_text(shape) -> str:
     """A shape pattern as the messages print it: ``(..., 3)``, ``(n, 2)``, ``(m, n + 1, d)``."""
     return "(" + ", ".join("..." if a is Ellipsis else str(a) for a in shape) + ")"
 
@@ -762,15 +760,13 @@ def check_shape(array: np.ndarray, shape: tuple, name: str) -> np.ndarray:
     ValueError: points must have shape (..., 3), got (4, 2)
     """
     if not _matches(tuple(array.shape), tuple(shape)):
-        raise ValueError(f"{name} must have shape {shape_text(shape)}, got {tuple(array.shape)}")
+        raise ValueError(f"{name} must have shape {_shape_text(shape)}, got {tuple(array.shape)}")
     return array
 
 
-def as_floats(value, name: str, *, shape: tuple | None = None, finite: bool = True,
-              allow_empty: bool = True) -> np.ndarray:
-    """``value`` as a float64 array of the pattern ``shape`` (:func:`check_shape`), refusing what is
-    not numeric (:class:`InvalidTypeError`), NaN or infinite values (unless ``finite=False``) and an
-    empty array (with ``allow_empty=False``).
+def as_floats(value, name: str, *, shape: tuple | None = None) -> np.ndarray:
+    """``value`` as a finite float64 array of the pattern ``shape`` (:func:`check_shape`), refusing
+    what is not numeric (:class:`InvalidTypeError`) and NaN or infinite values.
 
     Thesis: the arrays of numbers the constructions take (§2.1, §3.3, §4.1).
 
@@ -782,10 +778,6 @@ def as_floats(value, name: str, *, shape: tuple | None = None, finite: bool = Tr
         The argument's name, for the messages.
     shape : tuple, optional
         The shape pattern; any shape when omitted.
-    finite : bool
-        Refuse NaN and infinite entries.
-    allow_empty : bool
-        Accept an array with no entries.
 
     Returns
     -------
@@ -804,20 +796,17 @@ def as_floats(value, name: str, *, shape: tuple | None = None, finite: bool = Tr
     arr = float_array(value, kind="numbers", message=f"{name} must be an array of numbers")
     if shape is not None:
         check_shape(arr, shape, name)
-    if not allow_empty and arr.size == 0:
-        raise ValueError(f"{name} is empty")
-    if finite and not np.all(np.isfinite(arr)):
+    if not np.all(np.isfinite(arr)):
         raise ValueError(f"{name} contains NaN or infinite values")
     return arr
 
 
-def check_length(items, name: str, *, length: int | None = None, minimum: int | None = None):
-    """``items`` if ``len(items)`` is ``length`` (when given) and at least ``minimum`` (when given),
-    else a ``ValueError`` naming the argument; a value without a length is an
-    :class:`InvalidTypeError`.
+def check_length(items, name: str, *, minimum: int):
+    """``items`` if ``len(items)`` is at least ``minimum``, else a ``ValueError`` naming the argument;
+    a value without a length is an :class:`InvalidTypeError`.
 
-    Thesis: the lists the book's functions take (one name per critical point, one panel per
-    sample, ...).
+    Thesis: the lists the book's functions take (the panels of a figure, the hyperplanes of a
+    slicing, the models of a structure).
 
     Parameters
     ----------
@@ -825,9 +814,7 @@ def check_length(items, name: str, *, length: int | None = None, minimum: int | 
         A list, tuple, mapping or array.
     name : str
         The argument's name, for the message.
-    length : int, optional
-        The exact length required.
-    minimum : int, optional
+    minimum : int
         The least length allowed.
 
     Returns
@@ -837,7 +824,7 @@ def check_length(items, name: str, *, length: int | None = None, minimum: int | 
 
     Examples
     --------
-    >>> check_length(["a", "b"], "names", length=2)
+    >>> check_length(["a", "b"], "names", minimum=1)
     ['a', 'b']
     >>> check_length([], "levels", minimum=1)
     Traceback (most recent call last):
@@ -848,9 +835,7 @@ def check_length(items, name: str, *, length: int | None = None, minimum: int | 
         n = len(items)
     except TypeError:
         raise InvalidTypeError(f"{name} must be a sequence, got {type(items).__name__}") from None
-    if length is not None and n != length:
-        raise ValueError(f"{name} must hold {length} entr{'y' if length == 1 else 'ies'}, got {n}")
-    if minimum is not None and n < minimum:
+    if n < minimum:
         raise ValueError(f"{name} must hold at least {minimum} entr{'y' if minimum == 1 else 'ies'}, got {n}")
     return items
 
